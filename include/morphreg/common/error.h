@@ -1,0 +1,46 @@
+#pragma once
+/** \file error.h
+ *  \brief The morphreg exception hierarchy. Every error names the input and what was wrong with it.
+ */
+#include <pcl/exceptions.h>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Base of every exception morphreg throws; a pcl::PCLException, so PCL pipelines catch it too. */
+class Error : public pcl::PCLException
+{
+public:
+  explicit Error (const std::string& message) : pcl::PCLException (message) {}
+};
+
+/** \brief Invalid arguments or data: empty or NaN clouds, mismatched or degenerate landmarks, bad parameters. */
+class InvalidInputError : public Error
+{
+public:
+  using Error::Error;
+};
+
+/** \brief A file is missing, unreadable or cannot be written. */
+class IoError : public Error
+{
+public:
+  using Error::Error;
+};
+
+/** \brief A file was read but its content is corrupt, truncated or has the wrong shape. */
+class FormatError : public IoError
+{
+public:
+  using IoError::IoError;
+};
+
+/** \brief A computation cannot give a trustworthy answer (singular or ill-conditioned system, divergence). */
+class NumericalError : public Error
+{
+public:
+  using Error::Error;
+};
+
+} // namespace morphreg

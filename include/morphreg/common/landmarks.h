@@ -1,0 +1,31 @@
+#pragma once
+/** \file landmarks.h
+ *  \brief The project's landmark vocabulary (../shared/docs/LANDMARKS.md) and a named landmark set.
+ */
+#include <Eigen/Core>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief All landmark ids the project knows, in the order of LANDMARKS.md (frontal 1-40, then the rest). */
+const std::vector<std::string>&
+knownLandmarkIds ();
+
+/** \brief True if \a id is one of knownLandmarkIds(). */
+bool
+isKnownLandmarkId (const std::string& id);
+
+/** \brief Throws InvalidInputError naming \a source and listing the known ids when \a id is unknown. */
+void
+requireKnownLandmarkId (const std::string& id, const std::string& source);
+
+/** \brief Named 3D landmark positions (mm), e.g. marked on a scan: id -> position. */
+using LandmarkPositions = std::map<std::string, Eigen::Vector3d>;
+
+/** \brief Named landmark vertices of a mesh or model: id -> vertex index. */
+using LandmarkVertices = std::map<std::string, int>;
+
+} // namespace morphreg

@@ -1,0 +1,38 @@
+#pragma once
+/** \file cloud_io.h
+ *  \brief Reading and writing point clouds (PCD, PLY, OBJ) of any PCL point type, with errors that name the file.
+ */
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Loads a cloud (.pcd, .ply or .obj; for a mesh file, its vertices). Throws IoError if the file is missing or
+ *  unreadable, FormatError if it has no points.
+ */
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr
+loadCloud (const std::string& path);
+
+/** \brief Saves a cloud as binary .pcd or .ply, or as .obj vertices; throws IoError naming the file on failure. */
+template <typename PointT>
+void
+saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud);
+
+/** \brief Throws InvalidInputError naming \a name if \a cloud is empty or has a non-finite point. */
+template <typename PointT>
+void
+requireFiniteNonEmpty (const pcl::PointCloud<PointT>& cloud, const std::string& name);
+
+} // namespace morphreg
+
+#define MORPHREG_DECLARE_CLOUD_IO(T)                                                                          \
+  extern template pcl::PointCloud<T>::Ptr morphreg::loadCloud<T> (const std::string&);                       \
+  extern template void morphreg::saveCloud<T> (const std::string&, const pcl::PointCloud<T>&);               \
+  extern template void morphreg::requireFiniteNonEmpty<T> (const pcl::PointCloud<T>&, const std::string&);
+MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZ)
+MORPHREG_DECLARE_CLOUD_IO (pcl::PointNormal)
+MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZRGBNormal)
+#undef MORPHREG_DECLARE_CLOUD_IO

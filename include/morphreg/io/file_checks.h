@@ -1,0 +1,41 @@
+#pragma once
+/** \file file_checks.h
+ *  \brief Small checks shared by the readers and writers: clear errors before a library reader fails obscurely.
+ */
+#include <morphreg/common/error.h>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Throws IoError naming \a path if it does not exist, is a directory, or cannot be opened for reading. */
+void
+requireReadableFile (const std::string& path);
+
+/** \brief Lower-case extension of \a path including the dot (".ply"), or "" if none. */
+std::string
+fileExtension (const std::string& path);
+
+/** \brief Throws IoError naming \a path if its extension is not one of \a allowed (e.g. ".ply .obj"). */
+void
+requireExtension (const std::string& path, const std::string& allowed, const std::string& what);
+
+/** \brief Runs a PCL reader or writer \a call on \a path; turns the exceptions PCL throws into IoError naming
+ *  the file, and returns the call's status.
+ */
+template <typename Call>
+int
+callPclIo (const std::string& path, Call call)
+{
+  try {
+    return call ();
+  }
+  catch (const Error&) {
+    throw;
+  }
+  catch (const pcl::PCLException& e) {
+    throw IoError (path + ": " + e.detailedMessage ());
+  }
+}
+
+} // namespace morphreg

@@ -1,0 +1,77 @@
+#pragma once
+#include <morphreg/common/error.h>
+#include <morphreg/io/cloud_io.h>
+#include <morphreg/io/file_checks.h>
+
+#include <pcl/conversions.h>
+#include <pcl/io/obj_io.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+
+#include <sstream>
+
+namespace morphreg
+{
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr
+loadCloud (const std::string& path)
+{
+  requireReadableFile (path);
+  requireExtension (path, ".pcd .ply .obj", "point cloud");
+  typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
+  const std::string ext = fileExtension (path);
+  const int status = callPclIo (path, [&] {
+    if (ext == ".pcd")
+      return pcl::io::loadPCDFile (path, *cloud);
+    if (ext == ".ply")
+      return pcl::io::loadPLYFile (path, *cloud);
+    pcl::PolygonMesh mesh; // an OBJ file's vertices are the cloud
+    const int obj_status = pcl::io::loadOBJFile (path, mesh);
+    if (obj_status >= 0)
+      pcl::fromPCLPointCloud2 (mesh.cloud, *cloud);
+    return obj_status;
+  });
+  if (status < 0)
+    throw FormatError (path + ": not a readable point cloud");
+  if (cloud->empty ())
+    throw FormatError (path + ": the cloud has no points");
+  return cloud;
+}
+
+template <typename PointT>
+void
+saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud)
+{
+  requireExtension (path, ".pcd .ply .obj", "point cloud");
+  if (cloud.empty ())
+    throw InvalidInputError (path + ": refusing to write an empty cloud");
+  const std::string ext = fileExtension (path);
+  const int status = callPclIo (path, [&] {
+    if (ext == ".pcd")
+      return pcl::io::savePCDFileBinary (path, cloud);
+    if (ext == ".ply")
+      return pcl::io::savePLYFileBinary (path, cloud);
+    pcl::PolygonMesh vertices_only; // OBJ holds clouds as a mesh without faces
+    pcl::toPCLPointCloud2 (cloud, vertices_only.cloud);
+    return pcl::io::saveOBJFile (path, vertices_only);
+  });
+  if (status < 0)
+    throw IoError (path + ": cannot write the point cloud");
+}
+
+template <typename PointT>
+void
+requireFiniteNonEmpty (const pcl::PointCloud<PointT>& cloud, const std::string& name)
+{
+  if (cloud.empty ())
+    throw InvalidInputError (name + ": the cloud is empty");
+  for (std::size_t i = 0; i < cloud.size (); ++i)
+    if (!std::isfinite (cloud[i].x) || !std::isfinite (cloud[i].y) || !std::isfinite (cloud[i].z)) {
+      std::ostringstream msg;
+      msg << name << ": point " << i << " is not finite (NaN or Inf); remove invalid points first "
+          << "(pcl::removeNaNFromPointCloud)";
+      throw InvalidInputError (msg.str ());
+    }
+}
+
+} // namespace morphreg

@@ -1,0 +1,32 @@
+#pragma once
+/** \file mesh_io.h
+ *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL) on top of PCL's readers, with errors that name the file.
+ *  Files are taken to be in millimetres; convert data in other units after loading.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+
+#include <pcl/PolygonMesh.h>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Loads a polygon mesh (.ply, .obj, .vtk, .stl). Throws IoError if the file is missing or unreadable,
+ *  FormatError if it holds no vertices or no polygons.
+ */
+pcl::PolygonMesh
+loadPolygonMesh (const std::string& path);
+
+/** \brief Saves \a mesh (.ply binary, .obj, .vtk); throws IoError naming the file on failure. */
+void
+savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh);
+
+/** \brief Loads a triangle mesh (non-triangle polygons are an error) and validates it. */
+TriangleMesh
+loadTriangleMesh (const std::string& path);
+
+/** \brief Saves a triangle mesh with vertex normals. */
+void
+saveTriangleMesh (const std::string& path, const TriangleMesh& mesh);
+
+} // namespace morphreg

@@ -1,0 +1,27 @@
+#pragma once
+/** \file polygon_mesh_conversion.h
+ *  \brief Conversion between morphreg::TriangleMesh and pcl::PolygonMesh.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+
+#include <pcl/PolygonMesh.h>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Extracts vertices and triangles from \a mesh; throws InvalidInputError naming \a name if a
+ *  polygon is not a triangle or the cloud has no x/y/z fields.
+ */
+TriangleMesh
+fromPolygonMesh (const pcl::PolygonMesh& mesh, const std::string& name = "mesh");
+
+/** \brief Builds a pcl::PolygonMesh with PointNormal vertices (normals computed from the triangles). */
+pcl::PolygonMesh
+toPolygonMesh (const TriangleMesh& mesh);
+
+/** \brief As toPolygonMesh, with per-vertex colours (3 x N, 0-255) as a PointXYZRGBNormal cloud. */
+pcl::PolygonMesh
+toPolygonMesh (const TriangleMesh& mesh, const Eigen::Matrix<unsigned char, 3, Eigen::Dynamic>& colours);
+
+} // namespace morphreg

@@ -1,0 +1,131 @@
+#pragma once
+/** \file head_generator.h
+ *  \brief Deterministic synthetic human heads in one fixed topology: the project's built-in head population.
+ */
+#include <morphreg/common/landmarks.h>
+#include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/synthetic/head_parameters.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+namespace synthetic
+{
+/** \brief The seven regions of the thesis's multi-region model. */
+enum class HeadRegion : int
+{
+  eyes = 0,
+  nose,
+  mouth,
+  ears,
+  chin,
+  cheeks,
+  skull_neck
+};
+
+/** \brief Number of HeadRegion values. */
+constexpr int kNumHeadRegions = 7;
+
+/** \brief Lower-case name of a region ("eyes", ..., "skull_neck"). */
+std::string
+headRegionName (HeadRegion region);
+
+/** \brief One generated head: its mesh (mm) and the parameters that shaped it. */
+struct SyntheticHead
+{
+  TriangleMesh mesh;
+  HeadParameters parameters;
+};
+
+/** \brief Generates closed, manifold head-and-neck meshes (+Y up, +Z out of the face, +X to the subject's
+ *  left, mm) whose shape follows HeadParameters. Every head shares one topology, so vertex i is the same
+ *  anatomical point on every head: landmarks, the profile line and region labels hold for all of them.
+ *
+ *  \code
+ *  morphreg::synthetic::HeadGenerator generator;
+ *  auto heads = generator.population (200, 42);            // deterministic from the seed
+ *  int nose = generator.landmarks ().at ("nose_tip");
+ *  \endcode
+ */
+class HeadGenerator
+{
+public:
+  using Ptr = std::shared_ptr<HeadGenerator>;
+  using ConstPtr = std::shared_ptr<const HeadGenerator>;
+
+  /** \brief \a resolution (even, 20-44) cells per cube edge of the underlying sphere: 6 r^2 + 2 vertices
+   *  (the default 40 gives 9602).
+   */
+  explicit HeadGenerator (int resolution = 40);
+
+  /** \brief The head with the given parameters (validated). */
+  TriangleMesh
+  generate (const HeadParameters& parameters) const;
+
+  /** \brief The head whose parameters are drawn from the population with \a seed. */
+  SyntheticHead
+  sample (std::uint64_t seed) const;
+
+  /** \brief \a count heads; head i uses the parameters drawn with seed + i, so any subset can be regenerated. */
+  std::vector<SyntheticHead>
+  population (int count, std::uint64_t seed) const;
+
+  /** \brief The shared triangles (3 x M, counter-clockwise seen from outside). */
+  const TriangleMesh::Triangles&
+  triangles () const
+  {
+    return triangles_;
+  }
+
+  Eigen::Index
+  numVertices () const
+  {
+    return directions_.cols ();
+  }
+
+  /** \brief Landmark ids of LANDMARKS.md -> vertex index (every id that exists on a 3D head). */
+  const LandmarkVertices&
+  landmarks () const
+  {
+    return landmarks_;
+  }
+
+  /** \brief Vertices on the mid-sagittal plane (x = 0), ordered from the front of the neck over the face and
+   *  the crown to the back of the neck.
+   */
+  const std::vector<int>&
+  profileLine () const
+  {
+    return profile_line_;
+  }
+
+  /** \brief Region of each vertex. */
+  const std::vector<HeadRegion>&
+  regionLabels () const
+  {
+    return region_labels_;
+  }
+
+private:
+  void
+  placeLandmarks ();
+
+  void
+  traceProfileLine (const TriangleMesh& mean_head, double neck_cut);
+
+  void
+  labelRegions (const TriangleMesh& mean_head);
+
+  Eigen::Matrix3Xd directions_;
+  TriangleMesh::Triangles triangles_;
+  LandmarkVertices landmarks_;
+  std::vector<int> profile_line_;
+  std::vector<HeadRegion> region_labels_;
+};
+
+} // namespace synthetic
+} // namespace morphreg

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs the Debian packages morphreg needs to build, test and run its demo.
+# Idempotent: packages already installed are left alone; apt-get update runs before any install.
+# Must run as root (or with sudo available). Fails loudly when a package cannot be installed.
+set -euo pipefail
+
+PACKAGES=(
+  cmake make g++ ccache pkg-config
+  libpcl-dev            # PCL 1.13 with FLANN, VTK 9.1, Eigen 3.4, Boost
+  libgtest-dev googletest libbenchmark-dev
+  libhdf5-dev           # model files (statismo layout)
+  nlohmann-json3-dev    # JSON reports and landmark files
+  libcli11-dev          # the command line
+  libtinyxml2-dev       # MeshLab .pp landmark files
+  xvfb xauth            # headless rendering for the visualiser and its tests
+  python3 python3-h5py python3-numpy  # independent HDF5 writer used as a test fixture
+)
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: not root and no sudo; cannot install: ${missing[*]}" >&2; exit 1; }
+  SUDO="sudo"
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update
+if ! $SUDO apt-get install -y --no-install-recommends "${missing[@]}"; then
+  echo "install-deps: FAILED to install: ${missing[*]}" >&2
+  exit 1
+fi
+echo "install-deps: done"

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Quick start command 2: dependencies, configure, build, then every test through ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+cd build
+ctest --output-on-failure -j2 --timeout 900

@@ -1,0 +1,66 @@
+#include <morphreg/common/error.h>
+#include <morphreg/io/file_checks.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
+
+#include <pcl/io/obj_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/io/vtk_io.h>
+#include <pcl/io/vtk_lib_io.h>
+
+namespace morphreg
+{
+pcl::PolygonMesh
+loadPolygonMesh (const std::string& path)
+{
+  requireReadableFile (path);
+  requireExtension (path, ".ply .obj .vtk .stl", "mesh");
+  const std::string ext = fileExtension (path);
+  pcl::PolygonMesh mesh;
+  const int status = callPclIo (path, [&] {
+    if (ext == ".ply")
+      return pcl::io::loadPLYFile (path, mesh);
+    if (ext == ".obj")
+      return pcl::io::loadOBJFile (path, mesh);
+    return pcl::io::loadPolygonFile (path, mesh) > 0 ? 0 : -1;
+  });
+  if (status < 0)
+    throw FormatError (path + ": not a readable " + ext.substr (1) + " mesh");
+  if (mesh.cloud.width * mesh.cloud.height == 0)
+    throw FormatError (path + ": mesh has no vertices");
+  if (mesh.polygons.empty ())
+    throw FormatError (path + ": mesh has no polygons (is it a point cloud?)");
+  return mesh;
+}
+
+void
+savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh)
+{
+  requireExtension (path, ".ply .obj .vtk", "mesh");
+  const std::string ext = fileExtension (path);
+  const int status = callPclIo (path, [&] {
+    if (ext == ".ply")
+      return pcl::io::savePLYFileBinary (path, mesh);
+    if (ext == ".obj")
+      return pcl::io::saveOBJFile (path, mesh);
+    return pcl::io::saveVTKFile (path, mesh);
+  });
+  if (status < 0)
+    throw IoError (path + ": cannot write the mesh");
+}
+
+TriangleMesh
+loadTriangleMesh (const std::string& path)
+{
+  TriangleMesh mesh = fromPolygonMesh (loadPolygonMesh (path), path);
+  validateMesh (mesh, path);
+  return mesh;
+}
+
+void
+saveTriangleMesh (const std::string& path, const TriangleMesh& mesh)
+{
+  savePolygonMesh (path, toPolygonMesh (mesh));
+}
+
+} // namespace morphreg

@@ -1,0 +1,229 @@
+#include <morphreg/common/error.h>
+#include <morphreg/mesh/mesh_topology.h>
+
+#include <algorithm>
+#include <functional>
+#include <queue>
+#include <unordered_map>
+
+namespace morphreg
+{
+namespace
+{
+/** Builds a CSR list of the triangles incident to each vertex. */
+void
+vertexFaces (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices, std::vector<int>& offsets,
+             std::vector<int>& faces)
+{
+  offsets.assign (num_vertices + 1, 0);
+  for (Eigen::Index t = 0; t < triangles.cols (); ++t)
+    for (int c = 0; c < 3; ++c)
+      ++offsets[triangles (c, t) + 1];
+  for (Eigen::Index v = 0; v < num_vertices; ++v)
+    offsets[v + 1] += offsets[v];
+  faces.resize (offsets.back ());
+  std::vector<int> fill (offsets.begin (), offsets.end () - 1);
+  for (Eigen::Index t = 0; t < triangles.cols (); ++t)
+    for (int c = 0; c < 3; ++c)
+      faces[fill[triangles (c, t)]++] = static_cast<int> (t);
+}
+} // namespace
+
+MeshTopology::MeshTopology (const TriangleMesh& mesh) : MeshTopology (mesh.triangles, mesh.numVertices ()) {}
+
+MeshTopology::MeshTopology (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices)
+  : num_triangles_ (triangles.cols ())
+{
+  if (triangles.size () > 0 && (triangles.minCoeff () < 0 || triangles.maxCoeff () >= num_vertices))
+    throw InvalidInputError ("MeshTopology: triangle indices out of range of the vertex count");
+
+  // Count each undirected edge and how many triangles use it.
+  std::unordered_map<long long, int> edge_index;
+  edge_index.reserve (static_cast<size_t> (triangles.cols ()) * 2);
+  for (Eigen::Index t = 0; t < triangles.cols (); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const int a = std::min (triangles (c, t), triangles ((c + 1) % 3, t));
+      const int b = std::max (triangles (c, t), triangles ((c + 1) % 3, t));
+      const long long key = static_cast<long long> (a) * num_vertices + b;
+      auto it = edge_index.find (key);
+      if (it == edge_index.end ()) {
+        edge_index.emplace (key, static_cast<int> (edges_.size ()));
+        edges_.push_back ({a, b, 1});
+      }
+      else
+        ++edges_[it->second].face_count;
+    }
+  std::sort (edges_.begin (), edges_.end (),
+             [] (const Edge& x, const Edge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+
+  offsets_.assign (num_vertices + 1, 0);
+  for (const auto& e : edges_) {
+    ++offsets_[e.a + 1];
+    ++offsets_[e.b + 1];
+  }
+  for (Eigen::Index v = 0; v < num_vertices; ++v)
+    offsets_[v + 1] += offsets_[v];
+  neighbours_.resize (offsets_.back ());
+  std::vector<int> fill (offsets_.begin (), offsets_.end () - 1);
+  for (const auto& e : edges_) {
+    neighbours_[fill[e.a]++] = e.b;
+    neighbours_[fill[e.b]++] = e.a;
+  }
+  for (Eigen::Index v = 0; v < num_vertices; ++v)
+    std::sort (neighbours_.begin () + offsets_[v], neighbours_.begin () + offsets_[v + 1]);
+
+  std::vector<int> face_offsets, faces;
+  vertexFaces (triangles, num_vertices, face_offsets, faces);
+  for (Eigen::Index v = 0; v < num_vertices && stars_are_fans_; ++v) {
+    // The link of a closed manifold vertex is one cycle: walk it through the opposite edges.
+    std::unordered_map<int, std::vector<int>> link;
+    for (int k = face_offsets[v]; k < face_offsets[v + 1]; ++k) {
+      const int t = faces[k];
+      int others[2], n = 0;
+      for (int c = 0; c < 3; ++c)
+        if (triangles (c, t) != v) {
+          if (n < 2)
+            others[n] = triangles (c, t);
+          ++n;
+        }
+      if (n != 2) {
+        stars_are_fans_ = false; // degenerate triangle using v twice
+        break;
+      }
+      link[others[0]].push_back (others[1]);
+      link[others[1]].push_back (others[0]);
+    }
+    if (!stars_are_fans_ || link.empty ())
+      continue;
+    for (const auto& entry : link)
+      if (entry.second.size () != 2)
+        stars_are_fans_ = false;
+    if (!stars_are_fans_)
+      break;
+    size_t visited = 1;
+    int previous = link.begin ()->first, current = link.begin ()->second[0];
+    while (current != link.begin ()->first && visited <= link.size ()) {
+      const auto& next = link[current];
+      const int following = next[0] == previous ? next[1] : next[0];
+      previous = current;
+      current = following;
+      ++visited;
+    }
+    if (visited != link.size ())
+      stars_are_fans_ = false;
+  }
+}
+
+std::vector<std::array<int, 2>>
+MeshTopology::boundaryEdges () const
+{
+  std::vector<std::array<int, 2>> result;
+  for (const auto& e : edges_)
+    if (e.face_count == 1)
+      result.push_back ({e.a, e.b});
+  return result;
+}
+
+std::vector<bool>
+MeshTopology::boundaryVertexMask () const
+{
+  std::vector<bool> mask (numVertices (), false);
+  for (const auto& e : edges_)
+    if (e.face_count == 1)
+      mask[e.a] = mask[e.b] = true;
+  return mask;
+}
+
+std::vector<int>
+MeshTopology::boundaryVertices () const
+{
+  const auto mask = boundaryVertexMask ();
+  std::vector<int> result;
+  for (size_t v = 0; v < mask.size (); ++v)
+    if (mask[v])
+      result.push_back (static_cast<int> (v));
+  return result;
+}
+
+long
+MeshTopology::eulerCharacteristic () const
+{
+  return static_cast<long> (numVertices ()) - static_cast<long> (edges_.size ()) + static_cast<long> (num_triangles_);
+}
+
+bool
+MeshTopology::isClosedManifold () const
+{
+  if (!stars_are_fans_)
+    return false;
+  for (const auto& e : edges_)
+    if (e.face_count != 2)
+      return false;
+  for (Eigen::Index v = 0; v < numVertices (); ++v)
+    if (valence (v) == 0)
+      return false;
+  return true;
+}
+
+std::vector<int>
+MeshTopology::ringIndex (const std::vector<int>& seeds, int max_rings) const
+{
+  std::vector<int> ring (numVertices (), -1);
+  std::vector<int> frontier;
+  for (int s : seeds) {
+    if (s < 0 || s >= numVertices ())
+      throw InvalidInputError ("MeshTopology::ringIndex: seed vertex out of range");
+    if (ring[s] != 0) {
+      ring[s] = 0;
+      frontier.push_back (s);
+    }
+  }
+  for (int k = 1; k <= max_rings && !frontier.empty (); ++k) {
+    std::vector<int> next;
+    for (int v : frontier) {
+      auto [begin, end] = neighbours (v);
+      for (const int* n = begin; n != end; ++n)
+        if (ring[*n] < 0) {
+          ring[*n] = k;
+          next.push_back (*n);
+        }
+    }
+    frontier.swap (next);
+  }
+  return ring;
+}
+
+std::vector<double>
+MeshTopology::geodesicDistances (const TriangleMesh::Vertices& vertices, const std::vector<int>& sources,
+                                 double max_distance) const
+{
+  if (vertices.cols () != numVertices ())
+    throw InvalidInputError ("MeshTopology::geodesicDistances: vertex count does not match the topology");
+  const double inf = std::numeric_limits<double>::infinity ();
+  std::vector<double> distance (numVertices (), inf);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (int s : sources) {
+    if (s < 0 || s >= numVertices ())
+      throw InvalidInputError ("MeshTopology::geodesicDistances: source vertex out of range");
+    distance[s] = 0.0;
+    queue.push ({0.0, s});
+  }
+  while (!queue.empty ()) {
+    const auto [d, v] = queue.top ();
+    queue.pop ();
+    if (d > distance[v])
+      continue;
+    auto [begin, end] = neighbours (v);
+    for (const int* n = begin; n != end; ++n) {
+      const double candidate = d + (vertices.col (*n) - vertices.col (v)).norm ();
+      if (candidate < distance[*n] && candidate <= max_distance) {
+        distance[*n] = candidate;
+        queue.push ({candidate, *n});
+      }
+    }
+  }
+  return distance;
+}
+
+} // namespace morphreg

@@ -1,0 +1,70 @@
+// `morphreg synth`: the built-in synthetic head population and simulated scans of it, written to disk.
+#include "commands.h"
+#include "progress.h"
+#include "scanner_options.h"
+#include "synthetic_output.h"
+
+#include <iostream>
+#include <memory>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+struct SynthOptions
+{
+  std::string out = "out/synth";
+  int count = 20;
+  std::uint64_t seed = 1;
+  int resolution = 40;
+  int scans = 0;
+  bool quiet = false;
+  synthetic::ScanSimulator::Parameters scanner;
+};
+
+void
+runSynth (const SynthOptions& options)
+{
+  const synthetic::HeadGenerator generator (options.resolution);
+  const std::vector<synthetic::SyntheticHead> heads = generator.population (options.count, options.seed);
+  writePopulation (options.out, generator, heads, options.seed, options.quiet);
+  const synthetic::ScanSimulator scanner (options.scanner);
+  const Progress progress ("scanning heads", options.scans, options.quiet);
+  for (int i = 0; i < options.scans; ++i) {
+    const std::string name = "scan_" + std::to_string (i);
+    writeScan (options.out, name, scanner.scan (heads[static_cast<std::size_t> (i)].mesh, options.seed + i));
+    progress.step (i + 1);
+  }
+  if (options.scans > 0)
+    progress.finish ();
+  std::cout << "wrote " << options.count << " heads and " << options.scans << " scans to " << options.out << '\n';
+}
+} // namespace
+
+void
+registerSynthCommand (CLI::App& app)
+{
+  auto options = std::make_shared<SynthOptions> ();
+  CLI::App* command = app.add_subcommand ("synth", "generate synthetic heads (PLY + population.json) and scans of them");
+  command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
+  command->add_option ("-n,--count", options->count, "number of heads")->check (CLI::Range (1, 5000))
+      ->capture_default_str ();
+  command->add_option ("-s,--seed", options->seed, "seed of the first head (head i uses seed + i)")
+      ->capture_default_str ();
+  command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
+      ->capture_default_str ();
+  command->add_option ("--scans", options->scans, "simulate scans of the first N heads")->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command->add_flag ("-q,--quiet", options->quiet, "no progress output");
+  addScannerOptions (command, options->scanner);
+  command->callback ([options] () {
+    if (options->scans > options->count)
+      throw CLI::ValidationError ("--scans", "cannot scan more heads than --count");
+    runSynth (*options);
+  });
+}
+
+} // namespace tools
+} // namespace morphreg

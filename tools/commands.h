@@ -1,0 +1,24 @@
+#pragma once
+// Registration of the CLI's subcommands; each lives in its own tools/command_<name>.cpp.
+#include <CLI/CLI.hpp>
+
+namespace morphreg
+{
+namespace tools
+{
+/** Exit codes: 0 success, 1 bad input (a file or its content), 2 bad arguments (CLI11), 3 internal error. */
+constexpr int kExitInputError = 1;
+constexpr int kExitInternalError = 3;
+
+void registerSynthCommand (CLI::App& app);
+void registerDemoCommand (CLI::App& app);
+
+/** Adds every subcommand to \a app. */
+inline void
+registerCommands (CLI::App& app)
+{
+  registerSynthCommand (app);
+  registerDemoCommand (app);
+}
+} // namespace tools
+} // namespace morphreg

@@ -1,0 +1,32 @@
+// The morphreg command line: subcommands are registered by the tools/command_*.cpp files.
+#include "commands.h"
+
+#include <morphreg/common/error.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int
+main (int argc, char** argv)
+{
+  CLI::App app{"morphreg: morphable-model registration and thin plate spline warping for PCL"};
+  app.set_version_flag ("--version", std::string ("morphreg ") + MORPHREG_VERSION);
+  app.require_subcommand (1);
+  morphreg::tools::registerCommands (app);
+  try {
+    app.parse (argc, argv);
+  }
+  catch (const CLI::ParseError& e) {
+    return app.exit (e);
+  }
+  catch (const morphreg::Error& e) {
+    std::cerr << "morphreg: error: " << e.what () << '\n';
+    return morphreg::tools::kExitInputError;
+  }
+  catch (const std::exception& e) {
+    std::cerr << "morphreg: internal error: " << e.what () << '\n';
+    return morphreg::tools::kExitInternalError;
+  }
+  return 0;
+}

@@ -1,0 +1,114 @@
+#include "synthetic_output.h"
+#include "progress.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/cloud_io.h>
+#include <morphreg/io/mesh_io.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+void
+writeJson (const std::string& path, const nlohmann::json& json)
+{
+  std::ofstream stream (path);
+  stream << std::setw (2) << json << '\n';
+  if (!stream)
+    throw IoError (path + ": cannot write");
+}
+
+std::string
+headFileName (std::size_t index)
+{
+  std::ostringstream name;
+  name << "head_" << std::setw (3) << std::setfill ('0') << index << ".ply";
+  return name.str ();
+}
+
+nlohmann::json
+parametersJson (const synthetic::HeadParameters& parameters)
+{
+  nlohmann::json json;
+  for (const auto& range : synthetic::HeadParameters::ranges ())
+    json[range.name] = parameters.*(range.member);
+  return json;
+}
+
+nlohmann::json
+topologyJson (const synthetic::HeadGenerator& generator)
+{
+  nlohmann::json regions = nlohmann::json::array ();
+  for (synthetic::HeadRegion region : generator.regionLabels ())
+    regions.push_back (synthetic::headRegionName (region));
+  return {{"num_vertices", generator.numVertices ()},
+          {"landmark_vertices", generator.landmarks ()},
+          {"profile_line", generator.profileLine ()},
+          {"region_labels", regions}};
+}
+} // namespace
+
+void
+makeDirectory (const std::string& directory)
+{
+  std::error_code ec;
+  std::filesystem::create_directories (directory, ec);
+  if (ec)
+    throw IoError (directory + ": cannot create the directory (" + ec.message () + ")");
+}
+
+nlohmann::json
+writePopulation (const std::string& directory, const synthetic::HeadGenerator& generator,
+                 const std::vector<synthetic::SyntheticHead>& heads, std::uint64_t seed, bool quiet)
+{
+  makeDirectory (directory);
+  nlohmann::json manifest = topologyJson (generator);
+  manifest["units"] = "mm";
+  manifest["seed"] = seed;
+  manifest["heads"] = nlohmann::json::array ();
+  const Progress progress ("writing heads", static_cast<int> (heads.size ()), quiet);
+  for (std::size_t i = 0; i < heads.size (); ++i) {
+    const std::string file = headFileName (i);
+    saveTriangleMesh (directory + "/" + file, heads[i].mesh);
+    manifest["heads"].push_back ({{"file", file}, {"seed", seed + i}, {"parameters", parametersJson (heads[i].parameters)}});
+    progress.step (static_cast<int> (i + 1));
+  }
+  progress.finish ();
+  writeJson (directory + "/population.json", manifest);
+  return manifest;
+}
+
+nlohmann::json
+writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan)
+{
+  makeDirectory (directory);
+  saveCloud (directory + "/" + name + ".pcd", *scan.cloud);
+  const Eigen::Matrix4d pose = scan.head_to_scan.matrix ();
+  nlohmann::json truth = {{"units", "mm"},
+                          {"head_to_scan", std::vector<double> (pose.data (), pose.data () + 16)},
+                          {"head_to_scan_layout", "column-major 4x4"},
+                          {"scale", scan.scale},
+                          {"num_points", scan.cloud->size ()},
+                          {"num_outliers", scan.num_outliers},
+                          {"source_triangle", scan.source_triangle},
+                          {"barycentric", std::vector<double> (scan.barycentric.data (),
+                                                               scan.barycentric.data () + scan.barycentric.size ())}};
+  writeJson (directory + "/" + name + "_truth.json", truth);
+  if (!scan.range_mesh.polygons.empty ())
+    savePolygonMesh (directory + "/" + name + "_range.ply", scan.range_mesh);
+  return {{"cloud", name + ".pcd"},
+          {"truth", name + "_truth.json"},
+          {"num_points", scan.cloud->size ()},
+          {"num_outliers", scan.num_outliers},
+          {"scale", scan.scale}};
+}
+
+} // namespace tools
+} // namespace morphreg

@@ -1,0 +1,31 @@
+#pragma once
+// Writing the synthetic population and simulated scans to disk, shared by the synth and demo commands.
+#include <morphreg/synthetic/head_generator.h>
+#include <morphreg/synthetic/scan_simulator.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+namespace tools
+{
+/** Writes head_<i>.ply for each head and population.json (parameters, landmark vertices, profile line,
+ *  region labels); returns the manifest written. */
+nlohmann::json
+writePopulation (const std::string& directory, const synthetic::HeadGenerator& generator,
+                 const std::vector<synthetic::SyntheticHead>& heads, std::uint64_t seed, bool quiet);
+
+/** Writes <name>.pcd (points with normals), <name>_truth.json (pose, per-point source triangle) and, when
+ *  the scan has one, <name>_range.ply; returns a summary for reports. */
+nlohmann::json
+writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan);
+
+/** Creates \a directory (and parents); throws IoError naming it on failure. */
+void
+makeDirectory (const std::string& directory);
+
+} // namespace tools
+} // namespace morphreg
