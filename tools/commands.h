@@ -12,6 +12,7 @@ constexpr int kExitInternalError = 3;
 
 void registerSynthCommand (CLI::App& app);
 void registerDemoCommand (CLI::App& app);
+void registerRenderCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -19,6 +20,7 @@ registerCommands (CLI::App& app)
 {
   registerSynthCommand (app);
   registerDemoCommand (app);
+  registerRenderCommand (app);
 }
 } // namespace tools
 } // namespace morphreg

@@ -1,0 +1,61 @@
+#pragma once
+/** \file landmark_io.h
+ *  \brief Landmark files: MeshLab PickedPoints (.pp), JSON (.json) and CSV (.csv), holding 3D positions (mm) or,
+ *  for photos, 2D pixel positions. The layouts are documented in README.md (Landmark files).
+ *
+ *  Every reader rejects, with an error naming the file and the line or element: a missing or empty file (IoError),
+ *  malformed content, a malformed or non-finite number, a wrong number of coordinates, a duplicate id or a file
+ *  without landmarks (FormatError), and an id that is not in knownLandmarkIds() (InvalidInputError listing them).
+ *
+ *  \code
+ *  morphreg::LandmarkPositions marked = morphreg::loadLandmarks ("scan_landmarks.pp");
+ *  morphreg::saveLandmarks ("scan_landmarks.json", marked);
+ *  \endcode
+ */
+#include <morphreg/common/landmarks.h>
+
+#include <Eigen/Core>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Named 2D landmark positions in a photo, in pixels: x to the right, y down, origin at the top-left
+ *  corner of the image (the centre of the first pixel is (0.5, 0.5)).
+ */
+using LandmarkPixels = std::map<std::string, Eigen::Vector2d>;
+
+/** \brief Loads 3D landmarks from a .pp, .json or .csv file (chosen by the extension), in millimetres
+ *  (JSON files stating "cm" or "m" are converted). Inactive MeshLab points (active="0") are skipped.
+ */
+LandmarkPositions
+loadLandmarks (const std::string& path);
+
+/** \brief As loadLandmarks(path), and requires exactly the ids \a expected_ids: throws FormatError stating the
+ *  counts and listing the missing and unexpected ids otherwise.
+ */
+LandmarkPositions
+loadLandmarks (const std::string& path, const std::vector<std::string>& expected_ids);
+
+/** \brief Loads 2D pixel landmarks from a .json or .csv file (PickedPoints files hold 3D points only). */
+LandmarkPixels
+loadLandmarkPixels (const std::string& path);
+
+/** \brief As loadLandmarkPixels(path), and requires exactly the ids \a expected_ids. */
+LandmarkPixels
+loadLandmarkPixels (const std::string& path, const std::vector<std::string>& expected_ids);
+
+/** \brief Writes 3D landmarks (mm) as .pp, .json or .csv (by the extension), in the order of knownLandmarkIds().
+ *  Throws InvalidInputError for an empty set, an unknown id or a non-finite position, IoError if the file
+ *  cannot be written.
+ */
+void
+saveLandmarks (const std::string& path, const LandmarkPositions& landmarks);
+
+/** \brief Writes 2D pixel landmarks as .json or .csv, in the order of knownLandmarkIds(). */
+void
+saveLandmarkPixels (const std::string& path, const LandmarkPixels& pixels);
+
+} // namespace morphreg

@@ -1,0 +1,29 @@
+#pragma once
+/** \file colour_map.h
+ *  \brief The residual colour map: viridis (dark blue-violet = low, yellow = high), perceptually uniform and
+ *  readable in greyscale, unlike PCL's LUT_JET, which maps low values to red.
+ */
+#include <Eigen/Core>
+
+namespace morphreg
+{
+/** \brief An 8-bit RGB colour. */
+using Rgb8 = Eigen::Matrix<unsigned char, 3, 1>;
+
+/** \brief Per-vertex 8-bit RGB colours (3 x N), the layout toPolygonMesh() takes. */
+using VertexColours = Eigen::Matrix<unsigned char, 3, Eigen::Dynamic>;
+
+/** \brief The viridis colour of \a t in [0, 1] (clamped; NaN gives neutral grey), piecewise linear between ten
+ *  stops of the published map.
+ */
+Rgb8
+viridis (double t);
+
+/** \brief Colours of non-negative \a values on the scale [0, \a max_value] (larger values saturate at the top);
+ *  NaN entries (no residual) are grey. Throws InvalidInputError if \a max_value is not positive and finite or a
+ *  value is negative or infinite.
+ */
+VertexColours
+residualColours (const Eigen::VectorXd& values, double max_value);
+
+} // namespace morphreg

@@ -1,0 +1,91 @@
+// `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a).
+#include "commands.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/cloud_io.h>
+#include <morphreg/io/landmark_io.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/visualization/registration_visualizer.h>
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+struct RenderOptions
+{
+  std::vector<std::string> meshes;
+  std::vector<std::string> clouds;
+  std::vector<std::string> landmarks;
+  std::string out = "render.png";
+  int width = 1280;
+  int height = 960;
+  std::string view = "front";
+  double opacity = 1.0;
+};
+
+/** Direction from the subject towards the camera for a named view (+Z out of the face, +X the subject's left). */
+Eigen::Vector3d
+viewDirection (const std::string& view)
+{
+  static const std::map<std::string, Eigen::Vector3d> views = {{"front", Eigen::Vector3d::UnitZ ()},
+                                                               {"back", -Eigen::Vector3d::UnitZ ()},
+                                                               {"left", Eigen::Vector3d::UnitX ()},
+                                                               {"right", -Eigen::Vector3d::UnitX ()},
+                                                               {"oblique", Eigen::Vector3d (1.0, 0.3, 1.0)}};
+  return views.at (view);
+}
+
+void
+runRender (const RenderOptions& options)
+{
+  if (options.meshes.empty () && options.clouds.empty ())
+    throw InvalidInputError ("render: nothing to show; give at least one --mesh or --cloud");
+  RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
+  for (std::size_t i = 0; i < options.meshes.size (); ++i)
+    viewer.addModelMesh (loadPolygonMesh (options.meshes[i]), options.opacity, "mesh_" + std::to_string (i));
+  for (std::size_t i = 0; i < options.clouds.size (); ++i)
+    viewer.addTargetCloud (*loadCloud<pcl::PointXYZ> (options.clouds[i]), "cloud_" + std::to_string (i));
+  for (std::size_t i = 0; i < options.landmarks.size (); ++i)
+    viewer.addLandmarks (loadLandmarks (options.landmarks[i]),
+                         i == 0 ? RegistrationVisualizer::LandmarkRole::Target
+                                : RegistrationVisualizer::LandmarkRole::Source,
+                         2.5, true, "landmarks_" + std::to_string (i) + "_");
+  viewer.resetCamera (viewDirection (options.view));
+  viewer.saveScreenshot (options.out, options.width, options.height);
+  std::cout << "wrote " << options.out << " (" << options.width << "x" << options.height << ")\n";
+}
+} // namespace
+
+void
+registerRenderCommand (CLI::App& app)
+{
+  auto options = std::make_shared<RenderOptions> ();
+  CLI::App* command = app.add_subcommand ("render", "write a PNG of meshes, clouds and landmarks (run under xvfb-run -a)");
+  command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable")
+      ->check (CLI::ExistingFile);
+  command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj), repeatable")
+      ->check (CLI::ExistingFile);
+  command->add_option ("-l,--landmarks", options->landmarks,
+                       "landmark file (.pp .json .csv); the first is drawn as target, others as source")
+      ->check (CLI::ExistingFile);
+  command->add_option ("-o,--out", options->out, "PNG to write")->capture_default_str ();
+  command->add_option ("--width", options->width, "image width (pixels)")->check (CLI::Range (16, 8192))
+      ->capture_default_str ();
+  command->add_option ("--height", options->height, "image height (pixels)")->check (CLI::Range (16, 8192))
+      ->capture_default_str ();
+  command->add_option ("--view", options->view, "camera: front, back, left, right, oblique")
+      ->check (CLI::IsMember ({"front", "back", "left", "right", "oblique"}))
+      ->capture_default_str ();
+  command->add_option ("--opacity", options->opacity, "mesh opacity")->check (CLI::Range (0.0, 1.0))
+      ->capture_default_str ();
+  command->callback ([options] () { runRender (*options); });
+}
+
+} // namespace tools
+} // namespace morphreg
