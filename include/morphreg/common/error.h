@@ -12,7 +12,17 @@ namespace morphreg
 class Error : public pcl::PCLException
 {
 public:
-  explicit Error (const std::string& message) : pcl::PCLException (message) {}
+  explicit Error (const std::string& message) : pcl::PCLException (message), message_ (message) {}
+
+  /** \brief The message alone (PCLException's own text starts with ": " when no source location is given). */
+  const char*
+  what () const noexcept override
+  {
+    return message_.c_str ();
+  }
+
+private:
+  std::string message_;
 };
 
 /** \brief Invalid arguments or data: empty or NaN clouds, mismatched or degenerate landmarks, bad parameters. */
