@@ -1,6 +1,7 @@
 // `morphreg demo`: the main job on the built-in data. Generates the synthetic population and a simulated
 // scan of a held-out head, writes them with a JSON report.
 #include "commands.h"
+#include "json_report.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
 
@@ -59,10 +60,7 @@ runDemo (DemoOptions options)
                                  {"subject_seed", subject_seed},
                                  {"seconds", secondsSince (start)}};
   const std::string report_path = options.out + "/demo_report.json";
-  std::ofstream stream (report_path);
-  stream << std::setw (2) << report << '\n';
-  if (!stream)
-    throw IoError (report_path + ": cannot write");
+  writeJsonReport (report_path, report);
   std::cout << "demo: " << options.count << " heads in " << options.out << "/population, scan of a held-out head ("
             << scan.cloud->size () << " points, " << scan.num_outliers << " outliers) in " << options.out
             << "/scan, report " << report_path << '\n';

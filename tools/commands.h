@@ -13,6 +13,7 @@ constexpr int kExitInternalError = 3;
 void registerSynthCommand (CLI::App& app);
 void registerDemoCommand (CLI::App& app);
 void registerRenderCommand (CLI::App& app);
+void registerWarpCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -21,6 +22,7 @@ registerCommands (CLI::App& app)
   registerSynthCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
+  registerWarpCommand (app);
 }
 } // namespace tools
 } // namespace morphreg

@@ -1,8 +1,10 @@
 #include "synthetic_output.h"
+#include "json_report.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 
 #include <filesystem>
@@ -16,21 +18,21 @@ namespace tools
 {
 namespace
 {
-void
-writeJson (const std::string& path, const nlohmann::json& json)
-{
-  std::ofstream stream (path);
-  stream << std::setw (2) << json << '\n';
-  if (!stream)
-    throw IoError (path + ": cannot write");
-}
-
 std::string
-headFileName (std::size_t index)
+headFileName (std::size_t index, const std::string& suffix)
 {
   std::ostringstream name;
-  name << "head_" << std::setw (3) << std::setfill ('0') << index << ".ply";
+  name << "head_" << std::setw (3) << std::setfill ('0') << index << suffix;
   return name.str ();
+}
+
+LandmarkPositions
+landmarkPositions (const synthetic::HeadGenerator& generator, const TriangleMesh& head)
+{
+  LandmarkPositions positions;
+  for (const auto& [id, vertex] : generator.landmarks ())
+    positions[id] = head.vertices.col (vertex);
+  return positions;
 }
 
 nlohmann::json
@@ -75,13 +77,17 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
   manifest["heads"] = nlohmann::json::array ();
   const Progress progress ("writing heads", static_cast<int> (heads.size ()), quiet);
   for (std::size_t i = 0; i < heads.size (); ++i) {
-    const std::string file = headFileName (i);
+    const std::string file = headFileName (i, ".ply"), landmarks = headFileName (i, "_landmarks.json");
     saveTriangleMesh (directory + "/" + file, heads[i].mesh);
-    manifest["heads"].push_back ({{"file", file}, {"seed", seed + i}, {"parameters", parametersJson (heads[i].parameters)}});
+    saveLandmarks (directory + "/" + landmarks, landmarkPositions (generator, heads[i].mesh));
+    manifest["heads"].push_back ({{"file", file},
+                                  {"landmarks", landmarks},
+                                  {"seed", seed + i},
+                                  {"parameters", parametersJson (heads[i].parameters)}});
     progress.step (static_cast<int> (i + 1));
   }
   progress.finish ();
-  writeJson (directory + "/population.json", manifest);
+  writeJsonReport (directory + "/population.json", manifest);
   return manifest;
 }
 
@@ -100,7 +106,7 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
                           {"source_triangle", scan.source_triangle},
                           {"barycentric", std::vector<double> (scan.barycentric.data (),
                                                                scan.barycentric.data () + scan.barycentric.size ())}};
-  writeJson (directory + "/" + name + "_truth.json", truth);
+  writeJsonReport (directory + "/" + name + "_truth.json", truth);
   if (!scan.range_mesh.polygons.empty ())
     savePolygonMesh (directory + "/" + name + "_range.ply", scan.range_mesh);
   return {{"cloud", name + ".pcd"},

@@ -12,7 +12,7 @@ namespace morphreg
 {
 namespace tools
 {
-/** Writes head_<i>.ply for each head and population.json (parameters, landmark vertices, profile line,
+/** Writes head_<i>.ply and head_<i>_landmarks.json for each head and population.json (parameters, landmark vertices, profile line,
  *  region labels); returns the manifest written. */
 nlohmann::json
 writePopulation (const std::string& directory, const synthetic::HeadGenerator& generator,

@@ -269,14 +269,15 @@ readCsv (const std::string& path)
 /** \brief Validates ids (non-empty, known, unique) and builds the named set; FormatError if there is none. */
 template <int Dim>
 NamedPoints<Dim>
-collect (const std::vector<Entry<Dim>>& entries, const std::string& path)
+collect (const std::vector<Entry<Dim>>& entries, const std::string& path, bool known_ids_only)
 {
   NamedPoints<Dim> points;
   std::map<std::string, std::string> first_seen;
   for (const auto& entry : entries) {
     if (entry.id.empty ())
       throw FormatError (entry.where + ": empty landmark id");
-    requireKnownLandmarkId (entry.id, entry.where);
+    if (known_ids_only)
+      requireKnownLandmarkId (entry.id, entry.where);
     const auto [it, inserted] = first_seen.emplace (entry.id, entry.where);
     if (!inserted)
       throw FormatError (entry.where + ": duplicate landmark '" + entry.id + "' (first at " + it->second + ")");
@@ -289,18 +290,18 @@ collect (const std::vector<Entry<Dim>>& entries, const std::string& path)
 
 template <int Dim>
 NamedPoints<Dim>
-load (const std::string& path)
+load (const std::string& path, bool known_ids_only = true)
 {
   requireExtension (path, Dim == 3 ? ".pp .json .csv" : ".json .csv",
                     Dim == 3 ? "landmark" : "pixel landmark (PickedPoints files are 3D only)");
   requireReadableFile (path);
   const std::string ext = fileExtension (path);
   if (ext == ".json")
-    return collect<Dim> (readJson<Dim> (path), path);
+    return collect<Dim> (readJson<Dim> (path), path, known_ids_only);
   if (ext == ".csv")
-    return collect<Dim> (readCsv<Dim> (path), path);
+    return collect<Dim> (readCsv<Dim> (path), path, known_ids_only);
   if constexpr (Dim == 3)
-    return collect<3> (readPickedPoints (path), path);
+    return collect<3> (readPickedPoints (path), path, known_ids_only);
   throw IoError (path + ": unsupported landmark format"); // unreachable: requireExtension checked it
 }
 
@@ -430,6 +431,12 @@ loadLandmarks (const std::string& path, const std::vector<std::string>& expected
   LandmarkPositions landmarks = load<3> (path);
   requireExpectedIds<3> (landmarks, expected_ids, path);
   return landmarks;
+}
+
+LandmarkPositions
+loadNamedPoints (const std::string& path)
+{
+  return load<3> (path, false);
 }
 
 LandmarkPixels

@@ -39,6 +39,12 @@ loadLandmarks (const std::string& path);
 LandmarkPositions
 loadLandmarks (const std::string& path, const std::vector<std::string>& expected_ids);
 
+/** \brief As loadLandmarks(path), but any non-empty name is accepted (e.g. the joint names of a body rig for
+ *  thin plate spline warping); duplicates and malformed content are still errors.
+ */
+LandmarkPositions
+loadNamedPoints (const std::string& path);
+
 /** \brief Loads 2D pixel landmarks from a .json or .csv file (PickedPoints files hold 3D points only). */
 LandmarkPixels
 loadLandmarkPixels (const std::string& path);

@@ -1,0 +1,98 @@
+#pragma once
+/** \file makehuman_bodies.h
+ *  \brief Reader for the MakeHuman body set (../shared/data/makehuman_bodies): three subjects standing and seated in
+ *  one vertex numbering, their joint centres, the four body segments and the landmark sets. MakeHuman works in
+ *  decimetres; everything returned here is converted to millimetres.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Pose of a MakeHuman body. */
+enum class BodyPose
+{
+  standing,
+  seated
+};
+
+/** \brief The MakeHuman body folder, validated on construction (files present, counts consistent).
+ *
+ *  \code
+ *  morphreg::MakeHumanBodies bodies (data_dir + "/makehuman_bodies");
+ *  TriangleMesh standing = bodies.loadMesh ("base", morphreg::BodyPose::standing);      // mm
+ *  Eigen::Matrix3Xd joints = bodies.joints ("base", morphreg::BodyPose::standing, bodies.majorJoints ());
+ *  \endcode
+ */
+class MakeHumanBodies
+{
+public:
+  /** \brief MakeHuman units (decimetres) to millimetres. */
+  static constexpr double kMillimetresPerUnit = 100.0;
+
+  /** \brief Reads the JSON files of \a directory; throws IoError / FormatError naming the file and the problem. */
+  explicit MakeHumanBodies (const std::string& directory);
+
+  /** \brief The subjects ("base", "caucasian-male-young", "caucasian-female-young"). */
+  std::vector<std::string>
+  subjects () const;
+
+  /** \brief A subject's body mesh in \a pose, in millimetres. */
+  TriangleMesh
+  loadMesh (const std::string& subject, BodyPose pose) const;
+
+  /** \brief Joint centres (3 x names.size(), mm) of a subject in \a pose; throws InvalidInputError for an
+   *  unknown subject or joint name.
+   */
+  Eigen::Matrix3Xd
+  joints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const;
+
+  /** \brief All joint names (head and tail of every bone). */
+  std::vector<std::string>
+  jointNames () const;
+
+  /** \brief The 51 major joints of mh_landmark_sets.json (the sparse landmark set). */
+  const std::vector<std::string>&
+  majorJoints () const
+  {
+    return major_joints_;
+  }
+
+  /** \brief The 16 surface vertex indices of mh_landmark_sets.json (knees, thighs, hips, buttocks). */
+  const std::vector<int>&
+  surfaceVertices () const
+  {
+    return surface_vertices_;
+  }
+
+  /** \brief Segment label per vertex (index into segmentNames()). */
+  const std::vector<int>&
+  segmentLabels () const
+  {
+    return segment_labels_;
+  }
+
+  /** \brief "left_arm", "right_arm", "upper_body", "lower_body". */
+  const std::vector<std::string>&
+  segmentNames () const
+  {
+    return segment_names_;
+  }
+
+private:
+  const std::map<std::string, Eigen::Vector3d>&
+  jointTable (const std::string& subject, BodyPose pose) const;
+
+  std::string directory_;
+  std::map<std::string, std::map<std::string, Eigen::Vector3d>> joints_; ///< key: subject or subject_seated
+  std::vector<std::string> major_joints_;
+  std::vector<int> surface_vertices_;
+  std::vector<int> segment_labels_;
+  std::vector<std::string> segment_names_;
+  int num_vertices_ = 0;
+};
+
+} // namespace morphreg

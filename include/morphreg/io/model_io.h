@@ -1,0 +1,41 @@
+#pragma once
+/** \file model_io.h
+ *  \brief MorphableModel files: HDF5 in the statismo v0.9 layout (readable by statismo/scalismo tools as a
+ *  global PCA model) plus a /morphreg group with the regions, blending weights, per-region bases, landmarks and
+ *  profile line.
+ *
+ *  Statismo part (float32, row-major): /model/mean [3N] interleaved x,y,z; /model/pcaBasis [3N, k] orthonormal
+ *  columns; /model/pcaVariance [k]; /model/noiseVariance scalar; /representer/points [3, N] (the mean shape);
+ *  /representer/cells [3, M] int32; /representer attributes name, datasetType = "POLYGON_MESH";
+ *  /version/majorVersion = 0, minorVersion = 9; /modelinfo/build-time, /modelinfo/scores [k, 0] (no scores kept).
+ *
+ *  morphreg part (float64 so a round trip is exact): /morphreg/formatVersion = 1; mean [3N]; units; landmarks and
+ *  metadata (JSON strings); profileLine [L] int32; numRegions; regions/region_<j>/{name, vertices [B] int32,
+ *  weights [B], basis [3B, P], variances [P]}.
+ */
+#include <morphreg/model/morphable_model.h>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Writes \a model to \a path (HDF5, usually .h5); throws IoError naming the file on failure. */
+void
+saveModel (const std::string& path, const MorphableModel& model);
+
+/** \brief Loads a model file: the full multi-region model if the file has a /morphreg group, otherwise the
+ *  statismo-layout global PCA model found at the root or under the Basel Face Model 2017 prefix "shape/".
+ *  Throws IoError for a missing file, FormatError naming the file, the dataset and the problem for anything
+ *  corrupt (missing dataset, wrong dimensions, non-finite values, out-of-range indices, truncated file).
+ */
+MorphableModel::Ptr
+loadModel (const std::string& path);
+
+/** \brief Loads the statismo-layout model under \a prefix ("" for the root, "shape" for BFM-2017 files).
+ *  statismo v0.8 files (minorVersion 8) store the basis scaled by the standard deviations; it is normalised on
+ *  import. A file without a version group is read as v0.9. Coordinates are taken to be in millimetres.
+ */
+MorphableModel::Ptr
+loadStatismoModel (const std::string& path, const std::string& prefix = "");
+
+} // namespace morphreg

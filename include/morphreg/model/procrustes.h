@@ -1,0 +1,19 @@
+#pragma once
+/** \file procrustes.h
+ *  \brief Generalised Procrustes alignment of shapes in correspondence (rigid: rotation and translation).
+ */
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Rigidly aligns every shape (3 x N, same N) to their common mean, iterating until the mean settles.
+ *  The mean is kept in the frame of the first shape. Scale is not removed: head size is part of the shape
+ *  variation a head model must describe. Throws InvalidInputError for fewer than two shapes or mismatched sizes.
+ */
+void
+alignGeneralisedProcrustes (std::vector<Eigen::Matrix3Xd>& shapes, int max_iterations = 50,
+                            double tolerance = 1e-9);
+
+} // namespace morphreg

@@ -1,0 +1,105 @@
+#pragma once
+/** \file segmented_warp.h
+ *  \brief Thin plate spline warping by segments (one spline per body part) recombined into one mesh, with the seams
+ *  blended over a width measured along the mesh.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/registration/thin_plate_spline.h>
+
+#include <pcl/PolygonMesh.h>
+
+#include <memory>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Warps a mesh segment by segment: every vertex has a segment label, every segment its own landmark pairs
+ *  and its own 3D thin plate spline. The warped mesh keeps its topology. Near a border a vertex takes a weighted
+ *  mix of the warps of the segments within the blend width (geodesic, over the mesh being warped); weights fall
+ *  smoothly from 1 at a segment to 0 at the blend width from it and are normalised per vertex. A blend width of 0
+ *  is the hard segmentation of the seed paper (each vertex follows its own segment only).
+ *
+ *  \code
+ *  morphreg::SegmentedWarp warp (labels, 4);
+ *  auto subsets = morphreg::assignLandmarksToSegments (standing, labels, 4, joints_standing, 150.0);
+ *  for (int s = 0; s < 4; ++s)
+ *    warp.setSegmentLandmarks (s, select (joints_standing, subsets[s]), select (joints_seated, subsets[s]));
+ *  warp.setBlendWidth (100.0);
+ *  morphreg::TriangleMesh seated = warp.warp (standing);
+ *  \endcode
+ */
+class SegmentedWarp
+{
+public:
+  using Ptr = std::shared_ptr<SegmentedWarp>;
+  using ConstPtr = std::shared_ptr<const SegmentedWarp>;
+  using Spline = ThinPlateSpline<double, 3>;
+
+  /** \brief \a labels: the segment (0 .. num_segments - 1) of each vertex of the meshes this will warp. */
+  SegmentedWarp (std::vector<int> labels, int num_segments);
+
+  int
+  numSegments () const
+  {
+    return static_cast<int> (splines_.size ());
+  }
+
+  /** \brief Fits segment \a segment's spline to the landmark pairs (columns of \a source -> \a target, mm). Errors
+   *  from the fit (too few or degenerate landmarks, ...) are rethrown naming the segment.
+   */
+  void
+  setSegmentLandmarks (int segment, const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target);
+
+  /** \brief The fitted spline of \a segment (throws InvalidInputError if it has no landmarks yet). */
+  const Spline&
+  segmentSpline (int segment) const;
+
+  /** \brief Blend width in mm along the mesh (>= 0; 0 = hard segmentation). */
+  void
+  setBlendWidth (double width);
+
+  double
+  getBlendWidth () const
+  {
+    return blend_width_;
+  }
+
+  /** \brief Regularisation lambda of every segment's spline (see ThinPlateSpline::setRegularization); takes
+   *  effect for landmarks set afterwards.
+   */
+  void
+  setRegularization (double lambda);
+
+  /** \brief Per-vertex blend weights (N x numSegments, rows sum to 1) for \a mesh. */
+  Eigen::MatrixXd
+  blendWeights (const TriangleMesh& mesh) const;
+
+  /** \brief \a mesh warped (same triangles). Throws InvalidInputError if its vertex count differs from the labels
+   *  or a segment that has vertices has no landmarks.
+   */
+  TriangleMesh
+  warp (const TriangleMesh& mesh) const;
+
+  /** \brief As warp(TriangleMesh) for a pcl::PolygonMesh of triangles; vertex normals are recomputed. */
+  void
+  warp (const pcl::PolygonMesh& input, pcl::PolygonMesh& output) const;
+
+private:
+  void
+  requireSegment (int segment, const char* caller) const;
+
+  std::vector<int> labels_;
+  std::vector<std::unique_ptr<Spline>> splines_;
+  double blend_width_ = 0.0;
+  double regularization_ = 0.0;
+};
+
+/** \brief Landmark subsets per segment: landmark i (a column of \a landmarks, e.g. joint centres inside the body)
+ *  goes to the segment of its nearest vertex of \a mesh and to every other segment whose nearest vertex is at most
+ *  \a overlap mm further away, so subsets overlap across borders. Returns the column indices per segment.
+ */
+std::vector<std::vector<int>>
+assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& labels, int num_segments,
+                           const Eigen::Matrix3Xd& landmarks, double overlap);
+
+} // namespace morphreg

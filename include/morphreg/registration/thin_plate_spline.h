@@ -1,0 +1,215 @@
+#pragma once
+/** \file thin_plate_spline.h
+ *  \brief Thin plate spline warps (METHOD.md section 1): exact or regularised fits from landmark pairs, and
+ *  fast evaluation on points, PCL clouds and meshes.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/registration/impl/tps_kernel.hpp>
+
+#include <pcl/PolygonMesh.h>
+#include <pcl/correspondence.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <type_traits>
+
+namespace morphreg
+{
+/** \brief A thin plate spline f: R^Dim -> R^Dim, f(x) = A^T [1; x] + sum_i W_i U(|x - p_i|), with U(r) = r in 3D
+ *  (as VTK's vtkThinPlateSplineTransform::SetBasisToR) and U(r) = r^2 log r^2 in 2D (VTK's r^2 log r gives the same
+ *  interpolating warp with doubled weights).
+ *
+ *  The fit reduces the symmetric indefinite system [[K P][P^T 0]] [W; A] = [Q; 0] to the null space of P^T and
+ *  solves the (then definite) kernel block by Cholesky, followed by one step of iterative refinement if needed:
+ *  O(n^3 / 3) with a single n x n matrix. It is always computed in double; \a Scalar is the precision of the stored
+ *  coefficients and of evaluation. Coincident landmark pairs are merged; degenerate landmarks are an
+ *  InvalidInputError and an ill-conditioned system a NumericalError, never a silent result.
+ *
+ *  Evaluation is vectorised over the landmarks and threaded (OpenMP) over the query points. Points use the
+ *  project's column layout (Dim x N, like TriangleMesh::vertices); the coefficient accessors use METHOD.md's
+ *  matrices (one row per landmark). For Dim = 2 the spline warps x and y and leaves z unchanged.
+ *
+ *  \code
+ *  morphreg::ThinPlateSpline<double, 3> tps;
+ *  tps.fit (source_landmarks, target_landmarks); // 3 x n each, in mm
+ *  pcl::PolygonMesh warped;
+ *  tps.transformMesh (scan, warped);              // vertices moved, triangles kept, normals recomputed
+ *  \endcode
+ */
+template <typename Scalar = double, int Dim = 3>
+class ThinPlateSpline
+{
+  static_assert (std::is_floating_point<Scalar>::value, "ThinPlateSpline needs a floating-point Scalar");
+  static_assert (Dim == 2 || Dim == 3, "ThinPlateSpline is 2D or 3D");
+
+public:
+  using Ptr = std::shared_ptr<ThinPlateSpline>;
+  using ConstPtr = std::shared_ptr<const ThinPlateSpline>;
+  using Point = Eigen::Matrix<Scalar, Dim, 1>;
+  /** \brief Points as columns (Dim x N). */
+  using Points = Eigen::Matrix<Scalar, Dim, Eigen::Dynamic>;
+  /** \brief One row per landmark (n x Dim): the landmarks p_i^T and the weights W. */
+  using LandmarkMatrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Dim>;
+  /** \brief The affine part A ((Dim+1) x Dim): f's affine term is A^T [1; x]. */
+  using AffineMatrix = Eigen::Matrix<Scalar, Dim + 1, Dim>;
+  using Jacobian = Eigen::Matrix<Scalar, Dim, Dim>;
+
+  /** \brief Default limit of the condition estimate: beyond it the weights carry less than ~6 correct digits. */
+  static constexpr double kDefaultMaxConditionNumber = 1e10;
+
+  ThinPlateSpline () = default;
+
+  /** \brief lambda >= 0 trades landmark fidelity for smoothness (0, the default: exact interpolation). The fit then
+   *  minimises sum |f(p_i) - q_i|^2 + lambda * bendingEnergy(); lambda has the kernel's unit (mm in 3D, mm^2 in 2D).
+   *  In 3D, where U = +r makes K negative definite on the constraint space, this is K - lambda I in L.
+   *  Throws InvalidInputError if \a lambda is negative or not finite. Takes effect at the next fit.
+   */
+  void
+  setRegularization (double lambda);
+
+  double
+  getRegularization () const
+  {
+    return regularization_;
+  }
+
+  /** \brief Fits with a condition estimate above \a limit (> 1) throw NumericalError. */
+  void
+  setMaxConditionNumber (double limit);
+
+  double
+  getMaxConditionNumber () const
+  {
+    return max_condition_number_;
+  }
+
+  /** \brief Fits the spline mapping each column of \a source to the same column of \a target (Dim x n each). */
+  void
+  fit (const Eigen::Ref<const Points>& source, const Eigen::Ref<const Points>& target);
+
+  /** \brief Fits on the first Dim coordinates (x, y[, z]) of two clouds of equal size, point i to point i. */
+  template <typename PointSource, typename PointTarget>
+  void
+  fit (const pcl::PointCloud<PointSource>& source, const pcl::PointCloud<PointTarget>& target);
+
+  /** \brief Fits on the pairs (source[index_query], target[index_match]) of \a correspondences; throws
+   *  InvalidInputError naming any correspondence whose index is out of range.
+   */
+  template <typename PointSource, typename PointTarget>
+  void
+  fit (const pcl::PointCloud<PointSource>& source, const pcl::PointCloud<PointTarget>& target,
+       const pcl::Correspondences& correspondences);
+
+  bool
+  isFitted () const
+  {
+    return fitted_;
+  }
+
+  /** \brief The distinct source landmarks p_i (n x Dim, duplicates merged) the weights belong to. */
+  const LandmarkMatrix&
+  getLandmarks () const;
+
+  /** \brief The kernel weights W (n x Dim), one row per landmark of getLandmarks(). */
+  const LandmarkMatrix&
+  getWeights () const;
+
+  /** \brief The affine part A ((Dim+1) x Dim). */
+  const AffineMatrix&
+  getAffine () const;
+
+  /** \brief Bending energy, sign * trace(W^T K W) with the sign that makes it >= 0 (-1 in 3D, +1 in 2D); zero
+   *  exactly when the warp is affine.
+   */
+  double
+  bendingEnergy () const;
+
+  /** \brief The condition estimate of the last fit: the larger of the reduced kernel system's (1-norm, from the
+   *  Cholesky factor) and the affine part's (widest / thinnest spread of the landmarks).
+   */
+  double
+  conditionEstimate () const;
+
+  /** \brief Landmark pairs the last fit dropped as duplicates of earlier pairs. */
+  Eigen::Index
+  mergedLandmarks () const;
+
+  /** \brief f(x) for one point. */
+  Point
+  transformPoint (const Point& x) const;
+
+  /** \brief f at every column of \a points (Dim x N); non-finite points give non-finite results. */
+  Points
+  evaluate (const Eigen::Ref<const Points>& points) const;
+
+  /** \brief The Jacobian df/dx at \a x. */
+  Jacobian
+  jacobian (const Point& x) const;
+
+  /** \brief Warps the XYZ of every point; all other fields are kept, except normals (if PointT has them), which are
+   *  mapped by the inverse transpose of the Jacobian and renormalised. \a output may be \a input.
+   */
+  template <typename PointT>
+  void
+  transformCloud (const pcl::PointCloud<PointT>& input, pcl::PointCloud<PointT>& output) const;
+
+  /** \brief Warps the vertices of \a input into \a output (may be \a input): triangles and all other fields kept;
+   *  normal_x/y/z, when present, recomputed from the warped polygons (area-weighted). Throws InvalidInputError if
+   *  the vertex cloud has no float/double x, y, z fields or a polygon index is out of range.
+   */
+  void
+  transformMesh (const pcl::PolygonMesh& input, pcl::PolygonMesh& output) const;
+
+  /** \brief \a mesh with warped vertices and the same triangles. */
+  TriangleMesh
+  transformMesh (const TriangleMesh& mesh) const;
+
+  /** \brief Warps the columns of \a positions (3 x N, double) in place; in 2D only x and y. */
+  void
+  transformPositions (Eigen::Matrix3Xd& positions) const;
+
+private:
+  void
+  requireFitted (const char* caller) const;
+
+  double regularization_ = 0.0;
+  double max_condition_number_ = kDefaultMaxConditionNumber;
+  bool fitted_ = false;
+  detail::TpsCoefficients<Scalar, Dim> coefficients_;
+  double bending_energy_ = 0.0;
+  double condition_estimate_ = 0.0;
+  Eigen::Index merged_landmarks_ = 0;
+};
+
+/** \brief The first Dim coordinates (x, y[, z]) of the points of \a cloud at \a indices (all points if empty), as
+ *  columns.
+ */
+template <typename Scalar, int Dim, typename PointT>
+Eigen::Matrix<Scalar, Dim, Eigen::Dynamic>
+cloudCoordinates (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices = pcl::Indices ());
+
+} // namespace morphreg
+
+#define MORPHREG_DECLARE_TPS_POINT(S, D, T)                                                                        \
+  extern template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (const pcl::PointCloud<T>&,                      \
+                                                                   const pcl::PointCloud<T>&);                     \
+  extern template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (                                                \
+      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&);                          \
+  extern template void morphreg::ThinPlateSpline<S, D>::transformCloud<T> (const pcl::PointCloud<T>&,              \
+                                                                          pcl::PointCloud<T>&) const;              \
+  extern template Eigen::Matrix<S, D, Eigen::Dynamic> morphreg::cloudCoordinates<S, D, T> (const pcl::PointCloud<T>&, \
+                                                                                          const pcl::Indices&);
+#define MORPHREG_DECLARE_TPS(S, D)                                                                                 \
+  extern template class morphreg::ThinPlateSpline<S, D>;                                                           \
+  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointXYZ)                                                                 \
+  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointNormal)                                                              \
+  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointXYZRGBNormal)
+MORPHREG_DECLARE_TPS (double, 3)
+MORPHREG_DECLARE_TPS (float, 3)
+MORPHREG_DECLARE_TPS (double, 2)
+MORPHREG_DECLARE_TPS (float, 2)
+#undef MORPHREG_DECLARE_TPS
+#undef MORPHREG_DECLARE_TPS_POINT

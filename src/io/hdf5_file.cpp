@@ -1,0 +1,263 @@
+#include "hdf5_file.h"
+
+#include <morphreg/io/file_checks.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace morphreg
+{
+namespace hdf5
+{
+namespace
+{
+std::string
+dimsText (const std::vector<hsize_t>& dims)
+{
+  std::ostringstream text;
+  text << '[';
+  for (size_t i = 0; i < dims.size (); ++i)
+    text << (i ? ", " : "") << dims[i];
+  text << ']';
+  return text.str ();
+}
+
+H5::H5File
+openFile (const std::string& path)
+{
+  requireReadableFile (path);
+  H5::Exception::dontPrint ();
+  try {
+    return H5::H5File (path, H5F_ACC_RDONLY);
+  }
+  catch (const H5::Exception& e) {
+    throw FormatError (path + ": not a readable HDF5 file (corrupt or truncated): " + e.getDetailMsg ());
+  }
+}
+
+H5::H5File
+createFile (const std::string& path)
+{
+  H5::Exception::dontPrint ();
+  try {
+    return H5::H5File (path, H5F_ACC_TRUNC);
+  }
+  catch (const H5::Exception& e) {
+    throw IoError (path + ": cannot create the HDF5 file: " + e.getDetailMsg ());
+  }
+}
+} // namespace
+
+Reader::Reader (const std::string& path) : path_ (path), file_ (openFile (path)) {}
+
+void
+Reader::fail (const std::string& name, const std::string& problem) const
+{
+  throw FormatError (path_ + ": dataset '" + name + "': " + problem);
+}
+
+bool
+Reader::exists (const std::string& name) const
+{
+  try {
+    std::string prefix;
+    std::istringstream parts (name);
+    for (std::string part; std::getline (parts, part, '/');) {
+      if (part.empty ())
+        continue;
+      prefix += (prefix.empty () ? "" : "/") + part;
+      if (!file_.nameExists (prefix))
+        return false;
+    }
+    return !prefix.empty ();
+  }
+  catch (const H5::Exception& e) {
+    throw FormatError (path_ + ": cannot look up '" + name + "': " + e.getDetailMsg ());
+  }
+}
+
+H5::DataSet
+Reader::open (const std::string& name, H5T_class_t type_class) const
+{
+  if (!exists (name))
+    fail (name, "missing");
+  H5::DataSet dataset;
+  H5T_class_t actual = H5T_NO_CLASS;
+  try {
+    dataset = file_.openDataSet (name);
+    actual = dataset.getTypeClass ();
+  }
+  catch (const H5::Exception& e) {
+    fail (name, "cannot be opened as a dataset: " + e.getDetailMsg ());
+  }
+  const bool numeric = actual == H5T_FLOAT || actual == H5T_INTEGER;
+  if (actual != type_class && !(type_class == H5T_NO_CLASS && numeric))
+    fail (name, type_class == H5T_FLOAT     ? "expected floating-point data"
+                : type_class == H5T_INTEGER ? "expected integer data"
+                : type_class == H5T_STRING  ? "expected a string"
+                                            : "expected a number");
+  return dataset;
+}
+
+template <typename Scalar>
+Array<Scalar>
+Reader::readArray (const std::string& name, int rank, H5T_class_t type_class, const H5::PredType& memory_type) const
+{
+  const H5::DataSet dataset = open (name, type_class);
+  Array<Scalar> array;
+  try {
+    const H5::DataSpace space = dataset.getSpace ();
+    const int actual_rank = space.getSimpleExtentNdims ();
+    array.dims.resize (actual_rank);
+    space.getSimpleExtentDims (array.dims.data ());
+    if (actual_rank != rank)
+      fail (name, "has " + std::to_string (actual_rank) + " dimensions " + dimsText (array.dims) + ", expected " +
+                      std::to_string (rank));
+    hsize_t count = 1;
+    for (const hsize_t d : array.dims)
+      count *= d;
+    if (count > (hsize_t (1) << 32))
+      fail (name, "implausibly large " + dimsText (array.dims));
+    array.values.resize (count);
+    if (count > 0)
+      dataset.read (array.values.data (), memory_type);
+  }
+  catch (const H5::Exception& e) {
+    fail (name, "cannot be read (corrupt or truncated file?): " + e.getDetailMsg ());
+  }
+  return array;
+}
+
+Array<double>
+Reader::readFloats (const std::string& name, int rank) const
+{
+  Array<double> array = readArray<double> (name, rank, H5T_FLOAT, H5::PredType::NATIVE_DOUBLE);
+  for (size_t i = 0; i < array.values.size (); ++i)
+    if (!std::isfinite (array.values[i]))
+      fail (name, "element " + std::to_string (i) + " is not finite (NaN or Inf)");
+  return array;
+}
+
+Array<long long>
+Reader::readIntegers (const std::string& name, int rank) const
+{
+  return readArray<long long> (name, rank, H5T_INTEGER, H5::PredType::NATIVE_LLONG);
+}
+
+double
+Reader::readScalar (const std::string& name) const
+{
+  const H5::DataSet dataset = open (name, H5T_NO_CLASS);
+  double value = 0.0;
+  try {
+    if (dataset.getSpace ().getSimpleExtentNpoints () != 1)
+      fail (name, "expected a single value, found " + std::to_string (dataset.getSpace ().getSimpleExtentNpoints ()));
+    dataset.read (&value, H5::PredType::NATIVE_DOUBLE);
+  }
+  catch (const H5::Exception& e) {
+    fail (name, "cannot be read: " + e.getDetailMsg ());
+  }
+  if (!std::isfinite (value))
+    fail (name, "is not finite");
+  return value;
+}
+
+std::string
+Reader::readString (const std::string& name) const
+{
+  const H5::DataSet dataset = open (name, H5T_STRING);
+  try {
+    std::string value;
+    dataset.read (value, dataset.getStrType ());
+    return value;
+  }
+  catch (const H5::Exception& e) {
+    fail (name, "cannot be read as a string: " + e.getDetailMsg ());
+  }
+}
+
+Writer::Writer (const std::string& path) : path_ (path), file_ (createFile (path)) {}
+
+template <typename Call>
+void
+Writer::guarded (const std::string& name, Call call)
+{
+  try {
+    call ();
+  }
+  catch (const H5::Exception& e) {
+    throw IoError (path_ + ": cannot write '" + name + "': " + e.getDetailMsg ());
+  }
+}
+
+void
+Writer::group (const std::string& name)
+{
+  guarded (name, [&] { file_.createGroup (name); });
+}
+
+void
+Writer::floats (const std::string& name, const std::vector<hsize_t>& dims, const double* values,
+                bool double_precision)
+{
+  guarded (name, [&] {
+    const H5::DataSpace space (static_cast<int> (dims.size ()), dims.data ());
+    H5::DataSet dataset =
+        file_.createDataSet (name, double_precision ? H5::PredType::IEEE_F64LE : H5::PredType::IEEE_F32LE, space);
+    if (space.getSimpleExtentNpoints () > 0)
+      dataset.write (values, H5::PredType::NATIVE_DOUBLE);
+  });
+}
+
+void
+Writer::integers (const std::string& name, const std::vector<hsize_t>& dims, const int* values)
+{
+  guarded (name, [&] {
+    const H5::DataSpace space (static_cast<int> (dims.size ()), dims.data ());
+    H5::DataSet dataset = file_.createDataSet (name, H5::PredType::STD_I32LE, space);
+    if (space.getSimpleExtentNpoints () > 0)
+      dataset.write (values, H5::PredType::NATIVE_INT);
+  });
+}
+
+void
+Writer::scalarInt (const std::string& name, int value)
+{
+  guarded (name, [&] {
+    H5::DataSet dataset = file_.createDataSet (name, H5::PredType::STD_I32LE, H5::DataSpace (H5S_SCALAR));
+    dataset.write (&value, H5::PredType::NATIVE_INT);
+  });
+}
+
+void
+Writer::scalarFloat (const std::string& name, double value)
+{
+  guarded (name, [&] {
+    H5::DataSet dataset = file_.createDataSet (name, H5::PredType::IEEE_F32LE, H5::DataSpace (H5S_SCALAR));
+    dataset.write (&value, H5::PredType::NATIVE_DOUBLE);
+  });
+}
+
+void
+Writer::string (const std::string& name, const std::string& value)
+{
+  guarded (name, [&] {
+    const H5::StrType type (H5::PredType::C_S1, H5T_VARIABLE);
+    H5::DataSet dataset = file_.createDataSet (name, type, H5::DataSpace (H5S_SCALAR));
+    dataset.write (value, type);
+  });
+}
+
+void
+Writer::attribute (const std::string& group, const std::string& name, const std::string& value)
+{
+  guarded (group + "@" + name, [&] {
+    const H5::StrType type (H5::PredType::C_S1, H5T_VARIABLE);
+    H5::Group target = file_.openGroup (group);
+    H5::Attribute attribute = target.createAttribute (name, type, H5::DataSpace (H5S_SCALAR));
+    attribute.write (type, value);
+  });
+}
+
+} // namespace hdf5
+} // namespace morphreg

@@ -1,0 +1,171 @@
+// `morphreg warp`: a mesh warped by a thin plate spline from source to target landmarks, globally or by segments
+// with blended seams; with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
+#include "commands.h"
+#include "json_report.h"
+#include "progress.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/file_checks.h>
+#include <morphreg/io/landmark_io.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/registration/segmented_warp.h>
+#include <morphreg/registration/warp_quality.h>
+#include <morphreg/visualization/colour_map.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+struct WarpOptions
+{
+  std::string mesh, source, target, out = "warped.ply";
+  std::string labels, truth, report;
+  double blend = 100.0;
+  double overlap = 90.0;
+  double lambda = 0.0;
+  bool quiet = false;
+};
+
+/** The landmark pairs present in both files, as matching columns; every name must be in both. */
+std::pair<Eigen::Matrix3Xd, Eigen::Matrix3Xd>
+landmarkPairs (const std::string& source_path, const std::string& target_path)
+{
+  const LandmarkPositions source = loadNamedPoints (source_path), target = loadNamedPoints (target_path);
+  std::string missing;
+  for (const auto& entry : source)
+    if (!target.count (entry.first))
+      missing += " " + entry.first;
+  for (const auto& entry : target)
+    if (!source.count (entry.first))
+      missing += " " + entry.first;
+  if (!missing.empty ())
+    throw InvalidInputError ("warp: the landmark files " + source_path + " and " + target_path +
+                             " must name the same landmarks; not in both:" + missing);
+  Eigen::Matrix3Xd from (3, static_cast<Eigen::Index> (source.size ())), to (3, from.cols ());
+  Eigen::Index column = 0;
+  for (const auto& [name, position] : source) {
+    from.col (column) = position;
+    to.col (column++) = target.at (name);
+  }
+  return {from, to};
+}
+
+/** Segment labels from a JSON file {"labels": [...], "segments": [names, optional]}. */
+std::vector<int>
+loadSegmentLabels (const std::string& path, int& num_segments)
+{
+  requireReadableFile (path);
+  std::ifstream stream (path);
+  try {
+    const nlohmann::json json = nlohmann::json::parse (stream);
+    std::vector<int> labels = json.at ("labels").get<std::vector<int>> ();
+    num_segments = json.contains ("segments") ? static_cast<int> (json.at ("segments").size ())
+                                              : 1 + *std::max_element (labels.begin (), labels.end ());
+    return labels;
+  }
+  catch (const nlohmann::json::exception& e) {
+    throw FormatError (path + ": expected {\"labels\": [segment per vertex], \"segments\": [names]} (" + e.what () +
+                       ")");
+  }
+}
+
+TriangleMesh
+warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& report)
+{
+  const auto [source, target] = landmarkPairs (options.source, options.target);
+  report["landmarks"] = source.cols ();
+  if (options.labels.empty ()) {
+    ThinPlateSpline<double, 3> spline;
+    spline.setRegularization (options.lambda);
+    spline.fit (source, target);
+    report["mode"] = "global";
+    report["bending_energy"] = spline.bendingEnergy ();
+    report["merged_landmarks"] = spline.mergedLandmarks ();
+    return spline.transformMesh (mesh);
+  }
+  int num_segments = 0;
+  const std::vector<int> labels = loadSegmentLabels (options.labels, num_segments);
+  SegmentedWarp warp (labels, num_segments);
+  warp.setRegularization (options.lambda);
+  warp.setBlendWidth (options.blend);
+  const auto subsets = assignLandmarksToSegments (mesh, labels, num_segments, source, options.overlap);
+  for (int s = 0; s < num_segments; ++s) {
+    Eigen::Matrix3Xd from (3, static_cast<Eigen::Index> (subsets[s].size ())), to (3, from.cols ());
+    for (std::size_t k = 0; k < subsets[s].size (); ++k) {
+      from.col (static_cast<Eigen::Index> (k)) = source.col (subsets[s][k]);
+      to.col (static_cast<Eigen::Index> (k)) = target.col (subsets[s][k]);
+    }
+    warp.setSegmentLandmarks (s, from, to);
+    report["segment_landmarks"].push_back (subsets[s].size ());
+  }
+  report["mode"] = "segmented";
+  report["blend_width_mm"] = options.blend;
+  report["overlap_mm"] = options.overlap;
+  return warp.warp (mesh);
+}
+
+void
+runWarp (const WarpOptions& options)
+{
+  const TriangleMesh mesh = loadTriangleMesh (options.mesh);
+  nlohmann::json report = {{"units", "mm"}, {"mesh", options.mesh}, {"output", options.out}};
+  const TriangleMesh warped = warpMesh (options, mesh, report);
+  if (options.truth.empty ()) {
+    saveTriangleMesh (options.out, warped);
+  } else {
+    const TriangleMesh truth = loadTriangleMesh (options.truth);
+    requireSameTopology (mesh, truth, options.truth);
+    const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
+    savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
+    std::vector<int> labels (static_cast<std::size_t> (mesh.numVertices ()), 0);
+    int num_segments = 1;
+    if (!options.labels.empty ())
+      labels = loadSegmentLabels (options.labels, num_segments);
+    const WarpQuality quality = evaluateWarp (warped, truth, labels, 100.0, &mesh);
+    report["error_mm"] = {{"mean", quality.mean_error}, {"rms", quality.rms_error}, {"max", quality.max_error}};
+    report["seam"] = quality.seam;
+    report["band"] = quality.band;
+    report["folded_in_band"] = quality.folded_in_band;
+    if (!options.quiet)
+      std::cout << "error against " << options.truth << ": mean " << quality.mean_error << " mm, max "
+                << quality.max_error << " mm (vertex colours of " << options.out << ")\n";
+  }
+  if (!options.report.empty ())
+    writeJsonReport (options.report, report);
+  std::cout << "wrote " << options.out << '\n';
+}
+} // namespace
+
+void
+registerWarpCommand (CLI::App& app)
+{
+  auto options = std::make_shared<WarpOptions> ();
+  CLI::App* command = app.add_subcommand ("warp", "warp a mesh with a 3D thin plate spline (global or segmented)");
+  command->add_option ("-m,--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl)")->required ();
+  command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
+  command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
+  command->add_option ("-o,--out", options->out, "warped mesh to write")->capture_default_str ();
+  command->add_option ("--labels", options->labels, "segment label per vertex, JSON {\"labels\": [...]}: segmented warp");
+  command->add_option ("--blend", options->blend, "seam blend width along the mesh (mm), 0 = hard segments")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--overlap", options->overlap, "landmarks join segments at most this much farther (mm)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--lambda", options->lambda, "TPS regularisation (0 = exact interpolation)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--truth", options->truth, "true target mesh (same topology): report the warp's error");
+  command->add_option ("--report", options->report, "JSON report to write");
+  command->add_flag ("-q,--quiet", options->quiet, "less output");
+  command->callback ([options] () { runWarp (*options); });
+}
+
+} // namespace tools
+} // namespace morphreg
