@@ -9,8 +9,6 @@
 #include <morphreg/io/mesh_io.h>
 
 #include <chrono>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 
@@ -40,6 +38,7 @@ runDemo (DemoOptions options)
 {
   const auto start = std::chrono::steady_clock::now ();
   options.scanner.range_mesh = true;
+  const synthetic::ScanSimulator scanner (options.scanner); // bad scanner settings fail before anything is written
   const synthetic::HeadGenerator generator;
   const auto heads = generator.population (options.count, options.seed);
   writePopulation (options.out + "/population", generator, heads, options.seed, options.quiet);
@@ -47,7 +46,7 @@ runDemo (DemoOptions options)
   // The scanned subject is not in the population: head seed + count, the next one drawn.
   const std::uint64_t subject_seed = options.seed + static_cast<std::uint64_t> (options.count);
   const synthetic::SyntheticHead subject = generator.sample (subject_seed);
-  const synthetic::SimulatedScan scan = synthetic::ScanSimulator (options.scanner).scan (subject.mesh, subject_seed);
+  const synthetic::SimulatedScan scan = scanner.scan (subject.mesh, subject_seed);
   makeDirectory (options.out + "/scan");
   saveTriangleMesh (options.out + "/scan/subject_truth.ply", subject.mesh);
   const nlohmann::json scan_summary = writeScan (options.out + "/scan", "scan", scan);

@@ -27,10 +27,10 @@ struct SynthOptions
 void
 runSynth (const SynthOptions& options)
 {
+  const synthetic::ScanSimulator scanner (options.scanner); // bad scanner settings fail before anything is written
   const synthetic::HeadGenerator generator (options.resolution);
   const std::vector<synthetic::SyntheticHead> heads = generator.population (options.count, options.seed);
   writePopulation (options.out, generator, heads, options.seed, options.quiet);
-  const synthetic::ScanSimulator scanner (options.scanner);
   const Progress progress ("scanning heads", options.scans, options.quiet);
   for (int i = 0; i < options.scans; ++i) {
     const std::string name = "scan_" + std::to_string (i);

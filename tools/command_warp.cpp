@@ -97,16 +97,10 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
   SegmentedWarp warp (labels, num_segments);
   warp.setRegularization (options.lambda);
   warp.setBlendWidth (options.blend);
-  const auto subsets = assignLandmarksToSegments (mesh, labels, num_segments, source, options.overlap);
-  for (int s = 0; s < num_segments; ++s) {
-    Eigen::Matrix3Xd from (3, static_cast<Eigen::Index> (subsets[s].size ())), to (3, from.cols ());
-    for (std::size_t k = 0; k < subsets[s].size (); ++k) {
-      from.col (static_cast<Eigen::Index> (k)) = source.col (subsets[s][k]);
-      to.col (static_cast<Eigen::Index> (k)) = target.col (subsets[s][k]);
-    }
-    warp.setSegmentLandmarks (s, from, to);
-    report["segment_landmarks"].push_back (subsets[s].size ());
-  }
+  const auto subsets =
+      warp.setLandmarks (mesh, source, target, std::vector<double> (static_cast<std::size_t> (num_segments), options.overlap));
+  for (const auto& subset : subsets)
+    report["segment_landmarks"].push_back (subset.size ());
   report["mode"] = "segmented";
   report["blend_width_mm"] = options.blend;
   report["overlap_mm"] = options.overlap;

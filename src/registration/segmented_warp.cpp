@@ -73,6 +73,29 @@ SegmentedWarp::setSegmentLandmarks (int segment, const Eigen::Matrix3Xd& source,
   splines_[static_cast<std::size_t> (segment)] = std::move (spline);
 }
 
+std::vector<std::vector<int>>
+SegmentedWarp::setLandmarks (const TriangleMesh& mesh, const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                             const std::vector<double>& overlap)
+{
+  if (static_cast<int> (overlap.size ()) != numSegments ())
+    throw InvalidInputError ("SegmentedWarp::setLandmarks: " + std::to_string (overlap.size ()) +
+                             " overlaps for " + std::to_string (numSegments ()) + " segments");
+  if (source.cols () != target.cols ())
+    throw InvalidInputError ("SegmentedWarp::setLandmarks: " + std::to_string (source.cols ()) + " source but " +
+                             std::to_string (target.cols ()) + " target landmarks");
+  const std::vector<std::vector<int>> subsets = assignLandmarksToSegments (mesh, labels_, source, overlap);
+  for (int s = 0; s < numSegments (); ++s) {
+    const Eigen::Index count = static_cast<Eigen::Index> (subsets[s].size ());
+    Eigen::Matrix3Xd from (3, count), to (3, count);
+    for (Eigen::Index k = 0; k < count; ++k) {
+      from.col (k) = source.col (subsets[s][k]);
+      to.col (k) = target.col (subsets[s][k]);
+    }
+    setSegmentLandmarks (s, from, to);
+  }
+  return subsets;
+}
+
 const SegmentedWarp::Spline&
 SegmentedWarp::segmentSpline (int segment) const
 {
@@ -151,26 +174,26 @@ SegmentedWarp::warp (const TriangleMesh& mesh) const
 void
 SegmentedWarp::warp (const pcl::PolygonMesh& input, pcl::PolygonMesh& output) const
 {
-  const TriangleMesh warped = warp (fromPolygonMesh (input, "mesh to warp"));
-  pcl::PolygonMesh result = toPolygonMesh (warped);
-  output = std::move (result);
+  output = toPolygonMesh (warp (fromPolygonMesh (input, "mesh to warp")));
 }
 
 std::vector<std::vector<int>>
-assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& labels, int num_segments,
-                           const Eigen::Matrix3Xd& landmarks, double overlap)
+assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& labels, const Eigen::Matrix3Xd& landmarks,
+                           const std::vector<double>& overlap)
 {
   validateMesh (mesh, "segmented mesh");
   if (static_cast<Eigen::Index> (labels.size ()) != mesh.numVertices ())
     throw InvalidInputError ("assignLandmarksToSegments: " + std::to_string (labels.size ()) + " labels for " +
                              std::to_string (mesh.numVertices ()) + " vertices");
-  if (!(overlap >= 0.0))
-    throw InvalidInputError ("assignLandmarksToSegments: overlap must be >= 0 (mm)");
+  const int num_segments = static_cast<int> (overlap.size ());
+  for (double o : overlap)
+    if (!(o >= 0.0))
+      throw InvalidInputError ("assignLandmarksToSegments: overlap must be >= 0 (mm)");
   if (!landmarks.allFinite ())
     throw InvalidInputError ("assignLandmarksToSegments: a landmark is not finite");
-  std::vector<std::vector<int>> subsets (static_cast<std::size_t> (num_segments));
+  std::vector<std::vector<int>> subsets (overlap.size ());
   for (Eigen::Index i = 0; i < landmarks.cols (); ++i) {
-    std::vector<double> nearest (static_cast<std::size_t> (num_segments), std::numeric_limits<double>::infinity ());
+    std::vector<double> nearest (overlap.size (), std::numeric_limits<double>::infinity ());
     for (Eigen::Index v = 0; v < mesh.numVertices (); ++v) {
       const int s = labels[static_cast<std::size_t> (v)];
       if (s < 0 || s >= num_segments)
@@ -180,10 +203,20 @@ assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& lab
     }
     const double closest = std::sqrt (*std::min_element (nearest.begin (), nearest.end ()));
     for (int s = 0; s < num_segments; ++s)
-      if (std::sqrt (nearest[s]) <= closest + overlap)
+      if (std::sqrt (nearest[s]) <= closest + overlap[s])
         subsets[s].push_back (static_cast<int> (i));
   }
   return subsets;
+}
+
+std::vector<std::vector<int>>
+assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& labels, int num_segments,
+                           const Eigen::Matrix3Xd& landmarks, double overlap)
+{
+  if (num_segments < 1)
+    throw InvalidInputError ("assignLandmarksToSegments: the number of segments must be at least 1");
+  return assignLandmarksToSegments (mesh, labels, landmarks,
+                                    std::vector<double> (static_cast<std::size_t> (num_segments), overlap));
 }
 
 } // namespace morphreg

@@ -5,6 +5,8 @@
 #include <morphreg/synthetic/head_generator.h>
 
 #include <Eigen/Geometry>
+#include "support/synthetic_heads.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,11 +18,10 @@ using morphreg::synthetic::HeadRegion;
 
 namespace
 {
-const HeadGenerator&
+const morphreg::synthetic::HeadGenerator&
 generator ()
 {
-  static const HeadGenerator instance;
-  return instance;
+  return morphreg::test::headGenerator ();
 }
 
 /** Every parameter at its minimum (or maximum): the most extreme heads the population allows. */

@@ -6,6 +6,8 @@
 #include <pcl/conversions.h>
 #include <pcl/kdtree/kdtree_flann.h>
 
+#include "support/synthetic_heads.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,11 +20,10 @@ using morphreg::synthetic::SimulatedScan;
 
 namespace
 {
-const HeadGenerator&
+const morphreg::synthetic::HeadGenerator&
 generator ()
 {
-  static const HeadGenerator instance;
-  return instance;
+  return morphreg::test::headGenerator ();
 }
 
 const morphreg::TriangleMesh&

@@ -13,6 +13,8 @@
 #include <vtkPNGReader.h>
 #include <vtkSmartPointer.h>
 
+#include "support/synthetic_heads.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -24,8 +26,7 @@ namespace
 const morphreg::synthetic::HeadGenerator&
 generator ()
 {
-  static const morphreg::synthetic::HeadGenerator instance (24);
-  return instance;
+  return morphreg::test::headGenerator (24);
 }
 
 /** A PNG read back: size and the fraction of pixels, in the columns [x_from, x_to), that differ from the corner. */

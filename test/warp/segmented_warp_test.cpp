@@ -36,15 +36,6 @@ setAffineSegment (SegmentedWarp& warp, int segment, double x0, const Eigen::Affi
   warp.setSegmentLandmarks (segment, source, map * source);
 }
 
-Eigen::Matrix3Xd
-columns (const Eigen::Matrix3Xd& points, const std::vector<int>& indices)
-{
-  Eigen::Matrix3Xd selected (3, static_cast<Eigen::Index> (indices.size ()));
-  for (std::size_t i = 0; i < indices.size (); ++i)
-    selected.col (static_cast<Eigen::Index> (i)) = points.col (indices[i]);
-  return selected;
-}
-
 std::string
 bodiesDirectory ()
 {
@@ -73,11 +64,7 @@ compareWarps (const morphreg::MakeHumanBodies& bodies, const TriangleMesh& sourc
   result.global = morphreg::evaluateWarp (global.transformMesh (source), truth, bodies.segmentLabels (), 100.0, &source);
   const int segments = static_cast<int> (bodies.segmentNames ().size ());
   SegmentedWarp warp (bodies.segmentLabels (), segments);
-  for (int s = 0; s < segments; ++s) {
-    const auto subset =
-        morphreg::assignLandmarksToSegments (source, bodies.segmentLabels (), segments, source_points, overlap[s])[s];
-    warp.setSegmentLandmarks (s, columns (source_points, subset), columns (target_points, subset));
-  }
+  warp.setLandmarks (source, source_points, target_points, overlap);
   warp.setBlendWidth (blend_width);
   result.segmented = morphreg::evaluateWarp (warp.warp (source), truth, bodies.segmentLabels (), 100.0, &source);
   return result;

@@ -21,9 +21,7 @@ namespace morphreg
  *
  *  \code
  *  morphreg::SegmentedWarp warp (labels, 4);
- *  auto subsets = morphreg::assignLandmarksToSegments (standing, labels, 4, joints_standing, 150.0);
- *  for (int s = 0; s < 4; ++s)
- *    warp.setSegmentLandmarks (s, select (joints_standing, subsets[s]), select (joints_seated, subsets[s]));
+ *  warp.setLandmarks (standing, joints_standing, joints_seated, {90.0, 90.0, 90.0, 90.0});   // overlap per segment
  *  warp.setBlendWidth (100.0);
  *  morphreg::TriangleMesh seated = warp.warp (standing);
  *  \endcode
@@ -49,6 +47,14 @@ public:
    */
   void
   setSegmentLandmarks (int segment, const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target);
+
+  /** \brief Shares the landmark pairs (columns of \a source -> \a target) out among the segments with
+   *  assignLandmarksToSegments (\a overlap[s] mm for segment s, measured on \a mesh) and fits every segment's
+   *  spline. Returns the column indices each segment received.
+   */
+  std::vector<std::vector<int>>
+  setLandmarks (const TriangleMesh& mesh, const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                const std::vector<double>& overlap);
 
   /** \brief The fitted spline of \a segment (throws InvalidInputError if it has no landmarks yet). */
   const Spline&
@@ -101,5 +107,12 @@ private:
 std::vector<std::vector<int>>
 assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& labels, int num_segments,
                            const Eigen::Matrix3Xd& landmarks, double overlap);
+
+/** \brief As above with an overlap per segment: landmark i joins segment s when its nearest vertex there is at most
+ *  \a overlap[s] mm further away than its nearest vertex overall.
+ */
+std::vector<std::vector<int>>
+assignLandmarksToSegments (const TriangleMesh& mesh, const std::vector<int>& labels, const Eigen::Matrix3Xd& landmarks,
+                           const std::vector<double>& overlap);
 
 } // namespace morphreg
