@@ -1,0 +1,791 @@
+#pragma once
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/cloud_io.h>
+#include <morphreg/mesh/mesh_normals.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/registration/initial_alignment.h>
+#include <morphreg/registration/morphable_icp.h>
+
+#include <pcl/conversions.h>
+#include <pcl/registration/correspondence_estimation.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace morphreg
+{
+/** The unknowns of the fit. The model instance v = mu + H m is cached with m. */
+template <typename PointTarget, typename Scalar>
+struct MorphableICP<PointTarget, Scalar>::State
+{
+  double log_scale = 0.0;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity ();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero ();
+  Eigen::VectorXd coefficients;
+  Eigen::Matrix3Xd model_vertices;
+
+  Eigen::Matrix3Xd
+  transformed () const
+  {
+    return (std::exp (log_scale) * rotation * model_vertices).colwise () + translation;
+  }
+
+  Eigen::Matrix4d
+  similarity () const
+  {
+    Eigen::Matrix4d m = Eigen::Matrix4d::Identity ();
+    m.topLeftCorner<3, 3> () = std::exp (log_scale) * rotation;
+    m.topRightCorner<3, 1> () = translation;
+    return m;
+  }
+};
+
+/** Accepted correspondences of one iteration, with their IRLS weights and the mean squared distance. */
+template <typename PointTarget, typename Scalar>
+struct MorphableICP<PointTarget, Scalar>::Evaluation
+{
+  Eigen::Matrix3Xd transformed;
+  typename pcl::PointCloud<PointTarget>::Ptr cloud;
+  pcl::Correspondences kept;
+  std::vector<double> distances;
+  std::vector<double> weights;
+  int found = 0;
+  double error = 0.0;
+};
+
+/** Fixed parts of the normal equations of one stage: the shape prior block and the landmark rows. */
+template <typename PointTarget, typename Scalar>
+struct MorphableICP<PointTarget, Scalar>::Problem
+{
+  bool shape = false;
+  Eigen::MatrixXd prior;            ///< lambda_1^2 Gamma^T Gamma + lambda_2^2 Lambda^2 (P x P)
+  std::vector<int> landmark_vertices;
+  Eigen::Matrix3Xd landmark_points;
+};
+
+namespace detail
+{
+inline Eigen::Matrix3d
+skew (const Eigen::Vector3d& v)
+{
+  Eigen::Matrix3d s;
+  s << 0, -v.z (), v.y (), v.z (), 0, -v.x (), -v.y (), v.x (), 0;
+  return s;
+}
+
+inline double
+medianOf (std::vector<double> values)
+{
+  if (values.empty ())
+    return 0.0;
+  const auto mid = values.begin () + static_cast<long> (values.size () / 2);
+  std::nth_element (values.begin (), mid, values.end ());
+  return *mid;
+}
+
+/** IRLS weight of a residual distance \a d for kernel width \a c. */
+inline double
+robustWeight (RobustLoss loss, double d, double c)
+{
+  switch (loss) {
+  case RobustLoss::huber:
+    return d <= c ? 1.0 : c / d;
+  case RobustLoss::tukey: {
+    if (d >= c)
+      return 0.0;
+    const double u = 1.0 - (d / c) * (d / c);
+    return u * u;
+  }
+  case RobustLoss::none:
+    break;
+  }
+  return 1.0;
+}
+
+/** Unit normal of \a neighbours' least-squares plane and whether the largest angular gap between them around
+ *  \a centre, in that plane, exceeds 90 degrees (a boundary point).
+ */
+inline bool
+isBoundaryPoint (const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const Eigen::Matrix3Xd& neighbours)
+{
+  const Eigen::Vector3d u = normal.unitOrthogonal ();
+  const Eigen::Vector3d v = normal.cross (u);
+  std::vector<double> angles;
+  for (Eigen::Index k = 0; k < neighbours.cols (); ++k) {
+    const Eigen::Vector3d d = neighbours.col (k) - centre;
+    if (d.squaredNorm () > 0.0)
+      angles.push_back (std::atan2 (d.dot (v), d.dot (u)));
+  }
+  if (angles.size () < 3)
+    return true;
+  std::sort (angles.begin (), angles.end ());
+  double gap = angles.front () + 2.0 * M_PI - angles.back ();
+  for (size_t k = 1; k < angles.size (); ++k)
+    gap = std::max (gap, angles[k] - angles[k - 1]);
+  return gap > 0.5 * M_PI;
+}
+} // namespace detail
+
+template <typename PointTarget, typename Scalar>
+MorphableICP<PointTarget, Scalar>::MorphableICP ()
+{
+  this->reg_name_ = "MorphableICP";
+  this->max_iterations_ = 50;
+  this->correspondence_estimation_.reset (
+      new pcl::registration::CorrespondenceEstimation<PointTarget, PointTarget, Scalar>);
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setModel (const MorphableModel::ConstPtr& model)
+{
+  if (!model)
+    throw InvalidInputError ("MorphableICP::setModel: the model is null");
+  for (const auto& landmark : landmarks_)
+    model->landmarkVertex (landmark.first);
+  model_ = model;
+  selection_ = model_->firstComponents (10);
+  Base::setInputSource (model_->generateCloud<PointTarget> (Eigen::VectorXd::Zero (selection_.total ()),
+                                                              selection_));
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setComponentSelection (const ComponentSelection& selection)
+{
+  if (!model_)
+    throw InvalidInputError ("MorphableICP::setComponentSelection: set a model first");
+  model_->requireCompatible (selection, nullptr, "MorphableICP::setComponentSelection");
+  selection_ = selection;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setSmoothnessWeight (double lambda1)
+{
+  if (!(lambda1 >= 0.0) || !std::isfinite (lambda1))
+    throw InvalidInputError ("MorphableICP::setSmoothnessWeight: lambda_1 must be finite and >= 0");
+  lambda1_ = lambda1;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setShapePriorWeight (double lambda2, ShapePrior prior)
+{
+  if (!(lambda2 >= 0.0) || !std::isfinite (lambda2))
+    throw InvalidInputError ("MorphableICP::setShapePriorWeight: lambda_2 must be finite and >= 0");
+  lambda2_ = lambda2;
+  prior_ = prior;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setSimilarityIterations (int iterations)
+{
+  if (iterations < 1)
+    throw InvalidInputError ("MorphableICP::setSimilarityIterations: at least 1 iteration is needed");
+  similarity_iterations_ = iterations;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setPointToPlane (bool enabled, double tangential_weight)
+{
+  if (!(tangential_weight >= 0.0 && tangential_weight <= 1.0))
+    throw InvalidInputError ("MorphableICP::setPointToPlane: the tangential weight must be in [0, 1]");
+  point_to_plane_ = enabled;
+  tangential_weight_ = tangential_weight;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setRobustLoss (RobustLoss loss, double scale)
+{
+  if (!std::isfinite (scale))
+    throw InvalidInputError ("MorphableICP::setRobustLoss: the kernel width must be finite");
+  robust_loss_ = loss;
+  robust_scale_ = scale;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setRejectTargetBoundary (bool enabled, int neighbours)
+{
+  if (neighbours < 4)
+    throw InvalidInputError ("MorphableICP::setRejectTargetBoundary: at least 4 neighbours are needed");
+  reject_boundary_ = enabled;
+  if (neighbours != boundary_neighbours_)
+    target_prepared_ = false;
+  boundary_neighbours_ = neighbours;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setTargetSmoothing (bool enabled)
+{
+  if (enabled != smooth_target_)
+    target_prepared_ = false;
+  smooth_target_ = enabled;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setDivergenceGuard (double max_sigma, int rising_iterations)
+{
+  if (!std::isfinite (max_sigma) || rising_iterations < 1)
+    throw InvalidInputError ("MorphableICP::setDivergenceGuard: need a finite limit and >= 1 rising iteration");
+  max_sigma_ = max_sigma;
+  rising_iterations_ = rising_iterations;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setTargetLandmarks (const LandmarkPositions& landmarks, double weight)
+{
+  if (!(weight >= 0.0) || !std::isfinite (weight))
+    throw InvalidInputError ("MorphableICP::setTargetLandmarks: the weight must be finite and >= 0");
+  for (const auto& landmark : landmarks) {
+    if (!landmark.second.allFinite ())
+      throw InvalidInputError ("MorphableICP::setTargetLandmarks: landmark '" + landmark.first +
+                               "' is not finite");
+    if (model_)
+      model_->landmarkVertex (landmark.first);
+  }
+  landmarks_ = landmarks;
+  landmark_weight_ = weight;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setInputTarget (const PointCloudTargetConstPtr& cloud)
+{
+  Base::setInputTarget (cloud);
+  target_prepared_ = false;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::validateInputs () const
+{
+  if (!model_)
+    throw InvalidInputError ("MorphableICP: no model (call setModel)");
+  if (!this->input_ || static_cast<Eigen::Index> (this->input_->size ()) != model_->numVertices ())
+    throw InvalidInputError ("MorphableICP: the source cloud must be the model instance of setModel (" +
+                             std::to_string (model_->numVertices ()) + " points)");
+  if (!this->target_)
+    throw InvalidInputError ("MorphableICP: no target cloud (call setInputTarget)");
+  requireFiniteNonEmpty (*this->target_, "MorphableICP target");
+  for (const auto& landmark : landmarks_)
+    model_->landmarkVertex (landmark.first);
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::align (PointCloudSource& output)
+{
+  align (output, Matrix4::Identity ());
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::align (PointCloudSource& output, const Matrix4& guess)
+{
+  validateInputs ();
+  Base::align (output, guess);
+}
+
+template <typename PointTarget, typename Scalar>
+Eigen::Matrix4d
+MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess) const
+{
+  const Eigen::Matrix4d given = guess.template cast<double> ();
+  IcpInitialisation mode = initialisation_;
+  if (mode == IcpInitialisation::automatic)
+    mode = !given.isIdentity () ? IcpInitialisation::guess
+           : landmarks_.size () >= 3 ? IcpInitialisation::landmarks
+                                     : IcpInitialisation::coarse;
+  if (mode == IcpInitialisation::guess)
+    return given;
+  if (mode == IcpInitialisation::landmarks) {
+    if (landmarks_.size () < 3)
+      throw InvalidInputError ("MorphableICP: the landmark initialisation needs >= 3 target landmarks, got " +
+                               std::to_string (landmarks_.size ()));
+    Eigen::Matrix3Xd from (3, landmarks_.size ()), to (3, landmarks_.size ());
+    int k = 0;
+    for (const auto& landmark : landmarks_) {
+      from.col (k) = model_->meanVertex (model_->landmarkVertex (landmark.first));
+      to.col (k++) = landmark.second;
+    }
+    return similarityFromLandmarks (from, to);
+  }
+  Eigen::Matrix3Xd target (3, this->target_->size ());
+  for (size_t i = 0; i < this->target_->size (); ++i)
+    target.col (i) = (*this->target_)[i].getVector3fMap ().template cast<double> ();
+  const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
+  return coarseSimilarity (mean, target);
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::prepareTarget ()
+{
+  const PointCloudTarget& target = *this->target_;
+  const auto n = static_cast<Eigen::Index> (target.size ());
+  target_normals_.setZero (3, n);
+  target_points_.resize (3, n);
+  target_has_normal_.assign (n, false);
+  target_boundary_.assign (n, false);
+  const int k = std::min<int> (boundary_neighbours_, static_cast<int> (n));
+  const auto& tree = this->tree_;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    pcl::Indices neighbours;
+    std::vector<float> distances;
+    tree->nearestKSearch (target[i], k, neighbours, distances);
+    Eigen::Matrix3Xd points (3, neighbours.size ());
+    for (size_t j = 0; j < neighbours.size (); ++j)
+      points.col (j) = target[neighbours[j]].getVector3fMap ().template cast<double> ();
+    const Eigen::Vector3d centroid = points.rowwise ().mean ();
+    const Eigen::Matrix3Xd centred = points.colwise () - centroid;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (centred * centred.transpose ());
+    const Eigen::Vector3d plane_normal = solver.eigenvectors ().col (0);
+    const Eigen::Vector3d point = target[i].getVector3fMap ().template cast<double> ();
+    target_points_.col (i) = smooth_target_ && plane_normal.allFinite ()
+                                 ? Eigen::Vector3d (point - plane_normal * plane_normal.dot (point - centroid))
+                                 : point;
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero ();
+    if constexpr (pcl::traits::has_normal_v<PointTarget>)
+      normal = target[i].getNormalVector3fMap ().template cast<double> ();
+    if (!normal.allFinite () || normal.norm () < 1e-6)
+      normal = plane_normal;
+    normal.normalize ();
+    target_normals_.col (i) = normal;
+    target_has_normal_[i] = normal.allFinite ();
+    target_boundary_[i] = !target_has_normal_[i] ||
+                          detail::isBoundaryPoint (target[i].getVector3fMap ().template cast<double> (), normal,
+                                                   points);
+  }
+  target_prepared_ = true;
+}
+
+template <typename PointTarget, typename Scalar>
+typename MorphableICP<PointTarget, Scalar>::Evaluation
+MorphableICP<PointTarget, Scalar>::evaluate (const State& state) const
+{
+  Evaluation ev;
+  ev.transformed = state.transformed ();
+  const Eigen::Index n = ev.transformed.cols ();
+  ev.cloud.reset (new pcl::PointCloud<PointTarget>);
+  ev.cloud->resize (n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    (*ev.cloud)[i].getVector3fMap () = ev.transformed.col (i).template cast<float> ();
+
+  auto& estimation = *this->correspondence_estimation_;
+  pcl::PCLPointCloud2::Ptr source_blob;
+  auto sourceBlob = [&] () {
+    if (!source_blob) {
+      const TriangleMesh mesh{ev.transformed, model_->triangles ()};
+      const Eigen::Matrix3Xd normals = vertexNormals (mesh);
+      pcl::PointCloud<pcl::PointNormal> cloud;
+      cloud.resize (n);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        cloud[i].getVector3fMap () = ev.transformed.col (i).template cast<float> ();
+        cloud[i].getNormalVector3fMap () = normals.col (i).template cast<float> ();
+      }
+      source_blob.reset (new pcl::PCLPointCloud2);
+      pcl::toPCLPointCloud2 (cloud, *source_blob);
+    }
+    return source_blob;
+  };
+  estimation.setInputSource (ev.cloud);
+  if (estimation.requiresSourceNormals ())
+    estimation.setSourceNormals (sourceBlob ());
+  pcl::CorrespondencesPtr current (new pcl::Correspondences);
+  estimation.determineCorrespondences (*current, this->corr_dist_threshold_);
+  ev.found = static_cast<int> (current->size ());
+
+  if (reject_boundary_) {
+    pcl::CorrespondencesPtr inside (new pcl::Correspondences);
+    for (const pcl::Correspondence& c : *current)
+      if (!target_boundary_[c.index_match])
+        inside->push_back (c);
+    current = inside;
+  }
+  for (const auto& rejector : this->correspondence_rejectors_) {
+    if (rejector->requiresSourcePoints ())
+      rejector->setSourcePoints (sourceBlob ());
+    if (rejector->requiresSourceNormals ())
+      rejector->setSourceNormals (sourceBlob ());
+    rejector->setInputCorrespondences (current);
+    pcl::CorrespondencesPtr remaining (new pcl::Correspondences);
+    rejector->getCorrespondences (*remaining);
+    current = remaining;
+  }
+  ev.kept = *current;
+
+  const size_t kept = ev.kept.size ();
+  ev.distances.resize (kept);
+  double sum = 0.0;
+  for (size_t c = 0; c < kept; ++c) {
+    const Eigen::Vector3d q = target_points_.col (ev.kept[c].index_match);
+    ev.distances[c] = (q - ev.transformed.col (ev.kept[c].index_query)).norm ();
+    sum += ev.distances[c] * ev.distances[c];
+  }
+  ev.error = kept > 0 ? sum / static_cast<double> (kept) : std::numeric_limits<double>::infinity ();
+
+  double width = robust_scale_;
+  if (robust_loss_ != RobustLoss::none && width <= 0.0) {
+    const double sigma = 1.4826 * detail::medianOf (ev.distances);
+    width = (robust_loss_ == RobustLoss::huber ? 1.345 : 4.685) * std::max (sigma, 1e-6);
+  }
+  ev.weights.resize (kept);
+  for (size_t c = 0; c < kept; ++c)
+    ev.weights[c] = detail::robustWeight (robust_loss_, ev.distances[c], width);
+  return ev;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::row (long c, const Evaluation& ev, const Problem& problem, int& vertex,
+                                        Eigen::Vector3d& q, Eigen::Matrix3d& metric) const
+{
+  const auto kept = static_cast<long> (ev.kept.size ());
+  if (c < kept) {
+    const pcl::Correspondence& corr = ev.kept[c];
+    vertex = corr.index_query;
+    q = target_points_.col (corr.index_match);
+    metric = Eigen::Matrix3d::Identity ();
+    if (point_to_plane_ && target_has_normal_[corr.index_match]) {
+      const Eigen::Vector3d normal = target_normals_.col (corr.index_match);
+      const Eigen::Matrix3d nn = normal * normal.transpose ();
+      metric = nn + tangential_weight_ * (Eigen::Matrix3d::Identity () - nn);
+    }
+    metric *= ev.weights[c];
+  }
+  else {
+    vertex = problem.landmark_vertices[c - kept];
+    q = problem.landmark_points.col (c - kept);
+    metric = landmark_weight_ * Eigen::Matrix3d::Identity ();
+  }
+}
+
+template <typename PointTarget, typename Scalar>
+double
+MorphableICP<PointTarget, Scalar>::objective (const State& state, const Evaluation& ev, const Problem& problem) const
+{
+  const auto rows = static_cast<long> (ev.kept.size () + problem.landmark_vertices.size ());
+  const Eigen::Matrix3d sr = std::exp (state.log_scale) * state.rotation;
+  double sum = 0.0;
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+  for (long c = 0; c < rows; ++c) {
+    int vertex;
+    Eigen::Vector3d q;
+    Eigen::Matrix3d metric;
+    row (c, ev, problem, vertex, q, metric);
+    const Eigen::Vector3d r = q - sr * state.model_vertices.col (vertex) - state.translation;
+    sum += r.dot (metric * r);
+  }
+  if (problem.shape)
+    sum += state.coefficients.dot (problem.prior * state.coefficients);
+  return sum;
+}
+
+template <typename PointTarget, typename Scalar>
+bool
+MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, const Problem& problem) const
+{
+  const int p = problem.shape ? selection_.total () : 0;
+  const int dim = 7 + p;
+  const double s = std::exp (state.log_scale);
+  const Eigen::Matrix3d sr = s * state.rotation;
+  const auto kept = static_cast<long> (ev.kept.size ());
+  const auto landmarks = static_cast<long> (problem.landmark_vertices.size ());
+  int max_columns = 7;
+  for (int j = 0; j < selection_.numRegions (); ++j)
+    max_columns += problem.shape ? selection_.count (j) : 0;
+
+  Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero (dim, dim);
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero (dim);
+#pragma omp parallel
+  {
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero (dim, dim);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero (dim);
+    Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian (3, max_columns);
+    Eigen::MatrixXd block (max_columns, max_columns);
+    Eigen::VectorXd rhs (max_columns);
+    std::vector<int> columns (max_columns);
+#pragma omp for schedule(static) nowait
+    for (long c = 0; c < kept + landmarks; ++c) {
+      int vertex;
+      Eigen::Vector3d q;
+      Eigen::Matrix3d metric;
+      row (c, ev, problem, vertex, q, metric);
+      const Eigen::Vector3d rotated = sr * state.model_vertices.col (vertex);
+      const Eigen::Vector3d residual = q - rotated - state.translation;
+      jacobian.col (0) = rotated;
+      jacobian.template middleCols<3> (1) = -detail::skew (rotated);
+      jacobian.template middleCols<3> (4).setIdentity ();
+      for (int k = 0; k < 7; ++k)
+        columns[k] = k;
+      int k = 7;
+      if (problem.shape)
+        for (const RegionEntry& e : model_->vertexEntries (vertex)) {
+          const int count = selection_.count (e.region);
+          if (count == 0)
+            continue;
+          jacobian.middleCols (k, count).noalias () = (e.weight * sr) * model_->regionRows (e.region, e.row, count);
+          for (int a = 0; a < count; ++a)
+            columns[k + a] = 7 + selection_.offset (e.region) + a;
+          k += count;
+        }
+      const auto j = jacobian.leftCols (k);
+      const Eigen::Matrix<double, Eigen::Dynamic, 3> jw = j.transpose () * metric;
+      block.topLeftCorner (k, k).noalias () = jw * j;
+      rhs.head (k).noalias () = jw * residual;
+      for (int a = 0; a < k; ++a) {
+        g[columns[a]] += rhs[a];
+        for (int b = 0; b < k; ++b)
+          h (columns[a], columns[b]) += block (a, b);
+      }
+    }
+#pragma omp critical
+    {
+      hessian += h;
+      gradient += g;
+    }
+  }
+  if (problem.shape) {
+    hessian.bottomRightCorner (p, p) += problem.prior;
+    gradient.tail (p) -= problem.prior * state.coefficients;
+  }
+  if (!estimate_scale_) {
+    hessian.row (0).setZero ();
+    hessian.col (0).setZero ();
+    hessian (0, 0) = 1.0;
+    gradient[0] = 0.0;
+  }
+  hessian.diagonal ().array () += 1e-12 * std::max (1.0, hessian.diagonal ().maxCoeff ());
+  const Eigen::LDLT<Eigen::MatrixXd> solver (hessian);
+  const Eigen::VectorXd delta = solver.solve (gradient);
+  if (solver.info () != Eigen::Success || !delta.allFinite ())
+    return false;
+
+  // Backtracking: halve the step until the objective (with these correspondences) decreases.
+  const double current = objective (state, ev, problem);
+  for (double alpha = 1.0; alpha > 1e-2; alpha *= 0.5) {
+    State candidate = state;
+    const Eigen::VectorXd d = alpha * delta;
+    candidate.log_scale += d[0];
+    const Eigen::Vector3d theta = d.segment<3> (1);
+    const double angle = theta.norm ();
+    if (angle > 0.0)
+      candidate.rotation = Eigen::AngleAxisd (angle, theta / angle).toRotationMatrix () * candidate.rotation;
+    candidate.rotation = Eigen::Quaterniond (candidate.rotation).normalized ().toRotationMatrix ();
+    candidate.translation += d.segment<3> (4);
+    if (problem.shape) {
+      candidate.coefficients += d.tail (p);
+      candidate.model_vertices = model_->generate (candidate.coefficients, selection_);
+    }
+    if (objective (candidate, ev, problem) <= current) {
+      state = std::move (candidate);
+      break;
+    }
+  }
+  return true;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& output, const Matrix4& guess)
+{
+  validateInputs ();
+  if (!target_prepared_)
+    prepareTarget ();
+  report_ = IcpReport ();
+  auto& estimation = *this->correspondence_estimation_;
+  estimation.setInputTarget (this->target_);
+  estimation.setSearchMethodTarget (this->tree_, true);
+  if (estimation.requiresTargetNormals ())
+    throw InvalidInputError ("MorphableICP: correspondence estimations that need target normals are not supported");
+  pcl::PCLPointCloud2::Ptr target_blob (new pcl::PCLPointCloud2);
+  pcl::toPCLPointCloud2 (*this->target_, *target_blob);
+  for (const auto& rejector : this->correspondence_rejectors_) {
+    if (rejector->requiresTargetNormals () && !pcl::traits::has_normal_v<PointTarget>)
+      throw InvalidInputError ("MorphableICP: rejector " + rejector->getClassName () +
+                               " needs target normals, but the target point type has none");
+    if (rejector->requiresTargetPoints ())
+      rejector->setTargetPoints (target_blob);
+    if (rejector->requiresTargetNormals ())
+      rejector->setTargetNormals (target_blob);
+  }
+
+  // Starting state from the initial similarity.
+  const Eigen::Matrix4d initial = initialTransformation (guess);
+  const Eigen::Matrix3d a = initial.topLeftCorner<3, 3> ();
+  if (!initial.allFinite () || a.determinant () <= 0.0)
+    throw InvalidInputError ("MorphableICP: the initial guess is not a proper similarity");
+  report_.initial_transformation = initial;
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd (a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  State state;
+  state.log_scale = estimate_scale_ ? std::log (std::cbrt (a.determinant ())) : 0.0;
+  state.rotation = svd.matrixU () * svd.matrixV ().transpose ();
+  state.translation = initial.topRightCorner<3, 1> ();
+  state.coefficients = Eigen::VectorXd::Zero (selection_.total ());
+  state.model_vertices = model_->generate (state.coefficients, selection_);
+
+  Problem problem;
+  for (const auto& landmark : landmarks_)
+    problem.landmark_vertices.push_back (model_->landmarkVertex (landmark.first));
+  problem.landmark_points.resize (3, landmarks_.size ());
+  int column = 0;
+  for (const auto& landmark : landmarks_)
+    problem.landmark_points.col (column++) = landmark.second;
+  const int p = selection_.total ();
+  const Eigen::VectorXd sigma = model_->variances (selection_).cwiseSqrt ();
+
+  const bool with_shape = shape_stage_ && p > 0;
+  const double motion_epsilon = this->transformation_epsilon_ > 0.0 ? this->transformation_epsilon_ : 1e-4;
+  const double fitness_epsilon = this->euclidean_fitness_epsilon_;
+  State best = state;
+  double best_cost = std::numeric_limits<double>::infinity ();
+  this->nr_iterations_ = 0;
+  bool diverged = false;
+
+  for (const IcpStage stage : {IcpStage::similarity, IcpStage::shape}) {
+    if (stage == IcpStage::shape && !with_shape)
+      break;
+    problem.shape = stage == IcpStage::shape;
+    if (problem.shape) {
+      const MorphableModel::RowMatrix gamma = model_->gammaMatrix (selection_);
+      const Eigen::VectorXd lambda = model_->lambdaDiagonal (selection_, prior_);
+      problem.prior = lambda1_ * lambda1_ * (gamma.transpose () * gamma);
+      problem.prior.diagonal () += lambda2_ * lambda2_ * lambda.cwiseAbs2 ();
+    }
+    const int budget = stage == IcpStage::similarity && with_shape
+                           ? std::min (similarity_iterations_, std::max (1, this->max_iterations_ / 2))
+                           : this->max_iterations_ - this->nr_iterations_;
+    const int unknowns = (estimate_scale_ ? 7 : 6) + (problem.shape ? p : 0);
+    double previous_error = std::numeric_limits<double>::infinity ();
+    int rising = 0;
+    best = state;
+    best_cost = std::numeric_limits<double>::infinity ();
+    report_.termination = IcpTermination::max_iterations;
+    for (int it = 0; it < budget; ++it) {
+      const auto start = std::chrono::steady_clock::now ();
+      const Evaluation ev = evaluate (state);
+      const int rows = static_cast<int> (ev.kept.size () + problem.landmark_vertices.size ());
+      if (rows < unknowns)
+        throw InvalidInputError ("MorphableICP: " + std::to_string (ev.kept.size ()) + " correspondences (of " +
+                                 std::to_string (ev.found) + " found) and " +
+                                 std::to_string (problem.landmark_vertices.size ()) + " landmarks for " +
+                                 std::to_string (unknowns) + " unknowns; check the max correspondence distance, "
+                                 "the rejectors and the initial alignment");
+      if (this->update_visualizer_) {
+        pcl::Indices source_indices, target_indices;
+        for (const pcl::Correspondence& c : ev.kept) {
+          source_indices.push_back (c.index_query);
+          target_indices.push_back (c.index_match);
+        }
+        this->update_visualizer_ (*ev.cloud, source_indices, *this->target_, target_indices);
+      }
+      const double cost = objective (state, ev, problem) / rows;
+      if (cost < best_cost) {
+        best = state;
+        best_cost = cost;
+        rising = 0;
+      }
+      else if (cost > 1.05 * best_cost && ++rising >= rising_iterations_) {
+        diverged = true;
+        report_.message = "the cost rose " + std::to_string (rising) + " times in a row above the best";
+      }
+      if (diverged)
+        break;
+      const Eigen::Matrix3Xd before = ev.transformed;
+      if (!step (state, ev, problem)) {
+        diverged = true;
+        report_.message = "the normal equations could not be solved";
+        break;
+      }
+      const double motion = (state.transformed () - before).colwise ().squaredNorm ().mean ();
+      const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+      report_.history.push_back ({stage, ev.error, ev.found, static_cast<int> (ev.kept.size ()), seconds});
+      ++this->nr_iterations_;
+      (problem.shape ? report_.shape_iterations : report_.similarity_iterations) += 1;
+      if (problem.shape && max_sigma_ > 0.0 && p > 0 &&
+          (state.coefficients.cwiseAbs ().array () > max_sigma_ * sigma.array () + 1e-9).any ()) {
+        diverged = true;
+        report_.message = "a shape coefficient left the prior (more than " + std::to_string (max_sigma_) +
+                          " standard deviations)";
+        break;
+      }
+      if (motion < motion_epsilon) {
+        report_.termination = IcpTermination::transformation_converged;
+        break;
+      }
+      if (fitness_epsilon > 0.0 && std::abs (previous_error - cost) < fitness_epsilon) {
+        report_.termination = IcpTermination::fitness_converged;
+        break;
+      }
+      previous_error = cost;
+    }
+    if (diverged)
+      break;
+  }
+  if (diverged)
+    report_.termination = IcpTermination::diverged;
+
+  Evaluation final_ev = evaluate (state);
+  const double final_rows = static_cast<double> (final_ev.kept.size () + problem.landmark_vertices.size ());
+  if (objective (state, final_ev, problem) / final_rows > best_cost) {
+    state = best;
+    final_ev = evaluate (state);
+  }
+  finish (state, output);
+  vertex_residuals_ = Eigen::VectorXd::Constant (model_->numVertices (), std::numeric_limits<double>::quiet_NaN ());
+  for (size_t c = 0; c < final_ev.kept.size (); ++c)
+    vertex_residuals_[final_ev.kept[c].index_query] = final_ev.distances[c];
+  report_.correspondences = static_cast<int> (final_ev.kept.size ());
+  if (!final_ev.distances.empty ()) {
+    const Eigen::Map<const Eigen::VectorXd> d (final_ev.distances.data (), final_ev.distances.size ());
+    report_.fitness_mean = d.mean ();
+    report_.fitness_rms = std::sqrt (d.squaredNorm () / static_cast<double> (d.size ()));
+    report_.fitness_median = detail::medianOf (final_ev.distances);
+  }
+  this->converged_ = !diverged;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::finish (const State& state, PointCloudSource& output)
+{
+  coefficients_ = state.coefficients;
+  fitted_vertices_ = state.transformed ();
+  const Eigen::Matrix3Xd normals = vertexNormals (TriangleMesh{fitted_vertices_, model_->triangles ()});
+  output.resize (fitted_vertices_.cols ());
+  for (Eigen::Index i = 0; i < fitted_vertices_.cols (); ++i) {
+    output[i].getVector3fMap () = fitted_vertices_.col (i).template cast<float> ();
+    if constexpr (pcl::traits::has_normal_v<PointTarget>)
+      output[i].getNormalVector3fMap () = normals.col (i).template cast<float> ();
+  }
+  this->final_transformation_ = state.similarity ().template cast<Scalar> ();
+  this->transformation_ = this->final_transformation_;
+}
+
+template <typename PointTarget, typename Scalar>
+pcl::PolygonMesh
+MorphableICP<PointTarget, Scalar>::getFittedMesh () const
+{
+  if (!model_ || fitted_vertices_.cols () != model_->numVertices ())
+    throw InvalidInputError ("MorphableICP::getFittedMesh: align() has not run");
+  return toPolygonMesh (TriangleMesh{fitted_vertices_, model_->triangles ()});
+}
+
+} // namespace morphreg

@@ -1,0 +1,311 @@
+#pragma once
+/** \file morphable_icp.h
+ *  \brief ICP with shape parameters (METHOD.md section 3): registers a scan to a MorphableModel by a
+ *  similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
+ */
+#include <morphreg/common/landmarks.h>
+#include <morphreg/model/morphable_model.h>
+#include <morphreg/registration/registration_report.h>
+
+#include <pcl/PolygonMesh.h>
+#include <pcl/point_types.h>
+#include <pcl/registration/registration.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Robust (IRLS) weighting of the correspondence residuals. */
+enum class RobustLoss
+{
+  none,  ///< plain least squares
+  huber, ///< weight min(1, c / d)
+  tukey  ///< weight (1 - (d / c)^2)^2 inside c, 0 beyond
+};
+
+/** \brief Where the iterations start when align() is given the identity guess. */
+enum class IcpInitialisation
+{
+  automatic, ///< a non-identity guess as given; else landmarks if >= 3 are set; else the coarse alignment
+  guess,     ///< always the guess passed to align(), even the identity
+  landmarks, ///< Umeyama from the target landmarks (InvalidInputError if fewer than 3)
+  coarse     ///< coarseSimilarity (centroids, principal axes, extents) of the model mean onto the target
+};
+
+/** \brief ICP with shape parameters: fits s R (mu_i + M_i m) + t to a target cloud by Gauss-Newton over
+ *  (log s, rotation as an exponential-map update, t, m), first similarity-only to convergence, then with shape.
+ *
+ *  It is a pcl::Registration whose source is the model instance (as PointTarget points: PCL 1.13's
+ *  Registration and CorrespondenceEstimation do not compile for different source and target point types), so the base settings work as for
+ *  pcl::IterativeClosestPoint: setMaximumIterations (total over both stages; default 50),
+ *  setMaxCorrespondenceDistance, setTransformationEpsilon (here: mean squared vertex motion of one update,
+ *  mm^2; 0 means 1e-4), setEuclideanFitnessEpsilon (absolute change of the cost per row between iterations, mm^2),
+ *  addCorrespondenceRejector (every rejector, in order, each iteration), setCorrespondenceEstimation (default
+ *  pcl::registration::CorrespondenceEstimation on the Registration's k-d tree, built once per target) and
+ *  registerVisualizationCallback (called each iteration with the deformed model in the target frame and the
+ *  accepted correspondences). The cost is
+ *  sum_i w_i |r_i|^2_W + landmark_weight sum_l |r_l|^2 + lambda_1^2 |Gamma m|^2 + lambda_2^2 |Lambda m|^2,
+ *  with W the identity (point-to-point) or n n^T + tangential_weight (I - n n^T) (point-to-plane).
+ *  The normal equations are summed per correspondence over the columns of that vertex's regions only
+ *  (no 3N x P Jacobian), in parallel with OpenMP.
+ *
+ *  getFinalTransformation() is the similarity [sR | t]; align()'s output holds the fitted model vertices in the
+ *  target frame (with vertex normals for point types that have normals). pcl::Registration::getFitnessScore() is not virtual and re-applies only the similarity to the
+ *  undeformed source: use getRegistrationReport() (fitness mean/median/RMS) instead.
+ *
+ *  \code
+ *  morphreg::MorphableICP<pcl::PointNormal> icp;
+ *  icp.setModel (model);                                   // 10 components per region by default
+ *  icp.setInputTarget (scan);
+ *  icp.setTargetLandmarks (marked);                        // optional: >= 3 start with Umeyama
+ *  pcl::PointCloud<pcl::PointNormal> fitted;
+ *  icp.align (fitted);                                     // identity guess: landmarks or coarse start
+ *  Eigen::VectorXd m = icp.getShapeCoefficients ();
+ *  pcl::PolygonMesh mesh = icp.getFittedMesh ();
+ *  \endcode
+ */
+template <typename PointTarget, typename Scalar = float>
+class MorphableICP : public pcl::Registration<PointTarget, PointTarget, Scalar>
+{
+public:
+  using Base = pcl::Registration<PointTarget, PointTarget, Scalar>;
+  using Ptr = std::shared_ptr<MorphableICP>;
+  using ConstPtr = std::shared_ptr<const MorphableICP>;
+  using typename Base::Matrix4;
+  using typename Base::PointCloudSource;
+  using typename Base::PointCloudTarget;
+  using typename Base::PointCloudTargetConstPtr;
+
+  MorphableICP ();
+
+  // ---- model and shape ------------------------------------------------------------------------------------
+
+  /** \brief Sets the model and makes its mean the source cloud; selects 10 components per region. Throws
+   *  InvalidInputError for a null model.
+   */
+  void
+  setModel (const MorphableModel::ConstPtr& model);
+
+  MorphableModel::ConstPtr
+  getModel () const
+  {
+    return model_;
+  }
+
+  /** \brief The components fitted in the shape stage (validated against the model). */
+  void
+  setComponentSelection (const ComponentSelection& selection);
+
+  const ComponentSelection&
+  getComponentSelection () const
+  {
+    return selection_;
+  }
+
+  /** \brief lambda_1: weight of the smoothness prior Gamma across overlapping regions (>= 0). */
+  void
+  setSmoothnessWeight (double lambda1);
+
+  /** \brief lambda_2 and Lambda: weight and kind of the shape regulariser (>= 0; a huge value freezes the shape). */
+  void
+  setShapePriorWeight (double lambda2, ShapePrior prior = ShapePrior::inverse_std_dev);
+
+  /** \brief Skip the shape stage (a similarity-only ICP). */
+  void
+  setShapeStage (bool enabled)
+  {
+    shape_stage_ = enabled;
+  }
+
+  /** \brief Estimate the scale (default) or keep s = 1 (a rigid ICP). */
+  void
+  setEstimateScale (bool estimate)
+  {
+    estimate_scale_ = estimate;
+  }
+
+  /** \brief At most this many of the iterations go to the similarity stage (default 20). */
+  void
+  setSimilarityIterations (int iterations);
+
+  // ---- robustness -----------------------------------------------------------------------------------------
+
+  /** \brief Point-to-plane rows, with \a tangential_weight in [0, 1] of the point-to-point term kept along the
+   *  tangent plane (0 = pure point-to-plane). Uses the target's normals, or for targets without normals (or with
+   *  invalid ones) normals estimated from the k-neighbourhood of setRejectTargetBoundary.
+   */
+  void
+  setPointToPlane (bool enabled, double tangential_weight = 0.1);
+
+  /** \brief IRLS weights on the residual distances (default Tukey, automatic width); \a scale (mm) is the kernel
+   *  width c, or <= 0 for c from the
+   *  residuals' median absolute value (1.345 resp. 4.685 times 1.4826 MAD).
+   */
+  void
+  setRobustLoss (RobustLoss loss, double scale = 0.0);
+
+  /** \brief Reject correspondences whose target point lies on the target's boundary (hole borders, isolated
+   *  outliers); detected once per target with pcl::BoundaryEstimation over \a neighbours neighbours. On by default.
+   */
+  void
+  setRejectTargetBoundary (bool enabled, int neighbours = 20);
+
+  /** \brief Residuals against each target point projected onto the least-squares plane of its neighbourhood
+   *  (the k of setRejectTargetBoundary) instead of the raw point: scan noise then averages out instead of pulling
+   *  the model towards the nearest noisy points. On by default; the k-d tree still holds the raw points.
+   */
+  void
+  setTargetSmoothing (bool enabled);
+
+  /** \brief Stop and revert to the best state when a coefficient exceeds \a max_sigma prior standard deviations
+   *  (<= 0: never; default 8) or the cost per row stayed above 1.05 times the stage's best for
+   *  \a rising_iterations iterations in a row (default 3).
+   */
+  void
+  setDivergenceGuard (double max_sigma, int rising_iterations = 3);
+
+  // ---- landmarks and initialisation -----------------------------------------------------------------------
+
+  /** \brief Named target landmarks (model landmark name -> target point, mm), used as extra rows with weight
+   *  \a weight (one landmark counts as \a weight correspondences) and for the landmark initialisation.
+   *  Throws InvalidInputError for non-finite positions, a negative weight, or (once a model is set) names the
+   *  model does not have.
+   */
+  void
+  setTargetLandmarks (const LandmarkPositions& landmarks, double weight = 10.0);
+
+  void
+  setInitialisation (IcpInitialisation initialisation)
+  {
+    initialisation_ = initialisation;
+  }
+
+  // ---- results --------------------------------------------------------------------------------------------
+
+  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()). */
+  const Eigen::VectorXd&
+  getShapeCoefficients () const
+  {
+    return coefficients_;
+  }
+
+  /** \brief The fitted model as a mesh in the model topology, in the target frame. */
+  pcl::PolygonMesh
+  getFittedMesh () const;
+
+  /** \brief The fitted model vertices (3 x N, target frame). */
+  const Eigen::Matrix3Xd&
+  getFittedVertices () const
+  {
+    return fitted_vertices_;
+  }
+
+  /** \brief Per model vertex: distance (mm) to its accepted correspondence at the returned state, NaN where it
+   *  has none.
+   */
+  const Eigen::VectorXd&
+  getVertexResiduals () const
+  {
+    return vertex_residuals_;
+  }
+
+  const IcpReport&
+  getRegistrationReport () const
+  {
+    return report_;
+  }
+
+  /** \brief Validates the inputs (model, target, landmarks), then runs pcl::Registration::align. Throws
+   *  InvalidInputError for a missing model or target, an empty target or one with non-finite points, unknown
+   *  landmark names, or fewer correspondences than unknowns.
+   */
+  void
+  align (PointCloudSource& output);
+
+  void
+  align (PointCloudSource& output, const Matrix4& guess);
+
+  void
+  setInputTarget (const PointCloudTargetConstPtr& cloud) override;
+
+protected:
+  void
+  computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
+
+private:
+  struct State;
+  struct Evaluation;
+  struct Problem;
+
+  void
+  validateInputs () const;
+
+  Eigen::Matrix4d
+  initialTransformation (const Matrix4& guess) const;
+
+  /** Finds, rejects and weighs the correspondences of the model at \a state. */
+  Evaluation
+  evaluate (const State& state) const;
+
+  /** Target point, vertex and 3 x 3 weight of row \a c: a kept correspondence, then the landmarks. */
+  void
+  row (long c, const Evaluation& ev, const Problem& problem, int& vertex, Eigen::Vector3d& q,
+       Eigen::Matrix3d& metric) const;
+
+  /** The cost at \a state for the correspondences of \a ev (with the shape prior in the shape stage). */
+  double
+  objective (const State& state, const Evaluation& ev, const Problem& problem) const;
+
+  /** One Gauss-Newton step from \a state with backtracking on the objective; false if the system could not be
+   *  solved.
+   */
+  bool
+  step (State& state, const Evaluation& evaluation, const Problem& problem) const;
+
+  void
+  prepareTarget ();
+
+  void
+  finish (const State& state, PointCloudSource& output);
+
+  MorphableModel::ConstPtr model_;
+  ComponentSelection selection_;
+  double lambda1_ = 1.0;
+  double lambda2_ = 1.0;
+  ShapePrior prior_ = ShapePrior::inverse_std_dev;
+  bool shape_stage_ = true;
+  bool estimate_scale_ = true;
+  int similarity_iterations_ = 20;
+  bool point_to_plane_ = false;
+  double tangential_weight_ = 0.1;
+  RobustLoss robust_loss_ = RobustLoss::tukey;
+  double robust_scale_ = 0.0;
+  bool reject_boundary_ = true;
+  int boundary_neighbours_ = 20;
+  double max_sigma_ = 8.0;
+  int rising_iterations_ = 3;
+  LandmarkPositions landmarks_;
+  double landmark_weight_ = 10.0;
+  IcpInitialisation initialisation_ = IcpInitialisation::automatic;
+
+  bool smooth_target_ = true;
+  bool target_prepared_ = false;
+  Eigen::Matrix3Xd target_points_;
+  std::vector<bool> target_boundary_;
+  Eigen::Matrix3Xd target_normals_;
+  std::vector<bool> target_has_normal_;
+
+  Eigen::VectorXd coefficients_;
+  Eigen::Matrix3Xd fitted_vertices_;
+  Eigen::VectorXd vertex_residuals_;
+  IcpReport report_;
+};
+
+} // namespace morphreg
+
+// Bodies in impl/morphable_icp.hpp (include it for other target point types); instantiated in the library for:
+extern template class morphreg::MorphableICP<pcl::PointXYZ, float>;
+extern template class morphreg::MorphableICP<pcl::PointNormal, float>;
+extern template class morphreg::MorphableICP<pcl::PointXYZRGBNormal, float>;
