@@ -1,14 +1,16 @@
-// `morphreg demo`: the main job on the built-in data. Generates the synthetic population and a simulated
-// scan of a held-out head, writes them with a JSON report.
+// `morphreg demo`: the main job end to end on the built-in data. Generates the synthetic population, builds a
+// 7-region model from it, simulates a scan of a head not in the population, registers the model to the scan and
+// writes the fitted mesh, the JSON report and a PNG overlay, with the fit's error against the true head.
 #include "commands.h"
-#include "json_report.h"
+#include "pipeline.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/mesh_io.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
@@ -21,48 +23,77 @@ namespace
 struct DemoOptions
 {
   std::string out = "out/demo";
-  int count = 50;
+  int count = 150;
+  int resolution = 40;
   std::uint64_t seed = 1;
+  int model_components = 20;
+  bool screenshot = true;
+  bool use_landmarks = false;
   bool quiet = false;
   synthetic::ScanSimulator::Parameters scanner;
+  RegisterOptions registration;
 };
 
-double
-secondsSince (std::chrono::steady_clock::time_point start)
+/** Scans the held-out head into <out>/scan: scan.pcd with its truth (scan_truth.json, scan_truth.ply) and
+ *  landmarks (scan_landmarks.json). */
+void
+writeSubjectScan (const DemoOptions& options, const synthetic::HeadGenerator& generator, std::uint64_t subject_seed)
 {
-  return std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  const synthetic::ScanSimulator scanner (options.scanner);
+  const synthetic::SyntheticHead subject = generator.sample (subject_seed);
+  const synthetic::SimulatedScan scan = scanner.scan (subject.mesh, subject_seed);
+  writeScan (options.out + "/scan", "scan", scan, subject.mesh, generator.landmarks ());
+  if (!options.quiet)
+    std::cout << "scanned a held-out head (seed " << subject_seed << "): " << scan.cloud->size () << " points, "
+              << scan.num_outliers << " outliers\n";
 }
 
 void
 runDemo (DemoOptions options)
 {
   const auto start = std::chrono::steady_clock::now ();
-  options.scanner.range_mesh = true;
-  const synthetic::ScanSimulator scanner (options.scanner); // bad scanner settings fail before anything is written
-  const synthetic::HeadGenerator generator;
-  const auto heads = generator.population (options.count, options.seed);
-  writePopulation (options.out + "/population", generator, heads, options.seed, options.quiet);
+  const synthetic::ScanSimulator check_scanner (options.scanner); // bad scanner settings fail before any work
+  if (options.screenshot && !std::getenv ("DISPLAY"))
+    throw InvalidInputError ("demo: the overlay screenshot renders through X and $DISPLAY is unset; run under "
+                             "`xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
+  const synthetic::HeadGenerator generator (options.resolution);
+  const std::string population = options.out + "/population";
+  writePopulation (population, generator, generator.population (options.count, options.seed), options.seed,
+                   options.quiet);
+
+  BuildModelOptions model;
+  model.directory = population;
+  model.regions = population + "/regions.json";
+  model.landmark_vertices = population + "/landmark_vertices.json";
+  model.out = options.out + "/model.h5";
+  model.settings.max_components = options.model_components;
+  model.quiet = options.quiet;
+  buildModelFile (model);
 
   // The scanned subject is not in the population: head seed + count, the next one drawn.
   const std::uint64_t subject_seed = options.seed + static_cast<std::uint64_t> (options.count);
-  const synthetic::SyntheticHead subject = generator.sample (subject_seed);
-  const synthetic::SimulatedScan scan = scanner.scan (subject.mesh, subject_seed);
-  makeDirectory (options.out + "/scan");
-  saveTriangleMesh (options.out + "/scan/subject_truth.ply", subject.mesh);
-  const nlohmann::json scan_summary = writeScan (options.out + "/scan", "scan", scan);
+  writeSubjectScan (options, generator, subject_seed);
 
-  const nlohmann::json report = {{"units", "mm"},
-                                 {"population", {{"directory", "population"}, {"count", options.count},
-                                                 {"seed", options.seed}, {"vertices", generator.numVertices ()},
-                                                 {"triangles", generator.triangles ().cols ()}}},
-                                 {"scan", scan_summary},
-                                 {"subject_seed", subject_seed},
-                                 {"seconds", secondsSince (start)}};
-  const std::string report_path = options.out + "/demo_report.json";
-  writeJsonReport (report_path, report);
-  std::cout << "demo: " << options.count << " heads in " << options.out << "/population, scan of a held-out head ("
-            << scan.cloud->size () << " points, " << scan.num_outliers << " outliers) in " << options.out
-            << "/scan, report " << report_path << '\n';
+  RegisterOptions& fit = options.registration;
+  fit.scan = options.out + "/scan/scan.pcd";
+  fit.model = model.out;
+  fit.truth = options.out + "/scan/scan_truth.ply";
+  fit.landmarks = options.use_landmarks ? options.out + "/scan/scan_landmarks.json" : "";
+  fit.out = options.out + "/fitted.ply";
+  fit.report = options.out + "/report.json";
+  fit.screenshot = options.screenshot ? options.out + "/overlay.png" : "";
+  fit.quiet = options.quiet;
+  const nlohmann::json report = registerScanFile (fit);
+
+  const nlohmann::json& truth = report["truth_vertex_error_mm"];
+  const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  std::cout << "demo: " << options.count << " heads in " << population << ", model " << model.out << ", scan "
+            << fit.scan << "\n      fitted mesh " << fit.out << ", report " << fit.report
+            << (options.screenshot ? ", overlay " + fit.screenshot : std::string ()) << "\n"
+            << "demo: fit error against the ground truth: vertex RMS " << std::fixed << std::setprecision (3)
+            << truth["rms"].get<double> () << " mm over all " << truth["count"] << " vertices, "
+            << truth["covered_by_scan"]["rms"].get<double> () << " mm over the " << truth["covered_by_scan"]["count"]
+            << " the scan covers (" << std::setprecision (1) << seconds << " s in all)\n";
 }
 } // namespace
 
@@ -70,13 +101,22 @@ void
 registerDemoCommand (CLI::App& app)
 {
   auto options = std::make_shared<DemoOptions> ();
-  CLI::App* command = app.add_subcommand ("demo", "run the main job on the built-in synthetic data");
+  CLI::App* command = app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out");
   command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
   command->add_option ("-n,--count", options->count, "population size")->check (CLI::Range (2, 5000))
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "population seed")->capture_default_str ();
+  command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
+      ->capture_default_str ();
+  command->add_option ("--model-components", options->model_components, "components per region kept in the model")
+      ->check (CLI::PositiveNumber)->capture_default_str ();
+  command->add_flag ("--no-screenshot{false}", options->screenshot, "skip the PNG overlay (runs without X)");
+  command->add_flag ("--use-landmarks", options->use_landmarks,
+                     "start the registration from the scan's true landmarks instead of the coarse alignment");
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
   addScannerOptions (command, options->scanner);
+  options->registration.components = {options->model_components}; // fit every component the model keeps
+  addRegistrationOptions (command, options->registration);
   command->callback ([options] () { runDemo (*options); });
 }
 

@@ -34,7 +34,8 @@ runSynth (const SynthOptions& options)
   const Progress progress ("scanning heads", options.scans, options.quiet);
   for (int i = 0; i < options.scans; ++i) {
     const std::string name = "scan_" + std::to_string (i);
-    writeScan (options.out, name, scanner.scan (heads[static_cast<std::size_t> (i)].mesh, options.seed + i));
+    const TriangleMesh& head = heads[static_cast<std::size_t> (i)].mesh;
+    writeScan (options.out, name, scanner.scan (head, options.seed + i), head, generator.landmarks ());
     progress.step (i + 1);
   }
   if (options.scans > 0)

@@ -2,10 +2,10 @@
 // with blended seams; with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
 #include "json_report.h"
+#include "mesh_annotations.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/file_checks.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
@@ -15,7 +15,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -59,25 +58,6 @@ landmarkPairs (const std::string& source_path, const std::string& target_path)
   return {from, to};
 }
 
-/** Segment labels from a JSON file {"labels": [...], "segments": [names, optional]}. */
-std::vector<int>
-loadSegmentLabels (const std::string& path, int& num_segments)
-{
-  requireReadableFile (path);
-  std::ifstream stream (path);
-  try {
-    const nlohmann::json json = nlohmann::json::parse (stream);
-    std::vector<int> labels = json.at ("labels").get<std::vector<int>> ();
-    num_segments = json.contains ("segments") ? static_cast<int> (json.at ("segments").size ())
-                                              : 1 + *std::max_element (labels.begin (), labels.end ());
-    return labels;
-  }
-  catch (const nlohmann::json::exception& e) {
-    throw FormatError (path + ": expected {\"labels\": [segment per vertex], \"segments\": [names]} (" + e.what () +
-                       ")");
-  }
-}
-
 TriangleMesh
 warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& report)
 {
@@ -92,9 +72,9 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
     report["merged_landmarks"] = spline.mergedLandmarks ();
     return spline.transformMesh (mesh);
   }
-  int num_segments = 0;
-  const std::vector<int> labels = loadSegmentLabels (options.labels, num_segments);
-  SegmentedWarp warp (labels, num_segments);
+  const RegionLabels segments = loadRegionLabels (options.labels, mesh.numVertices ());
+  const int num_segments = static_cast<int> (segments.names.size ());
+  SegmentedWarp warp (segments.labels, num_segments);
   warp.setRegularization (options.lambda);
   warp.setBlendWidth (options.blend);
   const auto subsets =
@@ -121,9 +101,8 @@ runWarp (const WarpOptions& options)
     const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
     savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
     std::vector<int> labels (static_cast<std::size_t> (mesh.numVertices ()), 0);
-    int num_segments = 1;
     if (!options.labels.empty ())
-      labels = loadSegmentLabels (options.labels, num_segments);
+      labels = loadRegionLabels (options.labels, mesh.numVertices ()).labels;
     const WarpQuality quality = evaluateWarp (warped, truth, labels, 100.0, &mesh);
     report["error_mm"] = {{"mean", quality.mean_error}, {"rms", quality.rms_error}, {"max", quality.max_error}};
     report["seam"] = quality.seam;
@@ -148,7 +127,7 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
   command->add_option ("-o,--out", options->out, "warped mesh to write")->capture_default_str ();
-  command->add_option ("--labels", options->labels, "segment label per vertex, JSON {\"labels\": [...]}: segmented warp");
+  command->add_option ("--labels", options->labels, "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
   command->add_option ("--blend", options->blend, "seam blend width along the mesh (mm), 0 = hard segments")
       ->check (CLI::NonNegativeNumber)->capture_default_str ();
   command->add_option ("--overlap", options->overlap, "landmarks join segments at most this much farther (mm)")

@@ -8,18 +8,23 @@ namespace tools
 {
 /** Exit codes: 0 success, 1 bad input (a file or its content), 2 bad arguments (CLI11), 3 internal error. */
 constexpr int kExitInputError = 1;
+constexpr int kExitBadArguments = 2;
 constexpr int kExitInternalError = 3;
 
 void registerSynthCommand (CLI::App& app);
 void registerDemoCommand (CLI::App& app);
 void registerRenderCommand (CLI::App& app);
 void registerWarpCommand (CLI::App& app);
+void registerBuildModelCommand (CLI::App& app);
+void registerRegisterCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
 registerCommands (CLI::App& app)
 {
   registerSynthCommand (app);
+  registerBuildModelCommand (app);
+  registerRegisterCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
   registerWarpCommand (app);

@@ -18,7 +18,8 @@ main (int argc, char** argv)
     app.parse (argc, argv);
   }
   catch (const CLI::ParseError& e) {
-    return app.exit (e);
+    const int status = app.exit (e); // prints the message, or the help / version text (status 0)
+    return status == 0 ? 0 : morphreg::tools::kExitBadArguments;
   }
   catch (const morphreg::Error& e) {
     std::cerr << "morphreg: error: " << e.what () << '\n';

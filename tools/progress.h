@@ -15,18 +15,20 @@ public:
     : label_ (std::move (label)), total_ (total), quiet_ (quiet)
   {}
 
+  /** Shows \a done of the total, followed by \a detail (e.g. the current error). */
   void
-  step (int done) const
+  step (int done, const std::string& detail = "") const
   {
     if (!quiet_)
-      std::cerr << '\r' << label_ << " [" << done << '/' << total_ << ']' << std::flush;
+      std::cerr << '\r' << label_ << " [" << done << '/' << total_ << ']' << detail << "    " << std::flush;
   }
 
+  /** Ends the line; \a done < 0 means all steps ran (work that may stop early, like ICP, passes its count). */
   void
-  finish () const
+  finish (int done = -1) const
   {
     if (!quiet_)
-      std::cerr << '\r' << label_ << " [" << total_ << '/' << total_ << "] done\n";
+      std::cerr << '\r' << label_ << " [" << (done < 0 ? total_ : done) << '/' << total_ << "] done    \n";
   }
 
 private:

@@ -1,5 +1,6 @@
 #include "synthetic_output.h"
 #include "json_report.h"
+#include "mesh_annotations.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
@@ -27,10 +28,10 @@ headFileName (std::size_t index, const std::string& suffix)
 }
 
 LandmarkPositions
-landmarkPositions (const synthetic::HeadGenerator& generator, const TriangleMesh& head)
+landmarkPositions (const LandmarkVertices& landmarks, const TriangleMesh& head)
 {
   LandmarkPositions positions;
-  for (const auto& [id, vertex] : generator.landmarks ())
+  for (const auto& [id, vertex] : landmarks)
     positions[id] = head.vertices.col (vertex);
   return positions;
 }
@@ -44,16 +45,17 @@ parametersJson (const synthetic::HeadParameters& parameters)
   return json;
 }
 
+/** The topology's annotations: regions.json and landmark_vertices.json (read by build-model), referenced from the
+ *  manifest with the profile line. */
 nlohmann::json
-topologyJson (const synthetic::HeadGenerator& generator)
+writeTopology (const std::string& directory, const synthetic::HeadGenerator& generator)
 {
-  nlohmann::json regions = nlohmann::json::array ();
-  for (synthetic::HeadRegion region : generator.regionLabels ())
-    regions.push_back (synthetic::headRegionName (region));
+  saveRegionLabels (directory + "/regions.json", generatorRegions (generator));
+  saveLandmarkVertices (directory + "/landmark_vertices.json", generator.landmarks ());
   return {{"num_vertices", generator.numVertices ()},
-          {"landmark_vertices", generator.landmarks ()},
-          {"profile_line", generator.profileLine ()},
-          {"region_labels", regions}};
+          {"region_labels", "regions.json"},
+          {"landmark_vertices", "landmark_vertices.json"},
+          {"profile_line", generator.profileLine ()}};
 }
 } // namespace
 
@@ -71,7 +73,7 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
                  const std::vector<synthetic::SyntheticHead>& heads, std::uint64_t seed, bool quiet)
 {
   makeDirectory (directory);
-  nlohmann::json manifest = topologyJson (generator);
+  nlohmann::json manifest = writeTopology (directory, generator);
   manifest["units"] = "mm";
   manifest["seed"] = seed;
   manifest["heads"] = nlohmann::json::array ();
@@ -79,7 +81,7 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
   for (std::size_t i = 0; i < heads.size (); ++i) {
     const std::string file = headFileName (i, ".ply"), landmarks = headFileName (i, "_landmarks.json");
     saveTriangleMesh (directory + "/" + file, heads[i].mesh);
-    saveLandmarks (directory + "/" + landmarks, landmarkPositions (generator, heads[i].mesh));
+    saveLandmarks (directory + "/" + landmarks, landmarkPositions (generator.landmarks (), heads[i].mesh));
     manifest["heads"].push_back ({{"file", file},
                                   {"landmarks", landmarks},
                                   {"seed", seed + i},
@@ -92,9 +94,14 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
 }
 
 nlohmann::json
-writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan)
+writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan,
+           const TriangleMesh& head, const LandmarkVertices& landmarks)
 {
   makeDirectory (directory);
+  TriangleMesh posed = head;
+  posed.vertices = scan.head_to_scan * head.vertices;
+  saveTriangleMesh (directory + "/" + name + "_truth.ply", posed);
+  saveLandmarks (directory + "/" + name + "_landmarks.json", landmarkPositions (landmarks, posed));
   saveCloud (directory + "/" + name + ".pcd", *scan.cloud);
   const Eigen::Matrix4d pose = scan.head_to_scan.matrix ();
   nlohmann::json truth = {{"units", "mm"},
@@ -111,6 +118,8 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
     savePolygonMesh (directory + "/" + name + "_range.ply", scan.range_mesh);
   return {{"cloud", name + ".pcd"},
           {"truth", name + "_truth.json"},
+          {"truth_mesh", name + "_truth.ply"},
+          {"landmarks", name + "_landmarks.json"},
           {"num_points", scan.cloud->size ()},
           {"num_outliers", scan.num_outliers},
           {"scale", scan.scale}};

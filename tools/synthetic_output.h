@@ -12,16 +12,19 @@ namespace morphreg
 {
 namespace tools
 {
-/** Writes head_<i>.ply and head_<i>_landmarks.json for each head and population.json (parameters, landmark vertices, profile line,
- *  region labels); returns the manifest written. */
+/** Writes head_<i>.ply and head_<i>_landmarks.json for each head, regions.json and landmark_vertices.json (the
+ *  shared topology's annotations, see mesh_annotations.h) and population.json (parameters per head, profile line);
+ *  returns the manifest written. */
 nlohmann::json
 writePopulation (const std::string& directory, const synthetic::HeadGenerator& generator,
                  const std::vector<synthetic::SyntheticHead>& heads, std::uint64_t seed, bool quiet);
 
-/** Writes <name>.pcd (points with normals), <name>_truth.json (pose, per-point source triangle) and, when
- *  the scan has one, <name>_range.ply; returns a summary for reports. */
+/** Writes <name>.pcd (points with normals), <name>_truth.json (pose, per-point source triangle), the scanned
+ *  \a head posed into the scan frame as <name>_truth.ply (the ground truth of `register --truth`), its landmarks
+ *  there as <name>_landmarks.json and, when the scan has one, <name>_range.ply; returns a summary for reports. */
 nlohmann::json
-writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan);
+writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan,
+           const TriangleMesh& head, const LandmarkVertices& landmarks);
 
 /** Creates \a directory (and parents); throws IoError naming it on failure. */
 void

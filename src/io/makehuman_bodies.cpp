@@ -1,29 +1,14 @@
 #include <morphreg/common/error.h>
-#include <morphreg/io/file_checks.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-
 namespace morphreg
 {
 namespace
 {
-nlohmann::json
-readJsonFile (const std::string& path)
-{
-  requireReadableFile (path);
-  std::ifstream stream (path);
-  try {
-    return nlohmann::json::parse (stream);
-  }
-  catch (const nlohmann::json::exception& e) {
-    throw FormatError (path + ": malformed JSON (" + e.what () + ")");
-  }
-}
-
 /** Runs \a read on \a json; a missing key or wrong type becomes a FormatError naming the file. */
 template <typename Read>
 void

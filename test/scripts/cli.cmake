@@ -1,31 +1,128 @@
-# CliTest: the command line runs its subcommands and reports bad arguments with a non-zero exit.
-if(TARGET morphreg_cli)
-  add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
-  set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
-  add_test(NAME CliTest.SynthWritesHeadsAndScans
-    COMMAND morphreg_cli synth --count 2 --scans 1 --range-mesh --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/cli_synth)
-  set_tests_properties(CliTest.SynthWritesHeadsAndScans PROPERTIES PASS_REGULAR_EXPRESSION "wrote 2 heads and 1 scans"
-    FIXTURES_SETUP cli_synth)
-  add_test(NAME CliTest.DemoRuns COMMAND morphreg_cli demo --count 3 --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/cli_demo)
-  set_tests_properties(CliTest.DemoRuns PROPERTIES PASS_REGULAR_EXPRESSION "demo: 3 heads")
-  add_test(NAME CliTest.BadArgumentFails COMMAND morphreg_cli synth --count 0)
-  set_tests_properties(CliTest.BadArgumentFails PROPERTIES WILL_FAIL TRUE)
-  add_test(NAME CliTest.BadScannerSettingIsNamed COMMAND morphreg_cli synth --count 1 --scans 1 --noise -1 --quiet
-    --out ${CMAKE_CURRENT_BINARY_DIR}/cli_bad)
-  set_tests_properties(CliTest.BadScannerSettingIsNamed PROPERTIES PASS_REGULAR_EXPRESSION "noise_sigma")
+# CliTest: the command line end to end on small synthetic inputs; bad arguments exit 2, bad files exit 1 with a
+# message naming the file (checked by test/scripts/cli/expect_exit.cmake).
+if(NOT TARGET morphreg_cli)
+  return()
 endif()
+set(cli_dir ${CMAKE_CURRENT_BINARY_DIR}/cli)
+set(cli_scripts ${CMAKE_CURRENT_SOURCE_DIR}/scripts/cli)
+file(MAKE_DIRECTORY ${cli_dir})
+file(WRITE ${cli_dir}/corrupt_model.h5 "not an HDF5 file\n")
+file(WRITE ${cli_dir}/corrupt_regions.json "{\"regions\": [\"a\"], \"labels\": [0, 0,\n")
+file(WRITE ${cli_dir}/unknown_landmarks.csv "id,x,y,z\nnot_a_landmark,1,2,3\n")
 
-# render: a screenshot under a virtual X server of the heads that CliTest.SynthWritesHeadsAndScans wrote.
+# Expects exit code `code` and `text` on stderr from morphreg run with the remaining arguments.
+function(morphreg_cli_expect_exit name code text)
+  list(JOIN ARGN "|" arguments)
+  add_test(NAME CliTest.${name}
+    COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|${arguments}" -DEXPECT_CODE=${code}
+            "-DEXPECT_TEXT=${text}" -P ${cli_scripts}/expect_exit.cmake)
+endfunction()
+
+add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
+set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
+foreach(command synth build-model register warp render demo)
+  add_test(NAME CliTest.Help.${command} COMMAND morphreg_cli ${command} --help)
+  set_tests_properties(CliTest.Help.${command} PROPERTIES PASS_REGULAR_EXPRESSION "Usage: .*${command}")
+endforeach()
+
+add_test(NAME CliTest.SynthWritesHeadsAndScans
+  COMMAND morphreg_cli synth --count 2 --scans 1 --range-mesh --quiet --out ${cli_dir}/synth)
+set_tests_properties(CliTest.SynthWritesHeadsAndScans PROPERTIES PASS_REGULAR_EXPRESSION "wrote 2 heads and 1 scans"
+  FIXTURES_SETUP cli_synth)
+morphreg_cli_expect_exit(BadArgumentExits2 2 "--count" synth --count 0)
+morphreg_cli_expect_exit(BadScannerSettingIsNamed 1 "noise_sigma" synth --count 1 --scans 1 --noise -1 --quiet
+  --out ${cli_dir}/bad)
+
+# build-model and register on a small population (12 heads of 3458 vertices, a coarse scan of the first).
+add_test(NAME CliTest.SmallPopulation
+  COMMAND morphreg_cli synth --count 12 --resolution 24 --scans 1 --angular-samples 200 --row-spacing 3 --quiet
+          --out ${cli_dir}/small)
+set_tests_properties(CliTest.SmallPopulation PROPERTIES FIXTURES_SETUP cli_small)
+add_test(NAME CliTest.BuildModelFromSynthFolder
+  COMMAND morphreg_cli build-model --dir ${cli_dir}/small --regions ${cli_dir}/small/regions.json
+          --landmark-vertices ${cli_dir}/small/landmark_vertices.json --components 8 --out ${cli_dir}/small_model.h5)
+set_tests_properties(CliTest.BuildModelFromSynthFolder PROPERTIES FIXTURES_REQUIRED cli_small FIXTURES_SETUP cli_model
+  PASS_REGULAR_EXPRESSION "small_model.h5: 3458 vertices, 7 region\\(s\\), components per region \\[8,8,8,8,8,8,8\\], 45 landmarks")
+add_test(NAME CliTest.BuildModelGlobalFromFiles
+  COMMAND morphreg_cli build-model --mesh ${cli_dir}/small/head_000.ply --mesh ${cli_dir}/small/head_001.ply
+          --mesh ${cli_dir}/small/head_002.ply --variance 0.9 --no-procrustes --quiet --out ${cli_dir}/global.h5)
+set_tests_properties(CliTest.BuildModelGlobalFromFiles PROPERTIES FIXTURES_REQUIRED cli_small
+  PASS_REGULAR_EXPRESSION "global.h5: 3458 vertices, 1 region\\(s\\)")
+morphreg_cli_expect_exit(BuildModelMismatchedMeshIsNamed 1 "synth/head_000.ply: 9602 vertices, expected 3458"
+  build-model --mesh ${cli_dir}/small/head_000.ply --mesh ${cli_dir}/synth/head_000.ply --out ${cli_dir}/bad.h5)
+morphreg_cli_expect_exit(BuildModelCorruptRegionsIsNamed 1 "corrupt_regions.json: malformed JSON"
+  build-model --dir ${cli_dir}/small --regions ${cli_dir}/corrupt_regions.json --out ${cli_dir}/bad.h5)
+morphreg_cli_expect_exit(BuildModelWrongRegionCountIsNamed 1 "synth/regions.json: region labels: 9602 labels for 3458"
+  build-model --dir ${cli_dir}/small --regions ${cli_dir}/synth/regions.json --out ${cli_dir}/bad.h5)
+morphreg_cli_expect_exit(BuildModelNeedsInput 2 "--mesh, --dir or --from-ict" build-model)
+morphreg_cli_expect_exit(BuildModelOneMeshFails 1 "at least two meshes" build-model --mesh ${cli_dir}/small/head_000.ply)
+set_tests_properties(CliTest.BuildModelMismatchedMeshIsNamed CliTest.BuildModelCorruptRegionsIsNamed
+  CliTest.BuildModelWrongRegionCountIsNamed CliTest.BuildModelOneMeshFails PROPERTIES
+  FIXTURES_REQUIRED "cli_small;cli_synth")
+
+add_test(NAME CliTest.RegisterSynthScanMatchesTruth
+  COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
+          --truth ${cli_dir}/small/scan_0_truth.ply --out ${cli_dir}/fit.ply --report ${cli_dir}/fit.json)
+set_tests_properties(CliTest.RegisterSynthScanMatchesTruth PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  FIXTURES_SETUP cli_fit
+  PASS_REGULAR_EXPRESSION "vertices the scan covers: RMS 0\\.[0-9]+ mm.*registered .* iterations \\([a-z_]*converged")
+add_test(NAME CliTest.RegisterReportIsComplete
+  COMMAND ${CMAKE_COMMAND} -DREPORT=${cli_dir}/fit.json -DMAX_TRUTH_RMS=1.0 -P ${cli_scripts}/check_register_report.cmake)
+set_tests_properties(CliTest.RegisterReportIsComplete PROPERTIES FIXTURES_REQUIRED cli_fit)
+add_test(NAME CliTest.RegisterWithRejectorChainAndLandmarks
+  COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
+          --landmarks ${cli_dir}/small/scan_0_landmarks.json --reject-distance 20 --reject-median 3
+          --reject-one-to-one --reject-trimmed 0.95 --point-to-point --loss huber --components 5 --iterations 40
+          --truth ${cli_dir}/small/scan_0_truth.ply --quiet --out ${cli_dir}/fit_rejectors.ply)
+set_tests_properties(CliTest.RegisterWithRejectorChainAndLandmarks PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  PASS_REGULAR_EXPRESSION "vertices the scan covers: RMS 0\\.[0-9]+ mm")
+morphreg_cli_expect_exit(RegisterCorruptModelIsNamed 1 "corrupt_model.h5"
+  register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/corrupt_model.h5 --out ${cli_dir}/bad.ply)
+morphreg_cli_expect_exit(RegisterMissingScanIsNamed 1 "no_such_scan.pcd"
+  register --scan ${cli_dir}/no_such_scan.pcd --model ${cli_dir}/small_model.h5 --out ${cli_dir}/bad.ply)
+morphreg_cli_expect_exit(RegisterUnknownLandmarkIsNamed 1 "unknown_landmarks.csv"
+  register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
+  --landmarks ${cli_dir}/unknown_landmarks.csv --out ${cli_dir}/bad.ply)
+morphreg_cli_expect_exit(RegisterWrongTruthIsNamed 1 "synth/head_000.ply: 9602 vertices"
+  register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --iterations 2 --quiet
+  --truth ${cli_dir}/synth/head_000.ply --out ${cli_dir}/bad.ply)
+morphreg_cli_expect_exit(RegisterBadLossExits2 2 "--loss" register --scan a.pcd --model b.h5 --loss cauchy)
+morphreg_cli_expect_exit(RegisterWrongComponentCountExits1 1 "regions"
+  register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --components 3 4 --out ${cli_dir}/bad.ply)
+set_tests_properties(CliTest.RegisterCorruptModelIsNamed CliTest.RegisterMissingScanIsNamed
+  CliTest.RegisterUnknownLandmarkIsNamed CliTest.RegisterWrongTruthIsNamed CliTest.RegisterWrongComponentCountExits1
+  PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model;cli_synth")
+
+add_test(NAME CliTest.DemoRunsWithoutScreenshot
+  COMMAND morphreg_cli demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --no-screenshot
+          --quiet --out ${cli_dir}/demo)
+set_tests_properties(CliTest.DemoRunsWithoutScreenshot PROPERTIES
+  PASS_REGULAR_EXPRESSION "demo: 6 heads.*fitted mesh .*fitted.ply, report .*report.json\n.*vertex RMS [0-9.]+ mm")
+
+# Screenshots under a virtual X server, one at a time.
 find_program(XVFB_RUN xvfb-run)
-if(TARGET morphreg_cli AND XVFB_RUN)
-  add_test(NAME CliTest.RenderWritesPng
-    COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" $<TARGET_FILE:morphreg_cli> render
-            --mesh ${CMAKE_CURRENT_BINARY_DIR}/cli_synth/head_000.ply --cloud ${CMAKE_CURRENT_BINARY_DIR}/cli_synth/scan_0.pcd
-            --width 320 --height 240 --view oblique --out ${CMAKE_CURRENT_BINARY_DIR}/cli_render.png)
-  set_tests_properties(CliTest.RenderWritesPng PROPERTIES
-    DEPENDS CliTest.SynthWritesHeadsAndScans FIXTURES_REQUIRED cli_synth RESOURCE_LOCK xvfb
-    PASS_REGULAR_EXPRESSION "wrote .*cli_render.png \\(320x240\\)")
-  add_test(NAME CliTest.RenderMissingFileFails
-    COMMAND $<TARGET_FILE:morphreg_cli> render --mesh ${CMAKE_CURRENT_BINARY_DIR}/no_such_mesh.ply)
-  set_tests_properties(CliTest.RenderMissingFileFails PROPERTIES PASS_REGULAR_EXPRESSION "no_such_mesh.ply")
+if(NOT XVFB_RUN)
+  return()
 endif()
+set(xvfb ${XVFB_RUN} -a -s "-screen 0 1280x1024x24")
+add_test(NAME CliTest.RenderWritesPng
+  COMMAND ${xvfb} $<TARGET_FILE:morphreg_cli> render --mesh ${cli_dir}/synth/head_000.ply
+          --cloud ${cli_dir}/synth/scan_0.pcd --width 320 --height 240 --view oblique --out ${cli_dir}/render.png)
+set_tests_properties(CliTest.RenderWritesPng PROPERTIES FIXTURES_REQUIRED cli_synth RESOURCE_LOCK xvfb
+  PASS_REGULAR_EXPRESSION "wrote .*render.png \\(320x240\\)")
+morphreg_cli_expect_exit(RenderMissingFileIsNamed 2 "no_such_mesh.ply" render --mesh ${cli_dir}/no_such_mesh.ply)
+add_test(NAME CliTest.DemoWritesScreenshot
+  COMMAND ${xvfb} $<TARGET_FILE:morphreg_cli> demo --count 6 --resolution 20 --angular-samples 150
+          --row-spacing 4 --iterations 40 --width 400 --height 300 --quiet --out ${cli_dir}/demo_shot)
+set_tests_properties(CliTest.DemoWritesScreenshot PROPERTIES RESOURCE_LOCK xvfb FIXTURES_SETUP cli_demo_shot
+  PASS_REGULAR_EXPRESSION "overlay .*demo_shot/overlay.png")
+add_test(NAME CliTest.DemoScreenshotHasRequestedSize
+  COMMAND ${CMAKE_COMMAND} -DPNG=${cli_dir}/demo_shot/overlay.png -DWIDTH=400 -DHEIGHT=300 -P ${cli_scripts}/check_png.cmake)
+set_tests_properties(CliTest.DemoScreenshotHasRequestedSize PROPERTIES FIXTURES_REQUIRED cli_demo_shot)
+morphreg_cli_expect_exit(RegisterScreenshotWithoutDisplayFails 1 "xvfb-run"
+  register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --screenshot ${cli_dir}/bad.png
+  --out ${cli_dir}/bad.ply)
+set_tests_properties(CliTest.RegisterScreenshotWithoutDisplayFails PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  ENVIRONMENT_MODIFICATION "DISPLAY=unset:")
+morphreg_cli_expect_exit(DemoScreenshotWithoutDisplayFailsEarly 1 "--no-screenshot" demo --count 2 --out ${cli_dir}/bad_demo)
+set_tests_properties(CliTest.DemoScreenshotWithoutDisplayFailsEarly PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:")

@@ -1,0 +1,49 @@
+#pragma once
+/** \file surface_distance.h
+ *  \brief How close a fitted model surface lies to a target surface without correspondence (issue 5's evaluation):
+ *  area-uniform samples of the target, each to the closest point on the fitted surface (point-to-triangle),
+ *  leaving out samples that only reach the fitted surface at its open boundary (target parts the model lacks).
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief How the target is sampled and which samples count. */
+struct SurfaceDistanceSettings
+{
+  double area_per_sample = 4.0; ///< mm^2 of target surface per sample
+  std::uint64_t seed = 1;       ///< the sampling is deterministic for a seed
+  bool drop_boundary = true;    ///< leave out samples whose closest fitted point lies on the fitted boundary
+};
+
+/** \brief Distances (mm) of the kept target samples to the fitted surface, and their statistics. */
+struct SurfaceDistance
+{
+  std::vector<double> distances; ///< per kept sample
+  int samples = 0;               ///< samples drawn (before dropping)
+  int dropped_on_boundary = 0;   ///< samples whose closest fitted point lies on the fitted boundary
+  double mean = 0.0;
+  double median = 0.0;
+  double percentile95 = 0.0;
+  double rms = 0.0;
+  double max = 0.0;
+};
+
+/** \brief Samples \a target (without the triangles flagged in \a excluded_target, e.g. a scanner's closing cap)
+ *  and measures each sample's distance to the closest point of \a fitted. Throws InvalidInputError for invalid
+ *  meshes or settings, a wrongly sized \a excluded_target, or when no sample is left.
+ */
+SurfaceDistance
+surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
+                 const std::vector<bool>& excluded_target = {}, const SurfaceDistanceSettings& settings = {});
+
+/** \brief The value below which \a fraction (in [0, 1]) of \a values lie (linear interpolation between order
+ *  statistics); throws InvalidInputError for an empty set or a fraction outside [0, 1].
+ */
+double
+percentile (std::vector<double> values, double fraction);
+
+} // namespace morphreg

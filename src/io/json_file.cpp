@@ -1,0 +1,22 @@
+#include <morphreg/common/error.h>
+#include <morphreg/io/file_checks.h>
+#include <morphreg/io/json_file.h>
+
+#include <fstream>
+
+namespace morphreg
+{
+nlohmann::json
+readJsonFile (const std::string& path)
+{
+  requireReadableFile (path);
+  std::ifstream stream (path);
+  try {
+    return nlohmann::json::parse (stream);
+  }
+  catch (const nlohmann::json::exception& e) {
+    throw FormatError (path + ": malformed JSON (" + e.what () + ")");
+  }
+}
+
+} // namespace morphreg

@@ -1,0 +1,57 @@
+#include <morphreg/common/error.h>
+#include <morphreg/mesh/surface_sampling.h>
+#include <morphreg/mesh/triangle_locator.h>
+#include <morphreg/registration/surface_distance.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace morphreg
+{
+double
+percentile (std::vector<double> values, double fraction)
+{
+  if (values.empty ())
+    throw InvalidInputError ("percentile: no values");
+  if (!(fraction >= 0.0 && fraction <= 1.0))
+    throw InvalidInputError ("percentile: the fraction must lie in [0, 1], got " + std::to_string (fraction));
+  std::sort (values.begin (), values.end ());
+  const double position = fraction * static_cast<double> (values.size () - 1);
+  const auto below = static_cast<size_t> (std::floor (position));
+  const size_t above = std::min (below + 1, values.size () - 1);
+  return values[below] + (position - static_cast<double> (below)) * (values[above] - values[below]);
+}
+
+SurfaceDistance
+surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted, const std::vector<bool>& excluded_target,
+                 const SurfaceDistanceSettings& settings)
+{
+  const SurfaceSamples samples =
+      sampleSurfaceUniformly (target, settings.area_per_sample, settings.seed, excluded_target);
+  const TriangleLocator locator (fitted);
+  SurfaceDistance result;
+  result.samples = static_cast<int> (samples.points.cols ());
+  std::vector<TriangleLocator::Hit> hits (samples.points.cols ());
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index i = 0; i < samples.points.cols (); ++i)
+    hits[static_cast<size_t> (i)] = locator.closestPoint (samples.points.col (i));
+  for (const auto& hit : hits) {
+    if (settings.drop_boundary && hit.on_boundary)
+      ++result.dropped_on_boundary;
+    else
+      result.distances.push_back (hit.distance);
+  }
+  if (result.distances.empty ())
+    throw InvalidInputError ("surfaceDistance: every target sample reaches the fitted surface only at its boundary");
+  const auto n = static_cast<double> (result.distances.size ());
+  result.mean = std::accumulate (result.distances.begin (), result.distances.end (), 0.0) / n;
+  result.rms = std::sqrt (std::inner_product (result.distances.begin (), result.distances.end (),
+                                              result.distances.begin (), 0.0) / n);
+  result.max = *std::max_element (result.distances.begin (), result.distances.end ());
+  result.median = percentile (result.distances, 0.5);
+  result.percentile95 = percentile (result.distances, 0.95);
+  return result;
+}
+
+} // namespace morphreg

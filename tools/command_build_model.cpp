@@ -1,0 +1,187 @@
+// `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
+#include "commands.h"
+#include "json_report.h"
+#include "mesh_annotations.h"
+#include "pipeline.h"
+#include "progress.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/json_file.h>
+#include <morphreg/io/file_checks.h>
+#include <morphreg/io/ict_facekit.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/io/model_io.h>
+#include <morphreg/model/ict_region_model.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+/** The meshes of \a directory: the heads listed in its population.json (written by synth and demo), else every
+ *  .ply .obj .vtk .stl file in name order. */
+std::vector<std::string>
+directoryMeshes (const std::string& directory)
+{
+  if (!std::filesystem::is_directory (directory))
+    throw IoError (directory + ": not a directory");
+  const std::string manifest_path = directory + "/population.json";
+  std::vector<std::string> files;
+  if (std::filesystem::exists (manifest_path)) {
+    const nlohmann::json manifest = readJsonFile (manifest_path);
+    try {
+      for (const auto& head : manifest.at ("heads"))
+        files.push_back (directory + "/" + head.at ("file").get<std::string> ());
+    }
+    catch (const nlohmann::json::exception& e) {
+      throw FormatError (manifest_path + ": expected {\"heads\": [{\"file\": mesh file}, ...]} (" + e.what () + ")");
+    }
+    return files;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator (directory)) {
+    const std::string ext = fileExtension (entry.path ().string ());
+    if (entry.is_regular_file () && (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl"))
+      files.push_back (entry.path ().string ());
+  }
+  std::sort (files.begin (), files.end ());
+  if (files.empty ())
+    throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl) in the folder");
+  return files;
+}
+
+/** Loads every mesh, each checked against the first: a mismatch names the file. */
+std::vector<TriangleMesh>
+loadMeshes (const std::vector<std::string>& files, bool quiet)
+{
+  if (files.size () < 2)
+    throw InvalidInputError ("build-model: " + std::to_string (files.size ()) +
+                             " mesh(es) given; a model needs at least two meshes in correspondence");
+  std::vector<TriangleMesh> meshes;
+  const Progress progress ("loading meshes", static_cast<int> (files.size ()), quiet);
+  for (const std::string& file : files) {
+    meshes.push_back (loadTriangleMesh (file));
+    requireSameTopology (meshes.front (), meshes.back (), file);
+    progress.step (static_cast<int> (meshes.size ()));
+  }
+  progress.finish ();
+  return meshes;
+}
+
+MorphableModel::Ptr
+buildFromMeshes (const BuildModelOptions& options, nlohmann::json& summary)
+{
+  std::vector<std::string> files;
+  if (!options.directory.empty ())
+    files = directoryMeshes (options.directory);
+  files.insert (files.end (), options.meshes.begin (), options.meshes.end ());
+  const std::vector<TriangleMesh> meshes = loadMeshes (files, options.quiet);
+  const Eigen::Index num_vertices = meshes.front ().numVertices ();
+  const ModelBuilder builder (options.settings);
+  MorphableModel::Ptr model = options.regions.empty ()
+                                  ? builder.buildGlobal (meshes)
+                                  : builder.build (meshes, loadRegionLabels (options.regions, num_vertices));
+  if (!options.landmark_vertices.empty ())
+    model->setLandmarks (loadLandmarkVertices (options.landmark_vertices, num_vertices));
+  summary["source"] = {{"meshes", files.size ()}, {"regions", options.regions}, {"landmark_vertices",
+                                                                                options.landmark_vertices}};
+  return model;
+}
+
+MorphableModel::Ptr
+buildFromIct (const BuildModelOptions& options, nlohmann::json& summary)
+{
+  if (!options.quiet)
+    std::cerr << "loading the ICT-FaceKit model from " << options.ict_directory << " and sampling "
+              << options.ict_samples << " heads\n";
+  const MorphableModel::Ptr ict = loadIctFaceKit (options.ict_directory);
+  summary["source"] = {{"ict_facekit", options.ict_directory}, {"samples", options.ict_samples}, {"seed", options.seed}};
+  return buildIctRegionModel (*ict, options.ict_samples, options.seed, options.settings);
+}
+
+void
+runBuildModel (const BuildModelOptions& options)
+{
+  const nlohmann::json summary = buildModelFile (options);
+  std::cout << "wrote " << options.out << ": " << summary["vertices"] << " vertices, " << summary["regions"].size ()
+            << " region(s), components per region " << summary["components"].dump () << ", "
+            << summary["landmarks"] << " landmarks (" << summary["seconds"] << " s)\n";
+}
+} // namespace
+
+nlohmann::json
+buildModelFile (const BuildModelOptions& options)
+{
+  const auto start = std::chrono::steady_clock::now ();
+  nlohmann::json summary = {{"file", options.out},
+                            {"settings",
+                             {{"max_components", options.settings.max_components},
+                              {"explained_variance", options.settings.explained_variance},
+                              {"blend_rings", options.settings.blend_rings},
+                              {"procrustes", options.settings.align}}}};
+  const MorphableModel::Ptr model =
+      options.ict_directory.empty () ? buildFromMeshes (options, summary) : buildFromIct (options, summary);
+  model->setMetadata ({{"builder", "morphreg build-model"}, {"source", summary["source"].dump ()}});
+  saveModel (options.out, *model);
+  std::vector<int> components;
+  for (const ModelRegion& region : model->regions ()) {
+    summary["regions"].push_back (region.name);
+    components.push_back (static_cast<int> (region.variances.size ()));
+  }
+  summary["components"] = components;
+  summary["vertices"] = model->numVertices ();
+  summary["landmarks"] = model->landmarks ().size ();
+  summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  return summary;
+}
+
+void
+addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
+{
+  command->add_option ("--components", settings.max_components,
+                       "at most this many components per region (0 = no limit)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--variance", settings.explained_variance,
+                       "keep the fewest components explaining this fraction of each region's variance")
+      ->check (CLI::Range (1e-6, 1.0))->capture_default_str ();
+  command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
+}
+
+void
+registerBuildModelCommand (CLI::App& app)
+{
+  auto options = std::make_shared<BuildModelOptions> ();
+  CLI::App* command = app.add_subcommand ("build-model", "build a (multi-region) PCA model from meshes in correspondence");
+  auto* meshes = command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable");
+  auto* directory = command->add_option ("-d,--dir", options->directory,
+                                         "folder of meshes (the heads of its population.json if present)");
+  command->add_option ("--regions", options->regions,
+                       "region per vertex, JSON {\"regions\": [names], \"labels\": [...]} (default: one global region)");
+  command->add_option ("--landmark-vertices", options->landmark_vertices,
+                       "landmark vertices, JSON {\"landmark_vertices\": {\"nose_tip\": 123, ...}}");
+  auto* ict = command->add_option ("--from-ict", options->ict_directory,
+                                   "build the 7-region model from the ICT-FaceKit folder instead of meshes");
+  command->add_option ("--samples", options->ict_samples, "heads drawn from the ICT model (with --from-ict)")
+      ->check (CLI::Range (2, 100000))->capture_default_str ();
+  command->add_option ("--seed", options->seed, "seed of the ICT samples")->capture_default_str ();
+  command->add_option ("-o,--out", options->out, "model file to write (HDF5, statismo layout)")->capture_default_str ();
+  addModelBuilderOptions (command, options->settings);
+  command->add_flag ("-q,--quiet", options->quiet, "no progress output");
+  ict->excludes (meshes)->excludes (directory);
+  command->callback ([options] () {
+    if (options->meshes.empty () && options->directory.empty () && options->ict_directory.empty ())
+      throw CLI::RequiredError ("build-model needs --mesh, --dir or --from-ict");
+    runBuildModel (*options);
+  });
+}
+
+} // namespace tools
+} // namespace morphreg

@@ -1,0 +1,416 @@
+// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
+// optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
+#include "commands.h"
+#include "json_report.h"
+#include "pipeline.h"
+#include "progress.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/cloud_io.h>
+#include <morphreg/io/landmark_io.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/io/model_io.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/registration/morphable_icp.h>
+#include <morphreg/visualization/colour_map.h>
+#include <morphreg/visualization/registration_visualizer.h>
+
+#include <pcl/filters/filter.h>
+#include <pcl/registration/correspondence_rejection_distance.h>
+#include <pcl/registration/correspondence_rejection_median_distance.h>
+#include <pcl/registration/correspondence_rejection_one_to_one.h>
+#include <pcl/registration/correspondence_rejection_trimmed.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+using Icp = MorphableICP<pcl::PointNormal>;
+using Clock = std::chrono::steady_clock;
+
+double
+secondsSince (Clock::time_point start)
+{
+  return std::chrono::duration<double> (Clock::now () - start).count ();
+}
+
+/** The finite entries of \a values (NaN = a vertex without a residual), sorted. */
+std::vector<double>
+sortedFinite (const Eigen::VectorXd& values)
+{
+  std::vector<double> finite;
+  for (double v : values)
+    if (std::isfinite (v))
+      finite.push_back (v);
+  std::sort (finite.begin (), finite.end ());
+  return finite;
+}
+
+/** Count, mean, median, RMS and maximum (mm) of the finite \a values. */
+nlohmann::json
+distanceStatistics (const Eigen::VectorXd& values)
+{
+  const std::vector<double> finite = sortedFinite (values);
+  if (finite.empty ())
+    return {{"count", 0}};
+  double sum = 0.0, squares = 0.0;
+  for (double v : finite) {
+    sum += v;
+    squares += v * v;
+  }
+  const double n = static_cast<double> (finite.size ());
+  return {{"count", finite.size ()},
+          {"mean", sum / n},
+          {"median", finite[finite.size () / 2]},
+          {"rms", std::sqrt (squares / n)},
+          {"max", finite.back ()}};
+}
+
+/** The colour scale (mm) of the residual map: the given maximum, else the 95th percentile of the residuals. */
+double
+colourScale (const Eigen::VectorXd& residuals, double requested)
+{
+  if (requested > 0.0)
+    return requested;
+  const std::vector<double> finite = sortedFinite (residuals);
+  const double percentile = finite.empty () ? 0.0 : finite[(finite.size () * 95) / 100];
+  return std::max (percentile, 1e-3);
+}
+
+RobustLoss
+robustLoss (const std::string& name)
+{
+  return name == "none" ? RobustLoss::none : name == "huber" ? RobustLoss::huber : RobustLoss::tukey;
+}
+
+/** The scan as points with normals, without invalid (NaN) points. */
+pcl::PointCloud<pcl::PointNormal>::Ptr
+loadScan (const std::string& path)
+{
+  auto scan = loadCloud<pcl::PointNormal> (path);
+  scan->is_dense = false;
+  pcl::Indices kept;
+  pcl::removeNaNFromPointCloud (*scan, *scan, kept);
+  if (scan->empty ())
+    throw FormatError (path + ": the scan has no valid (finite) points");
+  return scan;
+}
+
+/** The scan landmarks of the file that the model also has; the others are named on stderr and skipped. */
+LandmarkPositions
+modelLandmarks (const RegisterOptions& options, const MorphableModel& model)
+{
+  LandmarkPositions landmarks = loadLandmarks (options.landmarks);
+  std::string skipped;
+  for (auto it = landmarks.begin (); it != landmarks.end ();)
+    if (model.landmarks ().count (it->first)) {
+      ++it;
+    } else {
+      skipped += " " + it->first;
+      it = landmarks.erase (it);
+    }
+  if (!skipped.empty () && !options.quiet)
+    std::cerr << options.landmarks << ": the model has no landmark" << skipped << "; using the other "
+              << landmarks.size () << '\n';
+  if (landmarks.empty ())
+    throw InvalidInputError (options.landmarks + ": none of its landmarks is on the model " + options.model);
+  return landmarks;
+}
+
+void
+configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Ptr& model)
+{
+  icp.setModel (model);
+  icp.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
+                                                              : model->firstComponents (options.components));
+  icp.setMaximumIterations (options.iterations);
+  icp.setSimilarityIterations (options.similarity_iterations);
+  if (options.max_distance > 0.0)
+    icp.setMaxCorrespondenceDistance (options.max_distance);
+  icp.setPointToPlane (options.point_to_plane);
+  icp.setRobustLoss (robustLoss (options.loss), options.loss_scale);
+  if (options.reject_distance > 0.0) {
+    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
+    rejector->setMaximumDistance (static_cast<float> (options.reject_distance));
+    icp.addCorrespondenceRejector (rejector);
+  }
+  if (options.reject_median > 0.0) {
+    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorMedianDistance> ();
+    rejector->setMedianFactor (options.reject_median);
+    icp.addCorrespondenceRejector (rejector);
+  }
+  if (options.reject_one_to_one)
+    icp.addCorrespondenceRejector (std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> ());
+  if (options.reject_trimmed > 0.0) {
+    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorTrimmed> ();
+    rejector->setOverlapRatio (static_cast<float> (options.reject_trimmed));
+    icp.addCorrespondenceRejector (rejector);
+  }
+  if (!options.landmarks.empty ())
+    icp.setTargetLandmarks (modelLandmarks (options, *model));
+}
+
+/** Prints one progress line per iteration: the kept correspondences and their RMS distance. */
+void
+showIterations (Icp& icp, const Progress& progress)
+{
+  auto iteration = std::make_shared<int> (0);
+  std::function<Icp::UpdateVisualizerCallbackSignature> callback = [&progress, iteration] (
+      const pcl::PointCloud<pcl::PointNormal>& source, const pcl::Indices& source_indices,
+      const pcl::PointCloud<pcl::PointNormal>& target, const pcl::Indices& target_indices) {
+    double squares = 0.0;
+    for (std::size_t k = 0; k < source_indices.size (); ++k)
+      squares += (source[source_indices[k]].getVector3fMap () - target[target_indices[k]].getVector3fMap ())
+                     .squaredNorm ();
+    std::ostringstream detail;
+    detail << ' ' << source_indices.size () << " correspondences, RMS " << std::fixed << std::setprecision (3)
+           << std::sqrt (squares / std::max<std::size_t> (source_indices.size (), 1)) << " mm";
+    progress.step (++*iteration, detail.str ());
+  };
+  icp.registerVisualizationCallback (callback);
+}
+
+nlohmann::json
+similarityJson (const Eigen::Matrix4d& transform)
+{
+  const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3> ();
+  const double scale = std::cbrt (linear.determinant ());
+  const Eigen::Matrix4d rows = transform.transpose (); // row-major order in the file
+  const Eigen::Matrix3d rotation_rows = (linear / scale).transpose ();
+  return {{"matrix_row_major", std::vector<double> (rows.data (), rows.data () + 16)},
+          {"scale", scale},
+          {"rotation_row_major", std::vector<double> (rotation_rows.data (), rotation_rows.data () + 9)},
+          {"translation", {transform (0, 3), transform (1, 3), transform (2, 3)}}};
+}
+
+nlohmann::json
+iterationsJson (const IcpReport& report)
+{
+  nlohmann::json history = nlohmann::json::array ();
+  for (const IcpIteration& it : report.history)
+    history.push_back ({{"stage", toString (it.stage)},
+                        {"mean_squared_error_mm2", it.error},
+                        {"correspondences", it.correspondences},
+                        {"kept", it.kept},
+                        {"seconds", it.seconds}});
+  return {{"similarity", report.similarity_iterations},
+          {"shape", report.shape_iterations},
+          {"total", report.history.size ()},
+          {"history", history}};
+}
+
+nlohmann::json
+coefficientsJson (const MorphableModel& model, const ComponentSelection& selection, const Eigen::VectorXd& m)
+{
+  nlohmann::json coefficients;
+  for (int j = 0; j < model.numRegions (); ++j) {
+    const Eigen::VectorXd part = m.segment (selection.offset (j), selection.count (j));
+    coefficients[model.region (j).name] = std::vector<double> (part.data (), part.data () + part.size ());
+  }
+  return coefficients;
+}
+
+nlohmann::json
+settingsJson (const RegisterOptions& options)
+{
+  return {{"iterations", options.iterations},
+          {"similarity_iterations", options.similarity_iterations},
+          {"max_correspondence_distance_mm", options.max_distance},
+          {"components", options.components},
+          {"point_to_plane", options.point_to_plane},
+          {"robust_loss", options.loss},
+          {"robust_scale_mm", options.loss_scale},
+          {"reject_distance_mm", options.reject_distance},
+          {"reject_median_factor", options.reject_median},
+          {"reject_one_to_one", options.reject_one_to_one},
+          {"reject_trimmed_ratio", options.reject_trimmed},
+          {"landmarks", options.landmarks}};
+}
+
+/** Vertex distances between the fit and the true mesh (model topology, scan frame), over every vertex and over
+ *  the vertices the scan covers (those with a residual); printed and reported. */
+nlohmann::json
+truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const Eigen::VectorXd& residuals)
+{
+  const TriangleMesh truth = loadTriangleMesh (options.truth);
+  requireSameTopology (fitted, truth, options.truth);
+  const Eigen::VectorXd errors = (fitted.vertices - truth.vertices).colwise ().norm ().transpose ();
+  const Eigen::VectorXd covered = residuals.array ().isFinite ().select (errors, NAN);
+  nlohmann::json report = distanceStatistics (errors);
+  report["covered_by_scan"] = distanceStatistics (covered);
+  report["file"] = options.truth;
+  std::cout << "vertex RMS against the truth " << options.truth << ": " << std::fixed << std::setprecision (3)
+            << report["rms"].get<double> () << " mm (mean " << report["mean"].get<double> () << ", max "
+            << report["max"].get<double> () << "); over the " << report["covered_by_scan"]["count"]
+            << " vertices the scan covers: RMS " << report["covered_by_scan"]["rms"].get<double> () << " mm\n"
+            << std::defaultfloat;
+  return report;
+}
+
+/** Scan points and the fitted model coloured by residual, seen from the fitted face's front-left. */
+void
+saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options, const pcl::PointCloud<pcl::PointNormal>& scan,
+             const TriangleMesh& fitted, const Eigen::VectorXd& residuals, double scale, const Eigen::Matrix4d& pose)
+{
+  viewer.addTargetCloud (scan, "scan", 0, 1.0);
+  viewer.addResidualHeatMap (fitted, residuals, scale);
+  const Eigen::Matrix3d linear = pose.topLeftCorner<3, 3> ();
+  const Eigen::Matrix3d rotation = linear / std::cbrt (linear.determinant ());
+  viewer.resetCamera (rotation * Eigen::Vector3d (0.5, 0.15, 1.0).normalized (), rotation * Eigen::Vector3d::UnitY ());
+  viewer.saveScreenshot (options.screenshot, options.width, options.height);
+}
+
+void
+runRegister (const RegisterOptions& options)
+{
+  registerScanFile (options);
+}
+} // namespace
+
+nlohmann::json
+registerScanFile (const RegisterOptions& options)
+{
+  const auto start = Clock::now ();
+  // Without X the screenshot would fail after the fit: open the offscreen viewer first.
+  std::optional<RegistrationVisualizer> viewer;
+  if (!options.screenshot.empty ())
+    viewer.emplace (RegistrationVisualizer::Display::Offscreen);
+  const auto scan = loadScan (options.scan);
+  const MorphableModel::Ptr model = loadModel (options.model);
+  Icp icp;
+  configureIcp (icp, options, model);
+  icp.setInputTarget (scan);
+  const double load_seconds = secondsSince (start);
+
+  const auto fit_start = Clock::now ();
+  const Progress progress ("registering " + options.scan, options.iterations, options.quiet);
+  if (!options.quiet)
+    showIterations (icp, progress);
+  pcl::PointCloud<pcl::PointNormal> aligned;
+  icp.align (aligned);
+  const IcpReport& icp_report = icp.getRegistrationReport ();
+  progress.finish (static_cast<int> (icp_report.history.size ()));
+  const double fit_seconds = secondsSince (fit_start);
+
+  const auto write_start = Clock::now ();
+  const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
+  const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
+  const double scale = colourScale (residuals, options.colour_max);
+  savePolygonMesh (options.out, toPolygonMesh (fitted, residualColours (residuals, scale)));
+  const double write_seconds = secondsSince (write_start);
+  const Eigen::Matrix4d pose = icp.getFinalTransformation ().cast<double> ();
+
+  nlohmann::json report = {
+      {"units", "mm"},
+      {"scan", {{"file", options.scan}, {"points", scan->size ()}}},
+      {"model", {{"file", options.model}, {"vertices", model->numVertices ()}, {"regions", model->numRegions ()}}},
+      {"settings", settingsJson (options)},
+      {"similarity", similarityJson (pose)},
+      {"initial_similarity", similarityJson (icp_report.initial_transformation)},
+      {"coefficients", coefficientsJson (*model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
+      {"residuals_mm",
+       {{"scan_to_model",
+         {{"correspondences", icp_report.correspondences},
+          {"mean", icp_report.fitness_mean},
+          {"median", icp_report.fitness_median},
+          {"rms", icp_report.fitness_rms}}},
+        {"per_vertex", distanceStatistics (residuals)},
+        {"colour_scale_max", scale}}},
+      {"iterations", iterationsJson (icp_report)},
+      {"termination", {{"reason", toString (icp_report.termination)}, {"message", icp_report.message}}},
+      {"fitted_mesh", options.out}};
+  if (!options.truth.empty ())
+    report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals);
+  double screenshot_seconds = 0.0;
+  if (viewer) {
+    const auto shot_start = Clock::now ();
+    saveOverlay (*viewer, options, *scan, fitted, residuals, scale, pose);
+    screenshot_seconds = secondsSince (shot_start);
+    report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
+  }
+  report["timings_s"] = {{"load", load_seconds},
+                         {"fit", fit_seconds},
+                         {"write_mesh", write_seconds},
+                         {"screenshot", screenshot_seconds},
+                         {"total", secondsSince (start)}};
+  const std::string report_path =
+      options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string () : options.report;
+  writeJsonReport (report_path, report);
+  std::cout << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
+            << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS "
+            << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"
+            << "wrote " << options.out << " (vertex colours: residual, 0-" << scale << " mm), " << report_path
+            << (viewer ? ", " + options.screenshot : std::string ()) << '\n';
+  return report;
+}
+
+void
+addRegistrationOptions (CLI::App* command, RegisterOptions& options)
+{
+  command->add_option ("--width", options.width, "screenshot width (pixels)")->check (CLI::Range (16, 8192))
+      ->capture_default_str ();
+  command->add_option ("--height", options.height, "screenshot height (pixels)")->check (CLI::Range (16, 8192))
+      ->capture_default_str ();
+  command->add_option ("--iterations", options.iterations, "ICP iterations, similarity and shape stages together")
+      ->check (CLI::Range (1, 10000))->capture_default_str ();
+  command->add_option ("--similarity-iterations", options.similarity_iterations,
+                       "at most this many iterations fit the similarity alone before the shape joins")
+      ->check (CLI::Range (1, 10000))->capture_default_str ();
+  command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--components", options.components,
+                       "shape components per region: one count for all, or one per region")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
+                     "point-to-plane residuals along the scan normals (default) or point-to-point");
+  command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")
+      ->check (CLI::IsMember ({"none", "huber", "tukey"}))->capture_default_str ();
+  command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--reject-distance", options.reject_distance,
+                       "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
+      ->check (CLI::PositiveNumber);
+  command->add_option ("--reject-median", options.reject_median,
+                       "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
+      ->check (CLI::PositiveNumber);
+  command->add_flag ("--reject-one-to-one", options.reject_one_to_one,
+                     "keep one correspondence per scan point (CorrespondenceRejectorOneToOne)");
+  command->add_option ("--reject-trimmed", options.reject_trimmed,
+                       "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
+      ->check (CLI::Range (0.01, 1.0));
+}
+
+void
+registerRegisterCommand (CLI::App& app)
+{
+  auto options = std::make_shared<RegisterOptions> ();
+  CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
+  command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj), mm")->required ();
+  command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
+  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
+      ->capture_default_str ();
+  command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
+  command->add_option ("--screenshot", options->screenshot, "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
+  command->add_option ("-l,--landmarks", options->landmarks,
+                       "landmarks on the scan (.pp .json .csv) to start from (Umeyama on >= 3)");
+  command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");
+  command->add_option ("--colour-max", options->colour_max, "residual colour scale maximum (mm, 0 = 95th percentile)")
+      ->check (CLI::NonNegativeNumber);
+  addRegistrationOptions (command, *options);
+  command->add_flag ("-q,--quiet", options->quiet, "no progress output");
+  command->callback ([options] () { runRegister (*options); });
+}
+
+} // namespace tools
+} // namespace morphreg
