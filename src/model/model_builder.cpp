@@ -4,6 +4,9 @@
 #include <morphreg/model/procrustes.h>
 #include <morphreg/model/region_blending.h>
 
+#include <algorithm>
+#include <numeric>
+
 namespace morphreg
 {
 ModelBuilder::ModelBuilder (ModelBuilderSettings settings) : settings_ (settings)
@@ -23,22 +26,24 @@ ModelBuilder::prepareData (const std::vector<TriangleMesh>& meshes, Eigen::Vecto
     throw InvalidInputError ("ModelBuilder: at least two training meshes are needed, got " +
                              std::to_string (meshes.size ()));
   validateMesh (meshes[0], "ModelBuilder training mesh 0");
-  std::vector<Eigen::Matrix3Xd> shapes;
+  const Eigen::Index rows = 3 * meshes[0].numVertices ();
+  centred.resize (rows, static_cast<Eigen::Index> (meshes.size ()));
   for (size_t s = 0; s < meshes.size (); ++s) {
     const std::string name = "ModelBuilder training mesh " + std::to_string (s);
     validateMesh (meshes[s], name);
     requireSameTopology (meshes[0], meshes[s], name);
-    shapes.push_back (meshes[s].vertices);
+    centred.col (static_cast<Eigen::Index> (s)) = Eigen::Map<const Eigen::VectorXd> (meshes[s].vertices.data (), rows);
   }
   if (settings_.align)
-    alignGeneralisedProcrustes (shapes);
-
-  const Eigen::Index rows = 3 * meshes[0].numVertices ();
-  centred.resize (rows, static_cast<Eigen::Index> (shapes.size ()));
-  for (size_t s = 0; s < shapes.size (); ++s)
-    centred.col (s) = Eigen::Map<const Eigen::VectorXd> (shapes[s].data (), rows);
+    alignGeneralisedProcrustes (centred); // the columns in place
   mean = centred.rowwise ().mean ();
   centred.colwise () -= mean;
+  // Identical meshes (after the alignment) leave nothing to learn: say so instead of building an empty basis.
+  const double extent = mean.cwiseAbs ().maxCoeff ();
+  if (!(centred.cwiseAbs ().maxCoeff () > 1e-9 * std::max (extent, 1.0)))
+    throw InvalidInputError ("ModelBuilder: the " + std::to_string (meshes.size ()) +
+                             " training meshes are identical" + (settings_.align ? " after alignment" : "") +
+                             ": there is no shape variation to model");
 }
 
 PcaBasis
@@ -70,17 +75,18 @@ ModelBuilder::build (const std::vector<TriangleMesh>& meshes, const RegionLabels
 
   const MeshTopology topology (meshes[0]);
   const std::vector<BlendedRegion> blended = blendRegions (topology, regions, settings_.blend_rings);
+  std::vector<std::vector<int>> vertex_sets;
+  for (const BlendedRegion& region : blended)
+    vertex_sets.push_back (region.vertices);
+  vertex_sets.emplace_back (static_cast<std::size_t> (meshes[0].numVertices ()));
+  std::iota (vertex_sets.back ().begin (), vertex_sets.back ().end (), 0); // the whole mesh: the global PCA
+  std::vector<PcaBasis> pcas = computeVertexSetPcas (std::move (centred), vertex_sets, settings_.pca_method,
+                                                     settings_.max_components, settings_.explained_variance);
   std::vector<ModelRegion> model_regions;
-  for (size_t j = 0; j < blended.size (); ++j) {
-    const std::vector<int>& vertices = blended[j].vertices;
-    Eigen::MatrixXd local (3 * static_cast<Eigen::Index> (vertices.size ()), centred.cols ());
-    for (size_t r = 0; r < vertices.size (); ++r)
-      local.middleRows<3> (3 * r) = centred.middleRows<3> (3 * static_cast<Eigen::Index> (vertices[r]));
-    PcaBasis pca = truncatedPca (local);
-    model_regions.push_back ({regions.names[j], vertices, blended[j].weights, std::move (pca.basis),
-                              std::move (pca.variances)});
-  }
-  PcaBasis global = truncatedPca (centred);
+  for (size_t j = 0; j < blended.size (); ++j)
+    model_regions.push_back ({regions.names[j], blended[j].vertices, blended[j].weights, std::move (pcas[j].basis),
+                              std::move (pcas[j].variances)});
+  PcaBasis& global = pcas.back ();
   auto model = std::make_shared<MorphableModel> (meshes[0].triangles, std::move (mean), std::move (model_regions));
   model->setGlobalPca (std::move (global.basis), std::move (global.variances));
   model->setMetadata ({{"builder", "morphreg::ModelBuilder"},

@@ -23,6 +23,14 @@ falloff (double distance, double width)
   return 1.0 - t * t * (3.0 - 2.0 * t);
 }
 
+void
+requireBlendWidth (double width)
+{
+  if (!(width >= 0.0) || !std::isfinite (width))
+    throw InvalidInputError ("SegmentedWarp: blend width must be a finite number >= 0 (mm), got " +
+                             std::to_string (width));
+}
+
 std::vector<int>
 verticesWithLabel (const std::vector<int>& labels, int segment)
 {
@@ -45,6 +53,7 @@ SegmentedWarp::SegmentedWarp (std::vector<int> labels, int num_segments) : label
       throw InvalidInputError ("SegmentedWarp: vertex " + std::to_string (v) + " has segment label " +
                                std::to_string (labels_[v]) + ", outside [0, " + std::to_string (num_segments) + ")");
   splines_.resize (static_cast<std::size_t> (num_segments));
+  blend_widths_.assign (static_cast<std::size_t> (num_segments), 0.0);
 }
 
 void
@@ -108,10 +117,29 @@ SegmentedWarp::segmentSpline (int segment) const
 void
 SegmentedWarp::setBlendWidth (double width)
 {
-  if (!(width >= 0.0) || !std::isfinite (width))
-    throw InvalidInputError ("SegmentedWarp: blend width must be a finite number >= 0 (mm), got " +
-                             std::to_string (width));
-  blend_width_ = width;
+  requireBlendWidth (width);
+  std::fill (blend_widths_.begin (), blend_widths_.end (), width);
+}
+
+double
+SegmentedWarp::getBlendWidth () const
+{
+  return *std::max_element (blend_widths_.begin (), blend_widths_.end ());
+}
+
+void
+SegmentedWarp::setSegmentBlendWidth (int segment, double width)
+{
+  requireSegment (segment, "setSegmentBlendWidth");
+  requireBlendWidth (width);
+  blend_widths_[static_cast<std::size_t> (segment)] = width;
+}
+
+double
+SegmentedWarp::getSegmentBlendWidth (int segment) const
+{
+  requireSegment (segment, "getSegmentBlendWidth");
+  return blend_widths_[static_cast<std::size_t> (segment)];
 }
 
 void
@@ -129,19 +157,19 @@ SegmentedWarp::blendWeights (const TriangleMesh& mesh) const
     throw InvalidInputError ("SegmentedWarp: the mesh has " + std::to_string (mesh.numVertices ()) +
                              " vertices but there are " + std::to_string (labels_.size ()) + " segment labels");
   Eigen::MatrixXd weights = Eigen::MatrixXd::Zero (mesh.numVertices (), numSegments ());
-  if (blend_width_ == 0.0) {
-    for (std::size_t v = 0; v < labels_.size (); ++v)
-      weights (static_cast<Eigen::Index> (v), labels_[v]) = 1.0;
+  for (std::size_t v = 0; v < labels_.size (); ++v)
+    weights (static_cast<Eigen::Index> (v), labels_[v]) = 1.0;
+  if (getBlendWidth () == 0.0)
     return weights;
-  }
   const MeshTopology topology (mesh);
   for (int s = 0; s < numSegments (); ++s) {
+    const double width = blend_widths_[static_cast<std::size_t> (s)];
     const std::vector<int> members = verticesWithLabel (labels_, s);
-    if (members.empty ())
+    if (members.empty () || width == 0.0)
       continue;
-    const std::vector<double> distance = topology.geodesicDistances (mesh.vertices, members, blend_width_);
+    const std::vector<double> distance = topology.geodesicDistances (mesh.vertices, members, width);
     for (Eigen::Index v = 0; v < mesh.numVertices (); ++v)
-      weights (v, s) = falloff (distance[static_cast<std::size_t> (v)], blend_width_);
+      weights (v, s) = falloff (distance[static_cast<std::size_t> (v)], width);
   }
   // Every vertex is at distance 0 of its own segment, so each row has a weight of 1 before normalising.
   return weights.array ().colwise () / weights.rowwise ().sum ().array ();

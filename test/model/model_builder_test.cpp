@@ -5,7 +5,11 @@
 #include <morphreg/model/procrustes.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/QR>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
 
 using morphreg::ModelBuilder;
 using morphreg::ModelBuilderSettings;
@@ -183,6 +187,20 @@ TEST (ModelBuilderTest, RejectsMeshesNotInCorrespondence)
   EXPECT_THROW (ModelBuilder ().build (training, labels), morphreg::InvalidInputError);
 }
 
+TEST (ModelBuilderTest, IdenticalMeshesAreReportedNotModelled)
+{
+  const std::vector<TriangleMesh> same (3, meshes ()[0]);
+  for (const bool regional : {false, true}) {
+    try {
+      regional ? ModelBuilder ().build (same, morphreg::test::headRegions ()) : ModelBuilder ().buildGlobal (same);
+      FAIL () << "expected InvalidInputError";
+    }
+    catch (const morphreg::InvalidInputError& e) {
+      EXPECT_NE (std::string (e.what ()).find ("identical"), std::string::npos) << e.what ();
+    }
+  }
+}
+
 TEST (ModelBuilderTest, ProcrustesRemovesRigidMotion)
 {
   std::vector<TriangleMesh> moved = meshes ();
@@ -199,4 +217,83 @@ TEST (ModelBuilderTest, ProcrustesRemovesRigidMotion)
   ASSERT_EQ (a.size (), b.size ());
   EXPECT_LT ((a - b).cwiseAbs ().maxCoeff (), 1e-6 * a[0]);
   EXPECT_GT (unaligned_model->region (0).variances[0], 2.0 * a[0]);
+}
+
+TEST (ModelBuilderTest, VertexSetPcasMatchOneSetAtATime)
+{
+  // 300 vertices, 40 samples with singular values from 1 down to 1e-5 (small components make the Gram route
+  // re-orthonormalise), and overlapping vertex sets listed in scrambled order; the smallest set takes the SVD route.
+  const Eigen::Index vertices = 300, samples = 40;
+  std::mt19937 random (7);
+  std::normal_distribution<double> normal;
+  const auto gaussian = [&] (Eigen::Index rows, Eigen::Index cols) {
+    return Eigen::MatrixXd (Eigen::MatrixXd::NullaryExpr (rows, cols, [&] () { return normal (random); }));
+  };
+  const Eigen::HouseholderQR<Eigen::MatrixXd> left (gaussian (3 * vertices, samples));
+  const Eigen::HouseholderQR<Eigen::MatrixXd> right (gaussian (samples, samples));
+  Eigen::VectorXd sigma (samples);
+  for (Eigen::Index k = 0; k < samples; ++k)
+    sigma[k] = std::pow (1e-5, static_cast<double> (k) / (samples - 1));
+  Eigen::MatrixXd data = left.householderQ () * Eigen::MatrixXd::Identity (3 * vertices, samples) *
+                         sigma.asDiagonal () * Eigen::MatrixXd (right.householderQ ()).transpose ();
+  data.colwise () -= data.rowwise ().mean ().eval ();
+  std::vector<std::vector<int>> sets (4);
+  for (int v = 0; v < vertices; ++v) {
+    if (v < 180)
+      sets[0].push_back (v);
+    if (v >= 150)
+      sets[1].push_back (v);
+    if (v % 7 == 3)
+      sets[2].push_back (v); // 43 vertices: 129 rows < 4 x 40, thin SVD
+    sets[3].push_back (v);
+  }
+  std::shuffle (sets[1].begin (), sets[1].end (), random);
+  const std::vector<morphreg::PcaBasis> together = morphreg::computeVertexSetPcas (data, sets);
+  ASSERT_EQ (together.size (), sets.size ());
+  for (size_t s = 0; s < sets.size (); ++s) {
+    Eigen::MatrixXd rows (3 * static_cast<Eigen::Index> (sets[s].size ()), samples);
+    for (size_t k = 0; k < sets[s].size (); ++k)
+      rows.middleRows<3> (3 * static_cast<Eigen::Index> (k)) = data.middleRows<3> (3 * sets[s][k]);
+    const morphreg::PcaBasis alone = morphreg::computePca (rows);
+    const std::string what = "vertex set " + std::to_string (s);
+    expectOrthonormalSorted (together[s].basis, together[s].variances, what);
+    ASSERT_EQ (together[s].variances.size (), alone.variances.size ()) << what;
+    EXPECT_LT ((together[s].variances - alone.variances).cwiseAbs ().maxCoeff (), 1e-9 * alone.variances[0]) << what;
+    // Same subspace, rows in the set's order: the set's data is reproduced from the basis.
+    const Eigen::MatrixXd& u = together[s].basis;
+    EXPECT_LT ((rows - u * (u.transpose () * rows)).cwiseAbs ().maxCoeff (), 1e-9) << what;
+  }
+}
+
+TEST (ModelBuilderTest, VertexSetPcasRejectBadSets)
+{
+  const Eigen::MatrixXd data = Eigen::MatrixXd::Random (30, 5);
+  EXPECT_THROW (morphreg::computeVertexSetPcas (data, {{0, 1}, {}}), morphreg::InvalidInputError) << "empty set";
+  EXPECT_THROW (morphreg::computeVertexSetPcas (data, {{0, 10}}), morphreg::InvalidInputError) << "vertex 10 of 10";
+  EXPECT_THROW (morphreg::computeVertexSetPcas (data, {{-1, 2}}), morphreg::InvalidInputError);
+  EXPECT_THROW (morphreg::computeVertexSetPcas (data, {{2, 3, 2}}), morphreg::InvalidInputError) << "listed twice";
+  EXPECT_THROW (morphreg::computeVertexSetPcas (Eigen::MatrixXd::Random (31, 5), {{0}}), morphreg::InvalidInputError);
+  EXPECT_THROW (morphreg::computeVertexSetPcas (Eigen::MatrixXd::Random (30, 1), {{0}}), morphreg::InvalidInputError);
+}
+
+TEST (ModelBuilderTest, ProcrustesOnDataMatrixColumnsMatchesShapeList)
+{
+  std::vector<Eigen::Matrix3Xd> shapes;
+  Eigen::MatrixXd columns (3 * meshes ()[0].numVertices (), 5);
+  for (Eigen::Index s = 0; s < columns.cols (); ++s) {
+    const Eigen::AngleAxisd rotation (0.1 * static_cast<double> (s), Eigen::Vector3d (0, 1, 1).normalized ());
+    shapes.push_back ((rotation.toRotationMatrix () * meshes ()[s].vertices).colwise () + Eigen::Vector3d (s, 0, 1));
+    columns.col (s) = Eigen::Map<const Eigen::VectorXd> (shapes.back ().data (), columns.rows ());
+  }
+  morphreg::alignGeneralisedProcrustes (shapes);
+  morphreg::alignGeneralisedProcrustes (columns);
+  for (Eigen::Index s = 0; s < columns.cols (); ++s)
+    EXPECT_LT ((Eigen::Map<const Eigen::VectorXd> (shapes[s].data (), columns.rows ()) - columns.col (s))
+                   .cwiseAbs ()
+                   .maxCoeff (),
+               1e-12);
+  Eigen::MatrixXd bad (31, 3);
+  EXPECT_THROW (morphreg::alignGeneralisedProcrustes (bad), morphreg::InvalidInputError);
+  Eigen::MatrixXd single (30, 1);
+  EXPECT_THROW (morphreg::alignGeneralisedProcrustes (single), morphreg::InvalidInputError);
 }

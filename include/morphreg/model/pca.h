@@ -5,6 +5,8 @@
  */
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace morphreg
 {
 /** \brief How to compute the PCA of a 3N x M data matrix. */
@@ -30,6 +32,19 @@ struct PcaBasis
 PcaBasis
 computePca (const Eigen::MatrixXd& centred, PcaMethod method = PcaMethod::automatic, int max_components = 0,
             double explained_fraction = 1.0);
+
+/** \brief PCA of the rows of several vertex sets of one data matrix at once (the regions of a model, which may
+ *  overlap, and the whole mesh): \a centred has 3 rows (x, y, z) per vertex and one centred sample per column; each
+ *  set lists vertex indices, and its basis has 3 rows per listed vertex in that order. Same method choice,
+ *  truncation and results as computePca on each set's rows, but the work is shared: the rows are grouped into blocks
+ *  of vertices that belong to the same sets, each block's Gram matrix is formed once and summed into the Gram matrix
+ *  of every set that contains it. \a centred is taken by value and reordered in place (move it in to save memory).
+ *  Throws InvalidInputError as computePca does, and for an empty set, a vertex out of range or listed twice.
+ */
+std::vector<PcaBasis>
+computeVertexSetPcas (Eigen::MatrixXd centred, const std::vector<std::vector<int>>& vertex_sets,
+                      PcaMethod method = PcaMethod::automatic, int max_components = 0,
+                      double explained_fraction = 1.0);
 
 /** \brief The number of leading components to keep: at most \a max_components (<= 0: no limit) and the fewest
  *  whose cumulative variance reaches \a explained_fraction (in (0, 1]) of the total.

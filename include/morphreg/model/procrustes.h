@@ -16,4 +16,11 @@ void
 alignGeneralisedProcrustes (std::vector<Eigen::Matrix3Xd>& shapes, int max_iterations = 50,
                             double tolerance = 1e-9);
 
+/** \brief As above for shapes stored as the columns of \a shapes (3N x M, x y z interleaved per point), aligned in
+ *  place: the layout of a PCA data matrix, which then needs no copy. Throws InvalidInputError for fewer than two
+ *  columns or a row count that is not a multiple of 3.
+ */
+void
+alignGeneralisedProcrustes (Eigen::MatrixXd& shapes, int max_iterations = 50, double tolerance = 1e-9);
+
 } // namespace morphreg

@@ -25,6 +25,13 @@ enum class RobustLoss
   tukey  ///< weight (1 - (d / c)^2)^2 inside c, 0 beyond
 };
 
+/** \brief One phase of the shape stage: the components fitted and the smoothness weight lambda_1 used. */
+struct ShapePhase
+{
+  ComponentSelection components; ///< per region at most the counts of MorphableICP::getComponentSelection()
+  double smoothness_weight = 1.0; ///< lambda_1 of this phase (>= 0)
+};
+
 /** \brief Where the iterations start when align() is given the identity guess. */
 enum class IcpInitialisation
 {
@@ -35,7 +42,10 @@ enum class IcpInitialisation
 };
 
 /** \brief ICP with shape parameters: fits s R (mu_i + M_i m) + t to a target cloud by Gauss-Newton over
- *  (log s, rotation as an exponential-map update, t, m), first similarity-only to convergence, then with shape.
+ *  (log s, rotation as an exponential-map update, t, m), first similarity-only to convergence, then with shape in
+ *  the phases of setShapeSchedule (default: lambda_1 = 1, then a refinement with lambda_1 = 0.1). One update moves
+ *  no shape coefficient by more than 3 prior standard deviations (a trust region against the first, still sliding
+ *  correspondences).
  *
  *  It is a pcl::Registration whose source is the model instance (as PointTarget points: PCL 1.13's
  *  Registration and CorrespondenceEstimation do not compile for different source and target point types), so the base settings work as for
@@ -104,11 +114,41 @@ public:
     return selection_;
   }
 
-  /** \brief lambda_1: weight of the smoothness prior Gamma across overlapping regions (>= 0). */
+  /** \brief lambda_1: weight of the smoothness prior Gamma across overlapping regions (>= 0) in the first
+   *  phase of the default shape schedule (default 1).
+   */
   void
   setSmoothnessWeight (double lambda1);
 
-  /** \brief lambda_2 and Lambda: weight and kind of the shape regulariser (>= 0; a huge value freezes the shape). */
+  /** \brief lambda_1 of the default schedule's final refinement phase (>= 0; default 0.1). A strong Gamma first
+   *  keeps the regions consistent while the correspondences settle; the weak one then lets each region fit its
+   *  own data (region coefficients need not agree exactly in the overlaps). Equal to setSmoothnessWeight's value:
+   *  a single phase.
+   */
+  void
+  setRefinementSmoothnessWeight (double lambda1);
+
+  /** \brief Runs the shape stage as these phases in order, each to convergence (coarse-to-fine components,
+   *  changing lambda_1); coefficients carry over between phases. Every phase's components must fit within
+   *  getComponentSelection() (checked in align()). Empty (the default): the selection with setSmoothnessWeight,
+   *  then with setRefinementSmoothnessWeight.
+   */
+  void
+  setShapeSchedule (std::vector<ShapePhase> phases);
+
+  const std::vector<ShapePhase>&
+  getShapeSchedule () const
+  {
+    return schedule_;
+  }
+
+  /** \brief The phases align() runs: setShapeSchedule's, or the default two (see setShapeSchedule). */
+  std::vector<ShapePhase>
+  effectiveShapeSchedule () const;
+
+  /** \brief lambda_2 and Lambda: weight and kind of the shape regulariser (>= 0, default 3 with inverse standard
+   *  deviations; a huge value freezes the shape).
+   */
   void
   setShapePriorWeight (double lambda2, ShapePrior prior = ShapePrior::inverse_std_dev);
 
@@ -137,7 +177,7 @@ public:
    *  invalid ones) normals estimated from the k-neighbourhood of setRejectTargetBoundary.
    */
   void
-  setPointToPlane (bool enabled, double tangential_weight = 0.1);
+  setPointToPlane (bool enabled, double tangential_weight = 0.02);
 
   /** \brief IRLS weights on the residual distances (default Tukey, automatic width); \a scale (mm) is the kernel
    *  width c, or <= 0 for c from the
@@ -147,7 +187,8 @@ public:
   setRobustLoss (RobustLoss loss, double scale = 0.0);
 
   /** \brief Reject correspondences whose target point lies on the target's boundary (hole borders, isolated
-   *  outliers); detected once per target with pcl::BoundaryEstimation over \a neighbours neighbours. On by default.
+   *  outliers): the largest angular gap between a point's \a neighbours nearest neighbours, in their plane, exceeds
+   *  90 degrees. Computed lazily, once per target point when it first becomes a correspondence. On by default.
    */
   void
   setRejectTargetBoundary (bool enabled, int neighbours = 20);
@@ -160,8 +201,9 @@ public:
   setTargetSmoothing (bool enabled);
 
   /** \brief Stop and revert to the best state when a coefficient exceeds \a max_sigma prior standard deviations
-   *  (<= 0: never; default 8) or the cost per row stayed above 1.05 times the stage's best for
-   *  \a rising_iterations iterations in a row (default 3).
+   *  (<= 0: never; default 8) or, in a shape phase, the cost per row stayed above 1.05 times the phase's best for
+   *  \a rising_iterations iterations in a row (default 3). The similarity stage is not checked for a rising cost:
+   *  while its correspondences settle, the IRLS weights change and its cost per row may rise on a good path.
    */
   void
   setDivergenceGuard (double max_sigma, int rising_iterations = 3);
@@ -247,7 +289,7 @@ private:
 
   /** Finds, rejects and weighs the correspondences of the model at \a state. */
   Evaluation
-  evaluate (const State& state) const;
+  evaluate (const State& state);
 
   /** Target point, vertex and 3 x 3 weight of row \a c: a kept correspondence, then the landmarks. */
   void
@@ -258,14 +300,21 @@ private:
   double
   objective (const State& state, const Evaluation& ev, const Problem& problem) const;
 
-  /** One Gauss-Newton step from \a state with backtracking on the objective; false if the system could not be
-   *  solved.
+  /** One Gauss-Newton step from \a state with backtracking on the objective (\a current at \a state); false if the
+   *  system could not be solved.
    */
   bool
-  step (State& state, const Evaluation& evaluation, const Problem& problem) const;
+  step (State& state, const Evaluation& evaluation, const Problem& problem, double current) const;
 
+  /** Sizes the per-target caches (smoothed points, normals, boundary flags); filled lazily. */
   void
   prepareTarget ();
+
+  /** Fills the caches for the target points of \a correspondences not seen yet on this target: only points that
+   *  become correspondences pay for their neighbourhood (k-NN, plane fit, boundary test).
+   */
+  void
+  prepareTargetPoints (const pcl::Correspondences& correspondences);
 
   void
   finish (const State& state, PointCloudSource& output);
@@ -273,13 +322,15 @@ private:
   MorphableModel::ConstPtr model_;
   ComponentSelection selection_;
   double lambda1_ = 1.0;
-  double lambda2_ = 1.0;
+  double refinement_lambda1_ = 0.1;
+  std::vector<ShapePhase> schedule_;
+  double lambda2_ = 3.0;
   ShapePrior prior_ = ShapePrior::inverse_std_dev;
   bool shape_stage_ = true;
   bool estimate_scale_ = true;
   int similarity_iterations_ = 20;
   bool point_to_plane_ = false;
-  double tangential_weight_ = 0.1;
+  double tangential_weight_ = 0.02;
   RobustLoss robust_loss_ = RobustLoss::tukey;
   double robust_scale_ = 0.0;
   bool reject_boundary_ = true;
@@ -293,9 +344,10 @@ private:
   bool smooth_target_ = true;
   bool target_prepared_ = false;
   Eigen::Matrix3Xd target_points_;
-  std::vector<bool> target_boundary_;
+  std::vector<char> target_boundary_;
   Eigen::Matrix3Xd target_normals_;
-  std::vector<bool> target_has_normal_;
+  std::vector<char> target_has_normal_;
+  std::vector<char> target_point_ready_;
 
   Eigen::VectorXd coefficients_;
   Eigen::Matrix3Xd fitted_vertices_;

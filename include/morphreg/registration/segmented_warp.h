@@ -17,12 +17,16 @@ namespace morphreg
  *  and its own 3D thin plate spline. The warped mesh keeps its topology. Near a border a vertex takes a weighted
  *  mix of the warps of the segments within the blend width (geodesic, over the mesh being warped); weights fall
  *  smoothly from 1 at a segment to 0 at the blend width from it and are normalised per vertex. A blend width of 0
- *  is the hard segmentation of the seed paper (each vertex follows its own segment only).
+ *  is the hard segmentation of the seed paper (each vertex follows its own segment only). The width can differ per
+ *  segment (how far that segment's warp reaches into its neighbours): a segment that barely moves (the torso of a
+ *  body being seated) can reach far into one that bends (the thigh, whose true deformation spreads over a wide zone
+ *  below the hip), while the bending segment's warp, extrapolated beyond its landmarks, fades out quickly.
  *
  *  \code
  *  morphreg::SegmentedWarp warp (labels, 4);
  *  warp.setLandmarks (standing, joints_standing, joints_seated, {90.0, 90.0, 90.0, 90.0});   // overlap per segment
  *  warp.setBlendWidth (100.0);
+ *  warp.setSegmentBlendWidth (2, 400.0);                                // the upper body reaches into the legs
  *  morphreg::TriangleMesh seated = warp.warp (standing);
  *  \endcode
  */
@@ -60,15 +64,22 @@ public:
   const Spline&
   segmentSpline (int segment) const;
 
-  /** \brief Blend width in mm along the mesh (>= 0; 0 = hard segmentation). */
+  /** \brief Blend width in mm along the mesh (>= 0; 0 = hard segmentation), for every segment. */
   void
   setBlendWidth (double width);
 
+  /** \brief The widest blend width of any segment (mm). */
   double
-  getBlendWidth () const
-  {
-    return blend_width_;
-  }
+  getBlendWidth () const;
+
+  /** \brief How far (mm along the mesh, >= 0) \a segment's warp reaches into the neighbouring segments; 0: not at
+   *  all. Overrides setBlendWidth for this segment until setBlendWidth is called again.
+   */
+  void
+  setSegmentBlendWidth (int segment, double width);
+
+  double
+  getSegmentBlendWidth (int segment) const;
 
   /** \brief Regularisation lambda of every segment's spline (see ThinPlateSpline::setRegularization); takes
    *  effect for landmarks set afterwards.
@@ -96,7 +107,7 @@ private:
 
   std::vector<int> labels_;
   std::vector<std::unique_ptr<Spline>> splines_;
-  double blend_width_ = 0.0;
+  std::vector<double> blend_widths_; ///< per segment (mm)
   double regularization_ = 0.0;
 };
 

@@ -29,6 +29,7 @@ struct MorphableICP<PointTarget, Scalar>::State
   double log_scale = 0.0;
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity ();
   Eigen::Vector3d translation = Eigen::Vector3d::Zero ();
+  ComponentSelection selection; ///< the components \a coefficients stacks
   Eigen::VectorXd coefficients;
   Eigen::Matrix3Xd model_vertices;
 
@@ -66,6 +67,8 @@ template <typename PointTarget, typename Scalar>
 struct MorphableICP<PointTarget, Scalar>::Problem
 {
   bool shape = false;
+  ComponentSelection selection;     ///< the components fitted (shape stage)
+  Eigen::VectorXd sigma;            ///< their prior standard deviations
   Eigen::MatrixXd prior;            ///< lambda_1^2 Gamma^T Gamma + lambda_2^2 Lambda^2 (P x P)
   std::vector<int> landmark_vertices;
   Eigen::Matrix3Xd landmark_points;
@@ -73,6 +76,9 @@ struct MorphableICP<PointTarget, Scalar>::Problem
 
 namespace detail
 {
+/** Largest change of one shape coefficient per Gauss-Newton update, in prior standard deviations. */
+constexpr double kMaxShapeStep = 3.0;
+
 inline Eigen::Matrix3d
 skew (const Eigen::Vector3d& v)
 {
@@ -89,6 +95,27 @@ medianOf (std::vector<double> values)
   const auto mid = values.begin () + static_cast<long> (values.size () / 2);
   std::nth_element (values.begin (), mid, values.end ());
   return *mid;
+}
+
+/** \a weight if it is finite and >= 0; else InvalidInputError naming \a what. */
+inline double
+requireWeight (double weight, const std::string& what)
+{
+  if (!(weight >= 0.0) || !std::isfinite (weight))
+    throw InvalidInputError (what + " must be finite and >= 0, got " + std::to_string (weight));
+  return weight;
+}
+
+/** \a coefficients of \a from restacked for \a to: shared leading components kept, new ones zero. */
+inline Eigen::VectorXd
+restack (const Eigen::VectorXd& coefficients, const ComponentSelection& from, const ComponentSelection& to)
+{
+  Eigen::VectorXd result = Eigen::VectorXd::Zero (to.total ());
+  for (int r = 0; r < to.numRegions () && r < from.numRegions (); ++r) {
+    const int shared = std::min (from.count (r), to.count (r));
+    result.segment (to.offset (r), shared) = coefficients.segment (from.offset (r), shared);
+  }
+  return result;
 }
 
 /** IRLS weight of a residual distance \a d for kernel width \a c. */
@@ -171,18 +198,43 @@ template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::setSmoothnessWeight (double lambda1)
 {
-  if (!(lambda1 >= 0.0) || !std::isfinite (lambda1))
-    throw InvalidInputError ("MorphableICP::setSmoothnessWeight: lambda_1 must be finite and >= 0");
-  lambda1_ = lambda1;
+  lambda1_ = detail::requireWeight (lambda1, "MorphableICP::setSmoothnessWeight: lambda_1");
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setRefinementSmoothnessWeight (double lambda1)
+{
+  refinement_lambda1_ = detail::requireWeight (lambda1, "MorphableICP::setRefinementSmoothnessWeight: lambda_1");
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setShapeSchedule (std::vector<ShapePhase> phases)
+{
+  for (size_t k = 0; k < phases.size (); ++k)
+    detail::requireWeight (phases[k].smoothness_weight,
+                           "MorphableICP::setShapeSchedule: lambda_1 of phase " + std::to_string (k));
+  schedule_ = std::move (phases);
+}
+
+template <typename PointTarget, typename Scalar>
+std::vector<ShapePhase>
+MorphableICP<PointTarget, Scalar>::effectiveShapeSchedule () const
+{
+  if (!schedule_.empty ())
+    return schedule_;
+  std::vector<ShapePhase> phases{{selection_, lambda1_}};
+  if (refinement_lambda1_ != lambda1_)
+    phases.push_back ({selection_, refinement_lambda1_});
+  return phases;
 }
 
 template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::setShapePriorWeight (double lambda2, ShapePrior prior)
 {
-  if (!(lambda2 >= 0.0) || !std::isfinite (lambda2))
-    throw InvalidInputError ("MorphableICP::setShapePriorWeight: lambda_2 must be finite and >= 0");
-  lambda2_ = lambda2;
+  lambda2_ = detail::requireWeight (lambda2, "MorphableICP::setShapePriorWeight: lambda_2");
   prior_ = prior;
 }
 
@@ -250,8 +302,7 @@ template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::setTargetLandmarks (const LandmarkPositions& landmarks, double weight)
 {
-  if (!(weight >= 0.0) || !std::isfinite (weight))
-    throw InvalidInputError ("MorphableICP::setTargetLandmarks: the weight must be finite and >= 0");
+  detail::requireWeight (weight, "MorphableICP::setTargetLandmarks: the landmark weight");
   for (const auto& landmark : landmarks) {
     if (!landmark.second.allFinite ())
       throw InvalidInputError ("MorphableICP::setTargetLandmarks: landmark '" + landmark.first +
@@ -285,6 +336,15 @@ MorphableICP<PointTarget, Scalar>::validateInputs () const
   requireFiniteNonEmpty (*this->target_, "MorphableICP target");
   for (const auto& landmark : landmarks_)
     model_->landmarkVertex (landmark.first);
+  for (size_t k = 0; k < schedule_.size (); ++k) {
+    const ComponentSelection& phase = schedule_[k].components;
+    model_->requireCompatible (phase, nullptr, "MorphableICP shape schedule");
+    for (int r = 0; r < phase.numRegions (); ++r)
+      if (phase.count (r) > selection_.count (r))
+        throw InvalidInputError ("MorphableICP: shape phase " + std::to_string (k) + " fits " +
+                                 std::to_string (phase.count (r)) + " components of region " + std::to_string (r) +
+                                 ", more than the component selection's " + std::to_string (selection_.count (r)));
+  }
 }
 
 template <typename PointTarget, typename Scalar>
@@ -337,16 +397,32 @@ template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::prepareTarget ()
 {
-  const PointCloudTarget& target = *this->target_;
-  const auto n = static_cast<Eigen::Index> (target.size ());
+  const auto n = static_cast<Eigen::Index> (this->target_->size ());
   target_normals_.setZero (3, n);
   target_points_.resize (3, n);
   target_has_normal_.assign (n, false);
   target_boundary_.assign (n, false);
-  const int k = std::min<int> (boundary_neighbours_, static_cast<int> (n));
+  target_point_ready_.assign (n, false);
+  target_prepared_ = true;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::prepareTargetPoints (const pcl::Correspondences& correspondences)
+{
+  std::vector<Eigen::Index> pending;
+  for (const pcl::Correspondence& c : correspondences)
+    if (!target_point_ready_[c.index_match]) {
+      target_point_ready_[c.index_match] = true;
+      pending.push_back (c.index_match);
+    }
+  const PointCloudTarget& target = *this->target_;
+  const int k = std::min<int> (boundary_neighbours_, static_cast<int> (target.size ()));
   const auto& tree = this->tree_;
-#pragma omp parallel for schedule(dynamic, 256)
-  for (Eigen::Index i = 0; i < n; ++i) {
+  const auto count = static_cast<long> (pending.size ());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long c = 0; c < count; ++c) {
+    const Eigen::Index i = pending[c];
     pcl::Indices neighbours;
     std::vector<float> distances;
     tree->nearestKSearch (target[i], k, neighbours, distances);
@@ -368,17 +444,15 @@ MorphableICP<PointTarget, Scalar>::prepareTarget ()
       normal = plane_normal;
     normal.normalize ();
     target_normals_.col (i) = normal;
-    target_has_normal_[i] = normal.allFinite ();
-    target_boundary_[i] = !target_has_normal_[i] ||
-                          detail::isBoundaryPoint (target[i].getVector3fMap ().template cast<double> (), normal,
-                                                   points);
+    const bool has_normal = normal.allFinite ();
+    target_boundary_[i] = !has_normal || detail::isBoundaryPoint (point, normal, points);
+    target_has_normal_[i] = has_normal;
   }
-  target_prepared_ = true;
 }
 
 template <typename PointTarget, typename Scalar>
 typename MorphableICP<PointTarget, Scalar>::Evaluation
-MorphableICP<PointTarget, Scalar>::evaluate (const State& state) const
+MorphableICP<PointTarget, Scalar>::evaluate (const State& state)
 {
   Evaluation ev;
   ev.transformed = state.transformed ();
@@ -411,6 +485,7 @@ MorphableICP<PointTarget, Scalar>::evaluate (const State& state) const
   pcl::CorrespondencesPtr current (new pcl::Correspondences);
   estimation.determineCorrespondences (*current, this->corr_dist_threshold_);
   ev.found = static_cast<int> (current->size ());
+  prepareTargetPoints (*current);
 
   if (reject_boundary_) {
     pcl::CorrespondencesPtr inside (new pcl::Correspondences);
@@ -484,7 +559,7 @@ MorphableICP<PointTarget, Scalar>::objective (const State& state, const Evaluati
   const auto rows = static_cast<long> (ev.kept.size () + problem.landmark_vertices.size ());
   const Eigen::Matrix3d sr = std::exp (state.log_scale) * state.rotation;
   double sum = 0.0;
-#pragma omp parallel for reduction(+ : sum) schedule(static)
+  // Serial: a few microseconds per thousand rows, less than an OpenMP fork-join costs on a busy machine.
   for (long c = 0; c < rows; ++c) {
     int vertex;
     Eigen::Vector3d q;
@@ -500,17 +575,19 @@ MorphableICP<PointTarget, Scalar>::objective (const State& state, const Evaluati
 
 template <typename PointTarget, typename Scalar>
 bool
-MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, const Problem& problem) const
+MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, const Problem& problem,
+                                         double current) const
 {
-  const int p = problem.shape ? selection_.total () : 0;
+  const ComponentSelection& selection = problem.selection;
+  const int p = problem.shape ? selection.total () : 0;
   const int dim = 7 + p;
   const double s = std::exp (state.log_scale);
   const Eigen::Matrix3d sr = s * state.rotation;
   const auto kept = static_cast<long> (ev.kept.size ());
   const auto landmarks = static_cast<long> (problem.landmark_vertices.size ());
   int max_columns = 7;
-  for (int j = 0; j < selection_.numRegions (); ++j)
-    max_columns += problem.shape ? selection_.count (j) : 0;
+  for (int j = 0; j < selection.numRegions (); ++j)
+    max_columns += problem.shape ? selection.count (j) : 0;
 
   Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero (dim, dim);
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero (dim);
@@ -538,12 +615,12 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
       int k = 7;
       if (problem.shape)
         for (const RegionEntry& e : model_->vertexEntries (vertex)) {
-          const int count = selection_.count (e.region);
+          const int count = selection.count (e.region);
           if (count == 0)
             continue;
           jacobian.middleCols (k, count).noalias () = (e.weight * sr) * model_->regionRows (e.region, e.row, count);
           for (int a = 0; a < count; ++a)
-            columns[k + a] = 7 + selection_.offset (e.region) + a;
+            columns[k + a] = 7 + selection.offset (e.region) + a;
           k += count;
         }
       const auto j = jacobian.leftCols (k);
@@ -574,12 +651,18 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
   }
   hessian.diagonal ().array () += 1e-12 * std::max (1.0, hessian.diagonal ().maxCoeff ());
   const Eigen::LDLT<Eigen::MatrixXd> solver (hessian);
-  const Eigen::VectorXd delta = solver.solve (gradient);
+  Eigen::VectorXd delta = solver.solve (gradient);
   if (solver.info () != Eigen::Success || !delta.allFinite ())
     return false;
+  // Trust region: no coefficient moves more than kMaxShapeStep prior standard deviations in one update, so a step
+  // taken on the first, still sliding correspondences cannot throw the shape far outside the prior.
+  if (problem.shape && p > 0) {
+    const double largest = delta.tail (p).cwiseQuotient (problem.sigma).cwiseAbs ().maxCoeff ();
+    if (largest > detail::kMaxShapeStep)
+      delta *= detail::kMaxShapeStep / largest;
+  }
 
-  // Backtracking: halve the step until the objective (with these correspondences) decreases.
-  const double current = objective (state, ev, problem);
+  // Backtracking: halve the step until the objective (with these correspondences) decreases below \a current.
   for (double alpha = 1.0; alpha > 1e-2; alpha *= 0.5) {
     State candidate = state;
     const Eigen::VectorXd d = alpha * delta;
@@ -592,7 +675,7 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
     candidate.translation += d.segment<3> (4);
     if (problem.shape) {
       candidate.coefficients += d.tail (p);
-      candidate.model_vertices = model_->generate (candidate.coefficients, selection_);
+      candidate.model_vertices = model_->generate (candidate.coefficients, selection);
     }
     if (objective (candidate, ev, problem) <= current) {
       state = std::move (candidate);
@@ -615,12 +698,15 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   estimation.setSearchMethodTarget (this->tree_, true);
   if (estimation.requiresTargetNormals ())
     throw InvalidInputError ("MorphableICP: correspondence estimations that need target normals are not supported");
-  pcl::PCLPointCloud2::Ptr target_blob (new pcl::PCLPointCloud2);
-  pcl::toPCLPointCloud2 (*this->target_, *target_blob);
+  pcl::PCLPointCloud2::Ptr target_blob;
   for (const auto& rejector : this->correspondence_rejectors_) {
     if (rejector->requiresTargetNormals () && !pcl::traits::has_normal_v<PointTarget>)
       throw InvalidInputError ("MorphableICP: rejector " + rejector->getClassName () +
                                " needs target normals, but the target point type has none");
+    if (!target_blob && (rejector->requiresTargetPoints () || rejector->requiresTargetNormals ())) {
+      target_blob.reset (new pcl::PCLPointCloud2);
+      pcl::toPCLPointCloud2 (*this->target_, *target_blob);
+    }
     if (rejector->requiresTargetPoints ())
       rejector->setTargetPoints (target_blob);
     if (rejector->requiresTargetNormals ())
@@ -638,8 +724,11 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   state.log_scale = estimate_scale_ ? std::log (std::cbrt (a.determinant ())) : 0.0;
   state.rotation = svd.matrixU () * svd.matrixV ().transpose ();
   state.translation = initial.topRightCorner<3, 1> ();
-  state.coefficients = Eigen::VectorXd::Zero (selection_.total ());
-  state.model_vertices = model_->generate (state.coefficients, selection_);
+  const bool with_shape = shape_stage_ && selection_.total () > 0;
+  const std::vector<ShapePhase> phases = with_shape ? effectiveShapeSchedule () : std::vector<ShapePhase> ();
+  state.selection = phases.empty () ? selection_ : phases.front ().components;
+  state.coefficients = Eigen::VectorXd::Zero (state.selection.total ());
+  state.model_vertices = model_->generate (state.coefficients, state.selection);
 
   Problem problem;
   for (const auto& landmark : landmarks_)
@@ -648,10 +737,6 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   int column = 0;
   for (const auto& landmark : landmarks_)
     problem.landmark_points.col (column++) = landmark.second;
-  const int p = selection_.total ();
-  const Eigen::VectorXd sigma = model_->variances (selection_).cwiseSqrt ();
-
-  const bool with_shape = shape_stage_ && p > 0;
   const double motion_epsilon = this->transformation_epsilon_ > 0.0 ? this->transformation_epsilon_ : 1e-4;
   const double fitness_epsilon = this->euclidean_fitness_epsilon_;
   State best = state;
@@ -659,20 +744,32 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   this->nr_iterations_ = 0;
   bool diverged = false;
 
-  for (const IcpStage stage : {IcpStage::similarity, IcpStage::shape}) {
-    if (stage == IcpStage::shape && !with_shape)
-      break;
-    problem.shape = stage == IcpStage::shape;
+  // The similarity stage, then each shape phase to convergence; a phase's budget is its share of what is left.
+  const int runs = 1 + static_cast<int> (phases.size ());
+  for (int run = 0; run < runs; ++run) {
+    problem.shape = run > 0;
+    const IcpStage stage = problem.shape ? IcpStage::shape : IcpStage::similarity;
     if (problem.shape) {
-      const MorphableModel::RowMatrix gamma = model_->gammaMatrix (selection_);
-      const Eigen::VectorXd lambda = model_->lambdaDiagonal (selection_, prior_);
-      problem.prior = lambda1_ * lambda1_ * (gamma.transpose () * gamma);
+      const ShapePhase& phase = phases[run - 1];
+      state.coefficients = detail::restack (state.coefficients, state.selection, phase.components);
+      state.selection = phase.components;
+      state.model_vertices = model_->generate (state.coefficients, state.selection);
+      problem.selection = phase.components;
+      const MorphableModel::RowMatrix gamma = model_->gammaMatrix (phase.components);
+      const Eigen::VectorXd lambda = model_->lambdaDiagonal (phase.components, prior_);
+      problem.prior = phase.smoothness_weight * phase.smoothness_weight * (gamma.transpose () * gamma);
       problem.prior.diagonal () += lambda2_ * lambda2_ * lambda.cwiseAbs2 ();
+      problem.sigma = model_->variances (phase.components).cwiseSqrt ();
     }
-    const int budget = stage == IcpStage::similarity && with_shape
-                           ? std::min (similarity_iterations_, std::max (1, this->max_iterations_ / 2))
-                           : this->max_iterations_ - this->nr_iterations_;
-    const int unknowns = (estimate_scale_ ? 7 : 6) + (problem.shape ? p : 0);
+    const int remaining = this->max_iterations_ - this->nr_iterations_;
+    if (remaining <= 0)
+      break;
+    const int budget = !problem.shape ? (with_shape ? std::min (similarity_iterations_,
+                                                                std::max (1, this->max_iterations_ / 2))
+                                                    : remaining)
+                                      : std::max (1, remaining / (runs - run));
+    const int p = problem.shape ? problem.selection.total () : 0;
+    const int unknowns = (estimate_scale_ ? 7 : 6) + p;
     double previous_error = std::numeric_limits<double>::infinity ();
     int rising = 0;
     best = state;
@@ -696,20 +793,21 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
         }
         this->update_visualizer_ (*ev.cloud, source_indices, *this->target_, target_indices);
       }
-      const double cost = objective (state, ev, problem) / rows;
+      const double total_cost = objective (state, ev, problem);
+      const double cost = total_cost / rows;
       if (cost < best_cost) {
         best = state;
         best_cost = cost;
         rising = 0;
       }
-      else if (cost > 1.05 * best_cost && ++rising >= rising_iterations_) {
+      else if (problem.shape && cost > 1.05 * best_cost && ++rising >= rising_iterations_) {
         diverged = true;
         report_.message = "the cost rose " + std::to_string (rising) + " times in a row above the best";
       }
       if (diverged)
         break;
       const Eigen::Matrix3Xd before = ev.transformed;
-      if (!step (state, ev, problem)) {
+      if (!step (state, ev, problem, total_cost)) {
         diverged = true;
         report_.message = "the normal equations could not be solved";
         break;
@@ -720,7 +818,7 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       ++this->nr_iterations_;
       (problem.shape ? report_.shape_iterations : report_.similarity_iterations) += 1;
       if (problem.shape && max_sigma_ > 0.0 && p > 0 &&
-          (state.coefficients.cwiseAbs ().array () > max_sigma_ * sigma.array () + 1e-9).any ()) {
+          (state.coefficients.cwiseAbs ().array () > max_sigma_ * problem.sigma.array () + 1e-9).any ()) {
         diverged = true;
         report_.message = "a shape coefficient left the prior (more than " + std::to_string (max_sigma_) +
                           " standard deviations)";
@@ -766,7 +864,7 @@ template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::finish (const State& state, PointCloudSource& output)
 {
-  coefficients_ = state.coefficients;
+  coefficients_ = detail::restack (state.coefficients, state.selection, selection_);
   fitted_vertices_ = state.transformed ();
   const Eigen::Matrix3Xd normals = vertexNormals (TriangleMesh{fitted_vertices_, model_->triangles ()});
   output.resize (fitted_vertices_.cols ());
