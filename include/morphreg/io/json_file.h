@@ -1,6 +1,6 @@
 #pragma once
 /** \file json_file.h
- *  \brief Reading a JSON file with errors that name it (nlohmann-json; include it only where that library is found).
+ *  \brief Reading a JSON file with errors that name it (nlohmann-json, a public dependency of the package).
  */
 #include <nlohmann/json.hpp>
 
