@@ -12,6 +12,8 @@
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/surface_distance.h>
 
+#include <pcl/registration/correspondence_rejection_one_to_one.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -49,7 +51,21 @@ targetCloud (const TriangleMesh& mesh, const std::vector<bool>& excluded)
   return cloud;
 }
 
-/** Registers the ICT model (first 30 components, point-to-plane) to \a target from \a landmarks; returns the fit. */
+/** Registers the ICT model (first 30 components, point-to-plane) to \a target from \a landmarks; returns the fit.
+ *  Settings for a clean real surface, as a user would pick them (the library defaults are tuned on noisy synthetic
+ *  scans with outliers); in brackets the fsaverage median / 95th percentile and the MediaPipe median, each step
+ *  added to the previous ones, from the defaults' 0.996 / 3.42 and 0.373 mm:
+ *  - area weighting: ICT's vertices are dense on the face and sparse on the skull, so unweighted correspondences
+ *    fit the face and leave the scalp loose, while the evaluation is uniform by target area (0.714 / 2.48, 0.325);
+ *  - a one-to-one rejector: model vertices beyond the target's extent (the neck below fsaverage's cap, the back of
+ *    the head behind MediaPipe's face) otherwise pile onto the same target points near its edge (0.672 / 2.31,
+ *    0.322);
+ *  - landmark weight 1 (one correspondence each): the target landmarks are not exactly ICT's points (fsaverage's
+ *    LPA/RPA are not the tragus vertices) (0.652 / 2.28, 0.304);
+ *  - a weaker shape prior (1.5) and a larger tangential weight (0.1) (0.642 / 2.23, 0.282).
+ *  The divergence guard stays on: on fsaverage the shape stage's cost really rises after ~7 iterations and the fit
+ *  gets worse (without the guard, 50 iterations end at 0.704 / 2.64); the guard returns the best state.
+ */
 TriangleMesh
 registerIct (const pcl::PointCloud<pcl::PointNormal>::Ptr& target, const morphreg::LandmarkPositions& landmarks)
 {
@@ -57,8 +73,11 @@ registerIct (const pcl::PointCloud<pcl::PointNormal>::Ptr& target, const morphre
   Icp icp;
   icp.setModel (model);
   icp.setComponentSelection (model->firstComponents (kFittedComponents));
-  icp.setPointToPlane (true);
-  icp.setTargetLandmarks (landmarks);
+  icp.setPointToPlane (true, 0.1);
+  icp.setShapePriorWeight (1.5);
+  icp.setAreaWeighting (true);
+  icp.addCorrespondenceRejector (std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> ());
+  icp.setTargetLandmarks (landmarks, 1.0);
   icp.setInitialisation (morphreg::IcpInitialisation::landmarks);
   icp.setInputTarget (target);
   pcl::PointCloud<pcl::PointNormal> output;
@@ -100,11 +119,10 @@ TEST (RealDataIcpTest, IctFitsTheFsaverageScalp)
   const TriangleMesh fitted = registerIct (targetCloud (head.mesh, cap), head.landmarks);
   const auto distance = morphreg::surfaceDistance (head.mesh, fitted, cap);
   printDistance ("fsaverage", distance);
-  // Issue targets: median <= 0.65 mm, 95th percentile <= 2.3 mm (the point-to-point reference: 0.68 / 2.4 mm). Not
-  // reached yet: measured median 1.04 mm, 95th percentile 3.55 mm (the run stops as diverged, "the cost rose 3 times
-  // in a row above the best", after 31 iterations). Asserted: what it reaches, with a small margin.
-  EXPECT_LE (distance.median, 1.15);
-  EXPECT_LE (distance.percentile95, 3.9);
+  // Issue targets (the point-to-point reference: 0.68 / 2.4 mm). Measured: median 0.642 mm, 95th percentile 2.23 mm
+  // (the default settings: 1.00 / 3.42 mm).
+  EXPECT_LE (distance.median, 0.65);
+  EXPECT_LE (distance.percentile95, 2.3);
 }
 
 TEST (RealDataIcpTest, IctFitsTheMediaPipeCanonicalFace)
@@ -120,9 +138,9 @@ TEST (RealDataIcpTest, IctFitsTheMediaPipeCanonicalFace)
   const TriangleMesh fitted = registerIct (targetCloud (face.mesh, {}), landmarks);
   const auto distance = morphreg::surfaceDistance (face.mesh, fitted);
   printDistance ("MediaPipe", distance);
-  // Issue target: median <= 0.30 mm (the point-to-point reference: 0.31-0.36 mm). Not reached yet: measured median
-  // 0.383 mm (95th percentile 1.27 mm) after 48 iterations. Asserted: what it reaches, with a small margin.
-  EXPECT_LE (distance.median, 0.42);
+  // Issue target (the point-to-point reference: 0.31-0.36 mm). Measured: median 0.282 mm, 95th percentile 1.04 mm
+  // (the default settings: 0.373 / 1.20 mm).
+  EXPECT_LE (distance.median, 0.30);
 }
 
 } // namespace

@@ -186,6 +186,17 @@ public:
   void
   setRobustLoss (RobustLoss loss, double scale = 0.0);
 
+  /** \brief Weight each correspondence by its model vertex's share of the mean surface's area (a third of its
+   *  triangles' areas, normalised to mean 1), so that the fit balances area, not vertex count. Off by default; for
+   *  models with very uneven vertex density (ICT-FaceKit: a dense face, a sparse skull) against targets that cover
+   *  the sparse parts too (a whole scalp).
+   */
+  void
+  setAreaWeighting (bool enabled)
+  {
+    area_weighting_ = enabled;
+  }
+
   /** \brief Reject correspondences whose target point lies on the target's boundary (hole borders, isolated
    *  outliers): the largest angular gap between a point's \a neighbours nearest neighbours, in their plane, exceeds
    *  90 degrees. Computed lazily, once per target point when it first becomes a correspondence. On by default.
@@ -333,6 +344,8 @@ private:
   double tangential_weight_ = 0.02;
   RobustLoss robust_loss_ = RobustLoss::tukey;
   double robust_scale_ = 0.0;
+  bool area_weighting_ = false;
+  Eigen::VectorXd vertex_area_weights_; ///< per model vertex, mean 1 (setModel)
   bool reject_boundary_ = true;
   int boundary_neighbours_ = 20;
   double max_sigma_ = 8.0;

@@ -180,6 +180,14 @@ MorphableICP<PointTarget, Scalar>::setModel (const MorphableModel::ConstPtr& mod
     model->landmarkVertex (landmark.first);
   model_ = model;
   selection_ = model_->firstComponents (10);
+  const TriangleMesh mean{Eigen::Map<const Eigen::Matrix3Xd> (model_->mean ().data (), 3, model_->numVertices ()),
+                          model_->triangles ()};
+  const Eigen::VectorXd areas = triangleAreas (mean);
+  vertex_area_weights_ = Eigen::VectorXd::Zero (model_->numVertices ());
+  for (Eigen::Index t = 0; t < mean.triangles.cols (); ++t)
+    for (int corner = 0; corner < 3; ++corner)
+      vertex_area_weights_[mean.triangles (corner, t)] += areas[t] / 3.0;
+  vertex_area_weights_ /= std::max (vertex_area_weights_.mean (), std::numeric_limits<double>::min ());
   Base::setInputSource (model_->generateCloud<PointTarget> (Eigen::VectorXd::Zero (selection_.total ()),
                                                               selection_));
 }
@@ -523,7 +531,8 @@ MorphableICP<PointTarget, Scalar>::evaluate (const State& state)
   }
   ev.weights.resize (kept);
   for (size_t c = 0; c < kept; ++c)
-    ev.weights[c] = detail::robustWeight (robust_loss_, ev.distances[c], width);
+    ev.weights[c] = detail::robustWeight (robust_loss_, ev.distances[c], width) *
+                    (area_weighting_ ? vertex_area_weights_[ev.kept[c].index_query] : 1.0);
   return ev;
 }
 
