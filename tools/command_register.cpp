@@ -138,7 +138,9 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
   icp.setSimilarityIterations (options.similarity_iterations);
   if (options.max_distance > 0.0)
     icp.setMaxCorrespondenceDistance (options.max_distance);
-  icp.setPointToPlane (options.point_to_plane);
+  icp.setPointToPlane (options.point_to_plane, options.tangential_weight);
+  icp.setShapePriorWeight (options.shape_prior);
+  icp.setAreaWeighting (options.area_weighting);
   icp.setRobustLoss (robustLoss (options.loss), options.loss_scale);
   if (options.reject_distance > 0.0) {
     auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
@@ -158,7 +160,7 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
     icp.addCorrespondenceRejector (rejector);
   }
   if (!options.landmarks.empty ())
-    icp.setTargetLandmarks (modelLandmarks (options, *model));
+    icp.setTargetLandmarks (modelLandmarks (options, *model), options.landmark_weight);
 }
 
 /** Prints one progress line per iteration: the kept correspondences and their RMS distance. */
@@ -229,6 +231,10 @@ settingsJson (const RegisterOptions& options)
           {"max_correspondence_distance_mm", options.max_distance},
           {"components", options.components},
           {"point_to_plane", options.point_to_plane},
+          {"tangential_weight", options.tangential_weight},
+          {"shape_prior_weight", options.shape_prior},
+          {"area_weighting", options.area_weighting},
+          {"landmark_weight", options.landmark_weight},
           {"robust_loss", options.loss},
           {"robust_scale_mm", options.loss_scale},
           {"reject_distance_mm", options.reject_distance},
@@ -374,6 +380,17 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->check (CLI::NonNegativeNumber)->capture_default_str ();
   command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
                      "point-to-plane residuals along the scan normals (default) or point-to-point");
+  command->add_option ("--tangential-weight", options.tangential_weight,
+                       "share of the point-to-point term kept along the tangent plane (point-to-plane)")
+      ->check (CLI::Range (0.0, 1.0))->capture_default_str ();
+  command->add_option ("--shape-prior", options.shape_prior,
+                       "weight of the shape prior (coefficients in prior standard deviations)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--landmark-weight", options.landmark_weight,
+                       "one landmark counts as this many correspondences")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_flag ("--area-weighting", options.area_weighting,
+                     "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
   command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")
       ->check (CLI::IsMember ({"none", "huber", "tukey"}))->capture_default_str ();
   command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
