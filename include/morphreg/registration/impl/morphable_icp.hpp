@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <typeinfo>
 
 namespace morphreg
 {
@@ -135,6 +136,37 @@ robustWeight (RobustLoss loss, double d, double c)
     break;
   }
   return 1.0;
+}
+
+/** What pcl::registration::CorrespondenceEstimation::determineCorrespondences finds (each source point's nearest
+ *  target point within \a max_distance, in source order), with the k-d tree queries spread over OpenMP threads:
+ *  they are most of an iteration's time and PCL runs them serially.
+ */
+template <typename PointT, typename Tree>
+void
+closestPoints (const pcl::PointCloud<PointT>& source, const Tree& tree, double max_distance,
+               pcl::Correspondences& correspondences)
+{
+  const auto n = static_cast<long> (source.size ());
+  pcl::Indices matches (n);
+  std::vector<float> distances (n);
+#pragma omp parallel
+  {
+    pcl::Indices index (1);
+    std::vector<float> distance (1);
+#pragma omp for schedule(dynamic, 256)
+    for (long i = 0; i < n; ++i) {
+      tree.nearestKSearch (source[i], 1, index, distance);
+      matches[i] = index[0];
+      distances[i] = distance[0];
+    }
+  }
+  const double max_squared = max_distance * max_distance;
+  correspondences.clear ();
+  correspondences.reserve (n);
+  for (long i = 0; i < n; ++i)
+    if (!(distances[i] > max_squared))
+      correspondences.emplace_back (static_cast<int> (i), matches[i], distances[i]);
 }
 
 /** Unit normal of \a neighbours' least-squares plane and whether the largest angular gap between them around
@@ -428,7 +460,8 @@ MorphableICP<PointTarget, Scalar>::prepareTargetPoints (const pcl::Correspondenc
   const int k = std::min<int> (boundary_neighbours_, static_cast<int> (target.size ()));
   const auto& tree = this->tree_;
   const auto count = static_cast<long> (pending.size ());
-#pragma omp parallel for schedule(dynamic, 64)
+  // After the first iterations only a few points are new: not worth waking the other threads for.
+#pragma omp parallel for schedule(dynamic, 64) if (count > 256)
   for (long c = 0; c < count; ++c) {
     const Eigen::Index i = pending[c];
     pcl::Indices neighbours;
@@ -491,7 +524,11 @@ MorphableICP<PointTarget, Scalar>::evaluate (const State& state)
   if (estimation.requiresSourceNormals ())
     estimation.setSourceNormals (sourceBlob ());
   pcl::CorrespondencesPtr current (new pcl::Correspondences);
-  estimation.determineCorrespondences (*current, this->corr_dist_threshold_);
+  using DefaultEstimation = pcl::registration::CorrespondenceEstimation<PointTarget, PointTarget, Scalar>;
+  if (typeid (estimation) == typeid (DefaultEstimation))
+    detail::closestPoints (*ev.cloud, *this->tree_, this->corr_dist_threshold_, *current);
+  else
+    estimation.determineCorrespondences (*current, this->corr_dist_threshold_);
   ev.found = static_cast<int> (current->size ());
   prepareTargetPoints (*current);
 
