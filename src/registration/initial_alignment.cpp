@@ -3,9 +3,12 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -78,6 +81,230 @@ requirePoints (const Eigen::Matrix3Xd& points, Eigen::Index minimum, const std::
   if (!points.allFinite ())
     throw InvalidInputError (what + ": points are not finite");
 }
+
+/** The similarity scaling by \a scale and rotating by \a rotation about \a from, then moving \a from to \a to. */
+Eigen::Matrix4d
+similarityAbout (double scale, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& from, const Eigen::Vector3d& to)
+{
+  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity ();
+  similarity.topLeftCorner<3, 3> () = scale * rotation;
+  similarity.topRightCorner<3, 1> () = to - scale * rotation * from;
+  return similarity;
+}
+
+/** Robust centroids and the scale matching the trimmed RMS spreads of \a source and \a target. */
+struct CoarseFrame
+{
+  RobustMoments from, to;
+  double scale;
+};
+
+CoarseFrame
+coarseFrame (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target, const std::string& what)
+{
+  requirePoints (source, 4, what + " (source)");
+  requirePoints (target, 4, what + " (target)");
+  CoarseFrame frame{trimmedMoments (source), trimmedMoments (target), 0.0};
+  if (frame.from.covariance.trace () <= 0.0 || frame.to.covariance.trace () <= 0.0)
+    throw InvalidInputError (what + ": the points have no spread");
+  frame.scale = std::sqrt (frame.to.covariance.trace () / frame.from.covariance.trace ());
+  return frame;
+}
+
+/** The proper rotations taking the principal axes of \a from onto those of \a to (matched by extent), in every
+ *  sign variant of determinant +1; the first is the one whose axes agree in sign with the source's. */
+std::vector<Eigen::Matrix3d>
+principalAxisRotations (const Eigen::Matrix3d& from, const Eigen::Matrix3d& to)
+{
+  const Eigen::Matrix3d axes_from = principalAxes (from);
+  Eigen::Matrix3d axes_to = principalAxes (to);
+  for (int k = 0; k < 3; ++k)
+    if (axes_to.col (k).dot (axes_from.col (k)) < 0.0)
+      axes_to.col (k) *= -1.0;
+  if ((axes_to * axes_from.transpose ()).determinant () < 0.0)
+    axes_to.col (2) *= -1.0;
+  std::vector<Eigen::Matrix3d> rotations;
+  for (const Eigen::Vector3d& flip : {Eigen::Vector3d (1, 1, 1), Eigen::Vector3d (-1, -1, 1),
+                                     Eigen::Vector3d (-1, 1, -1), Eigen::Vector3d (1, -1, -1)})
+    rotations.push_back (axes_to * flip.asDiagonal () * axes_from.transpose ());
+  return rotations;
+}
+
+/** Every \a stride-th column of \a points, for about \a count columns. */
+Eigen::Matrix3Xd
+evenSamples (const Eigen::Matrix3Xd& points, int count)
+{
+  const Eigen::Index stride = std::max<Eigen::Index> (1, points.cols () / count);
+  Eigen::Matrix3Xd samples (3, (points.cols () + stride - 1) / stride);
+  for (Eigen::Index i = 0; i < samples.cols (); ++i)
+    samples.col (i) = points.col (i * stride);
+  return samples;
+}
+
+/** A k-d tree over the columns of \a points. */
+pcl::KdTreeFLANN<pcl::PointXYZ>::Ptr
+pointTree (const Eigen::Matrix3Xd& points)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  cloud->resize (points.cols ());
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
+  pcl::KdTreeFLANN<pcl::PointXYZ>::Ptr tree (new pcl::KdTreeFLANN<pcl::PointXYZ>);
+  tree->setInputCloud (cloud);
+  return tree;
+}
+
+/** Closest point in \a tree (its index) and the distance, for each column of \a points. */
+struct Closest
+{
+  std::vector<int> index;
+  std::vector<double> distance;
+};
+
+Closest
+closestPoints (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3Xd& points)
+{
+  Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index i = 0; i < points.cols (); ++i) {
+    pcl::PointXYZ query;
+    query.getVector3fMap () = points.col (i).cast<float> ();
+    pcl::Indices index (1);
+    std::vector<float> squared (1);
+    tree.nearestKSearch (query, 1, index, squared);
+    closest.index[i] = index[0];
+    closest.distance[i] = std::sqrt (static_cast<double> (squared[0]));
+  }
+  return closest;
+}
+
+/** The distance below which the \a fraction smallest of \a distances lie. */
+double
+trimmedLimit (std::vector<double> distances, double fraction)
+{
+  const auto keep = std::max<size_t> (1, static_cast<size_t> (fraction * static_cast<double> (distances.size ())));
+  std::nth_element (distances.begin (), distances.begin () + static_cast<long> (keep - 1), distances.end ());
+  return distances[keep - 1];
+}
+
+double
+trimmedMean (const std::vector<double>& distances, double fraction)
+{
+  const double limit = trimmedLimit (distances, fraction);
+  double sum = 0.0, count = 0.0;
+  for (double d : distances)
+    if (d <= limit) {
+      sum += d;
+      count += 1.0;
+    }
+  return sum / count;
+}
+
+Eigen::Matrix3Xd
+transformed (const Eigen::Matrix4d& similarity, const Eigen::Matrix3Xd& points)
+{
+  return (similarity.topLeftCorner<3, 3> () * points).colwise () + similarity.topRightCorner<3, 1> ();
+}
+
+/** The points of \a target not isolated (their 12th nearest neighbour within 3x the median such distance: drops
+ *  scattered outliers) and their unit normals from the principal axes of those 12 neighbours. */
+struct SurfacePoints
+{
+  Eigen::Matrix3Xd points, normals;
+};
+
+SurfacePoints
+surfacePoints (const Eigen::Matrix3Xd& target)
+{
+  const auto tree = pointTree (target);
+  const int k = static_cast<int> (std::min<Eigen::Index> (12, target.cols ()));
+  Eigen::Matrix3Xd normals (3, target.cols ());
+  std::vector<double> reach (target.cols ());
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index i = 0; i < target.cols (); ++i) {
+    pcl::PointXYZ query;
+    query.getVector3fMap () = target.col (i).cast<float> ();
+    pcl::Indices index;
+    std::vector<float> squared;
+    tree->nearestKSearch (query, k, index, squared);
+    Eigen::Matrix3Xd neighbours (3, index.size ());
+    for (size_t j = 0; j < index.size (); ++j)
+      neighbours.col (j) = target.col (index[j]);
+    const Eigen::Matrix3Xd centred = neighbours.colwise () - neighbours.rowwise ().mean ();
+    normals.col (i) = principalAxes (centred * centred.transpose ()).col (2);
+    reach[i] = std::sqrt (static_cast<double> (squared.back ()));
+  }
+  const double limit = 3.0 * trimmedLimit (reach, 0.5);
+  SurfacePoints surface{Eigen::Matrix3Xd (3, target.cols ()), Eigen::Matrix3Xd (3, target.cols ())};
+  Eigen::Index kept = 0;
+  for (Eigen::Index i = 0; i < target.cols (); ++i)
+    if (reach[i] <= limit) {
+      surface.points.col (kept) = target.col (i);
+      surface.normals.col (kept++) = normals.col (i);
+    }
+  surface.points.conservativeResize (3, kept);
+  surface.normals.conservativeResize (3, kept);
+  return surface;
+}
+
+/** Trimmed point-to-plane similarity-only ICP of \a samples onto the target of \a tree (with \a normals), from
+ *  \a pose: Gauss-Newton on rotation (about the target centroid \a centre), translation and log-scale. */
+Eigen::Matrix4d
+refineSimilarity (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3Xd& target,
+                  const Eigen::Matrix3Xd& normals, const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples,
+                  Eigen::Matrix4d pose, const CoarseAlignmentSettings& settings)
+{
+  for (int iteration = 0; iteration < settings.refine_iterations; ++iteration) {
+    const Eigen::Matrix3Xd posed = transformed (pose, samples);
+    const Closest closest = closestPoints (tree, posed);
+    const double limit = trimmedLimit (closest.distance, settings.inlier_fraction);
+    Eigen::Matrix<double, 7, 7> normal_matrix = Eigen::Matrix<double, 7, 7>::Zero ();
+    Eigen::Matrix<double, 7, 1> rhs = Eigen::Matrix<double, 7, 1>::Zero ();
+    for (Eigen::Index i = 0; i < samples.cols (); ++i)
+      if (closest.distance[i] <= limit) {
+        const Eigen::Vector3d y = posed.col (i) - centre;
+        const Eigen::Vector3d n = normals.col (closest.index[i]);
+        Eigen::Matrix<double, 7, 1> row;
+        row << y.cross (n), n, n.dot (y);
+        normal_matrix += row * row.transpose ();
+        rhs -= row * n.dot (posed.col (i) - target.col (closest.index[i]));
+      }
+    const Eigen::Matrix<double, 7, 1> step = normal_matrix.ldlt ().solve (rhs);
+    if (!step.allFinite ())
+      break;
+    Eigen::Matrix4d update = Eigen::Matrix4d::Identity ();
+    const double angle = step.head<3> ().norm ();
+    const Eigen::Matrix3d rotation =
+        angle > 0.0 ? Eigen::AngleAxisd (angle, step.head<3> () / angle).toRotationMatrix () : Eigen::Matrix3d::Identity ();
+    update.topLeftCorner<3, 3> () = std::exp (step[6]) * rotation;
+    update.topRightCorner<3, 1> () = centre + step.segment<3> (3) - update.topLeftCorner<3, 3> () * centre;
+    pose = update * pose;
+    if (step.norm () < 1e-6)
+      break;
+  }
+  return pose;
+}
+
+/** Trimmed mean of the closest-point distances samples -> target and target samples -> posed samples. */
+double
+symmetricScore (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3Xd& samples,
+                const Eigen::Matrix3Xd& target_samples, const Eigen::Matrix4d& pose, double fraction)
+{
+  const Eigen::Matrix3Xd posed = transformed (pose, samples);
+  const double forward = trimmedMean (closestPoints (tree, posed).distance, fraction);
+  const double backward = trimmedMean (closestPoints (*pointTree (posed), target_samples).distance, fraction);
+  return 0.5 * (forward + backward);
+}
+
+void
+requireSettings (const CoarseAlignmentSettings& settings)
+{
+  if (!(settings.sample_points >= 4) || settings.refine_iterations < 0 || !(settings.inlier_fraction > 0.0) ||
+      !(settings.inlier_fraction <= 1.0) || !(settings.tie_tolerance >= 0.0) ||
+      !std::isfinite (settings.hypothesis_angle_deg))
+    throw InvalidInputError ("robustCoarseSimilarity: the settings need sample_points >= 4, refine_iterations >= 0, "
+                             "0 < inlier_fraction <= 1, tie_tolerance >= 0 and a finite hypothesis_angle_deg");
+}
 } // namespace
 
 Eigen::Matrix4d
@@ -100,33 +327,50 @@ similarityFromLandmarks (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd&
 Eigen::Matrix4d
 coarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target, double max_rotation_deg)
 {
-  requirePoints (source, 4, "coarseSimilarity (source)");
-  requirePoints (target, 4, "coarseSimilarity (target)");
-  const RobustMoments from = trimmedMoments (source);
-  const RobustMoments to = trimmedMoments (target);
-  const double spread_from = from.covariance.trace ();
-  if (spread_from <= 0.0 || to.covariance.trace () <= 0.0)
-    throw InvalidInputError ("coarseSimilarity: the points have no spread");
-  const double scale = std::sqrt (to.covariance.trace () / spread_from);
-
-  const Eigen::Matrix3d axes_from = principalAxes (from.covariance);
-  Eigen::Matrix3d axes_to = principalAxes (to.covariance);
-  for (int k = 0; k < 3; ++k)
-    if (axes_to.col (k).dot (axes_from.col (k)) < 0.0)
-      axes_to.col (k) *= -1.0;
-  Eigen::Matrix3d rotation = axes_to * axes_from.transpose ();
-  if (rotation.determinant () < 0.0) {
-    axes_to.col (2) *= -1.0;
-    rotation = axes_to * axes_from.transpose ();
-  }
-  const double angle = Eigen::AngleAxisd (rotation).angle ();
-  if (angle > max_rotation_deg * M_PI / 180.0)
+  const CoarseFrame frame = coarseFrame (source, target, "coarseSimilarity");
+  Eigen::Matrix3d rotation = principalAxisRotations (frame.from.covariance, frame.to.covariance).front ();
+  if (Eigen::AngleAxisd (rotation).angle () > max_rotation_deg * M_PI / 180.0)
     rotation.setIdentity ();
+  return similarityAbout (frame.scale, rotation, frame.from.centroid, frame.to.centroid);
+}
 
-  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity ();
-  similarity.topLeftCorner<3, 3> () = scale * rotation;
-  similarity.topRightCorner<3, 1> () = to.centroid - scale * rotation * from.centroid;
-  return similarity;
+Eigen::Matrix4d
+robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                        const CoarseAlignmentSettings& settings)
+{
+  requireSettings (settings);
+  requirePoints (target, 4, "robustCoarseSimilarity (target)");
+  const SurfacePoints surface = surfacePoints (target);
+  const CoarseFrame frame = coarseFrame (source, surface.points, "robustCoarseSimilarity");
+  std::vector<Eigen::Matrix3d> rotations{Eigen::Matrix3d::Identity ()};
+  const double tilt = settings.hypothesis_angle_deg * M_PI / 180.0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double sign : {-1.0, 1.0})
+      rotations.push_back (Eigen::AngleAxisd (sign * tilt, Eigen::Vector3d::Unit (axis)).toRotationMatrix ());
+  for (const Eigen::Matrix3d& rotation : principalAxisRotations (frame.from.covariance, frame.to.covariance))
+    rotations.push_back (rotation);
+
+  const pcl::KdTreeFLANN<pcl::PointXYZ>::Ptr tree = pointTree (surface.points);
+  const Eigen::Matrix3Xd samples = evenSamples (source, settings.sample_points);
+  const Eigen::Matrix3Xd target_samples = evenSamples (surface.points, settings.sample_points);
+  std::vector<Eigen::Matrix4d> poses;
+  std::vector<double> scores, angles;
+  for (const Eigen::Matrix3d& rotation : rotations) {
+    const Eigen::Matrix4d start = similarityAbout (frame.scale, rotation, frame.from.centroid, frame.to.centroid);
+    poses.push_back (refineSimilarity (*tree, surface.points, surface.normals, frame.to.centroid, samples, start, settings));
+    scores.push_back (symmetricScore (*tree, samples, target_samples, poses.back (), settings.inlier_fraction));
+    const Eigen::Matrix3d linear = poses.back ().topLeftCorner<3, 3> ();
+    angles.push_back (Eigen::AngleAxisd (linear / std::cbrt (linear.determinant ())).angle ());
+  }
+  const double best = *std::min_element (scores.begin (), scores.end ());
+  size_t chosen = 0;
+  double smallest_angle = std::numeric_limits<double>::infinity ();
+  for (size_t h = 0; h < poses.size (); ++h)
+    if (scores[h] <= best * (1.0 + settings.tie_tolerance) && angles[h] < smallest_angle) {
+      smallest_angle = angles[h];
+      chosen = h;
+    }
+  return poses[chosen];
 }
 
 } // namespace morphreg

@@ -122,7 +122,9 @@ TEST (IctIcpTest, HeadsWithinTheFittedComponentsFitFromLandmarkAndCoarseStarts)
   EXPECT_GE (countAtMost (landmark_rms, 1.0), 12);
   EXPECT_LE (median (landmark_rms), 1.0);
   EXPECT_LE (worst_landmark, 7.5);
-  EXPECT_GE (countAtMost (coarse_rms, 1.0), 5);
+  // Coarse start (robustCoarseSimilarity: outlier-filtered target, pose hypotheses refined by point-to-plane
+  // similarity ICP): at the issue target, measured 20/20 heads at 0.36-0.81 mm within 16-43 iterations.
+  EXPECT_LE (worst_coarse, 1.0) << "coarse start: the issue target is <= 1.0 mm on every head";
 }
 
 TEST (IctIcpTest, HeadsWithAllComponentsFitWithin30ComponentsCloseToTheirFloor)

@@ -38,7 +38,7 @@ enum class IcpInitialisation
   automatic, ///< a non-identity guess as given; else landmarks if >= 3 are set; else the coarse alignment
   guess,     ///< always the guess passed to align(), even the identity
   landmarks, ///< Umeyama from the target landmarks (InvalidInputError if fewer than 3)
-  coarse     ///< coarseSimilarity (centroids, principal axes, extents) of the model mean onto the target
+  coarse     ///< robustCoarseSimilarity (pose hypotheses refined and scored) of the model mean onto the target
 };
 
 /** \brief ICP with shape parameters: fits s R (mu_i + M_i m) + t to a target cloud by Gauss-Newton over

@@ -430,7 +430,7 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess) 
   for (size_t i = 0; i < this->target_->size (); ++i)
     target.col (i) = (*this->target_)[i].getVector3fMap ().template cast<double> ();
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
-  return coarseSimilarity (mean, target);
+  return robustCoarseSimilarity (mean, target);
 }
 
 template <typename PointTarget, typename Scalar>
