@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <typeinfo>
 
 namespace morphreg
 {
@@ -138,36 +137,44 @@ robustWeight (RobustLoss loss, double d, double c)
   return 1.0;
 }
 
-/** What pcl::registration::CorrespondenceEstimation::determineCorrespondences finds (each source point's nearest
- *  target point within \a max_distance, in source order), with the k-d tree queries spread over OpenMP threads:
+/** The default correspondence estimation: pcl::registration::CorrespondenceEstimation (each source point's nearest
+ *  target point within the distance, in source-index order) with the k-d tree queries spread over OpenMP threads:
  *  they are most of an iteration's time and PCL runs them serially.
  */
-template <typename PointT, typename Tree>
-void
-closestPoints (const pcl::PointCloud<PointT>& source, const Tree& tree, double max_distance,
-               pcl::Correspondences& correspondences)
+template <typename PointT, typename Scalar>
+class ParallelCorrespondenceEstimation
+  : public pcl::registration::CorrespondenceEstimation<PointT, PointT, Scalar>
 {
-  const auto n = static_cast<long> (source.size ());
-  pcl::Indices matches (n);
-  std::vector<float> distances (n);
-#pragma omp parallel
+public:
+  void
+  determineCorrespondences (pcl::Correspondences& correspondences, double max_distance) override
   {
-    pcl::Indices index (1);
-    std::vector<float> distance (1);
+    if (!this->initCompute ())
+      return;
+    const pcl::Indices& indices = *this->indices_;
+    const auto n = static_cast<long> (indices.size ());
+    pcl::Indices matches (n);
+    std::vector<float> distances (n);
+#pragma omp parallel
+    {
+      pcl::Indices index (1);
+      std::vector<float> distance (1);
 #pragma omp for schedule(dynamic, 256)
-    for (long i = 0; i < n; ++i) {
-      tree.nearestKSearch (source[i], 1, index, distance);
-      matches[i] = index[0];
-      distances[i] = distance[0];
+      for (long i = 0; i < n; ++i) {
+        this->tree_->nearestKSearch ((*this->input_)[indices[i]], 1, index, distance);
+        matches[i] = index[0];
+        distances[i] = distance[0];
+      }
     }
+    const double max_squared = max_distance * max_distance;
+    correspondences.clear ();
+    correspondences.reserve (n);
+    for (long i = 0; i < n; ++i)
+      if (!(distances[i] > max_squared))
+        correspondences.emplace_back (indices[i], matches[i], distances[i]);
+    this->deinitCompute ();
   }
-  const double max_squared = max_distance * max_distance;
-  correspondences.clear ();
-  correspondences.reserve (n);
-  for (long i = 0; i < n; ++i)
-    if (!(distances[i] > max_squared))
-      correspondences.emplace_back (static_cast<int> (i), matches[i], distances[i]);
-}
+};
 
 /** Unit normal of \a neighbours' least-squares plane and whether the largest angular gap between them around
  *  \a centre, in that plane, exceeds 90 degrees (a boundary point).
@@ -198,8 +205,7 @@ MorphableICP<PointTarget, Scalar>::MorphableICP ()
 {
   this->reg_name_ = "MorphableICP";
   this->max_iterations_ = 50;
-  this->correspondence_estimation_.reset (
-      new pcl::registration::CorrespondenceEstimation<PointTarget, PointTarget, Scalar>);
+  this->correspondence_estimation_.reset (new detail::ParallelCorrespondenceEstimation<PointTarget, Scalar>);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -524,11 +530,7 @@ MorphableICP<PointTarget, Scalar>::evaluate (const State& state)
   if (estimation.requiresSourceNormals ())
     estimation.setSourceNormals (sourceBlob ());
   pcl::CorrespondencesPtr current (new pcl::Correspondences);
-  using DefaultEstimation = pcl::registration::CorrespondenceEstimation<PointTarget, PointTarget, Scalar>;
-  if (typeid (estimation) == typeid (DefaultEstimation))
-    detail::closestPoints (*ev.cloud, *this->tree_, this->corr_dist_threshold_, *current);
-  else
-    estimation.determineCorrespondences (*current, this->corr_dist_threshold_);
+  estimation.determineCorrespondences (*current, this->corr_dist_threshold_);
   ev.found = static_cast<int> (current->size ());
   prepareTargetPoints (*current);
 
