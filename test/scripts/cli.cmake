@@ -126,3 +126,15 @@ set_tests_properties(CliTest.RegisterScreenshotWithoutDisplayFails PROPERTIES FI
   ENVIRONMENT_MODIFICATION "DISPLAY=unset:")
 morphreg_cli_expect_exit(DemoScreenshotWithoutDisplayFailsEarly 1 "--no-screenshot" demo --count 2 --out ${cli_dir}/bad_demo)
 set_tests_properties(CliTest.DemoScreenshotWithoutDisplayFailsEarly PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:")
+
+# warp: one small head onto the next head's landmarks, with the error against that head (measured mean 3.58 mm).
+add_test(NAME CliTest.WarpHeadOntoAnotherHeadsLandmarks
+  COMMAND morphreg_cli warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
+          --target ${cli_dir}/small/head_001_landmarks.json --truth ${cli_dir}/small/head_001.ply
+          --report ${cli_dir}/warp.json --out ${cli_dir}/warped.ply)
+set_tests_properties(CliTest.WarpHeadOntoAnotherHeadsLandmarks PROPERTIES FIXTURES_REQUIRED cli_small
+  PASS_REGULAR_EXPRESSION "error against .*head_001.ply: mean [0-4]\\.[0-9]+ mm.*wrote .*warped.ply")
+morphreg_cli_expect_exit(WarpMissingLandmarksIsNamed 1 "no_such_landmarks.json: no such file"
+  warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
+  --target ${cli_dir}/no_such_landmarks.json --out ${cli_dir}/bad_warp.ply)
+set_tests_properties(CliTest.WarpMissingLandmarksIsNamed PROPERTIES FIXTURES_REQUIRED cli_small)
