@@ -1,7 +1,9 @@
 // MorphableICP against pcl::IterativeClosestPoint on the same simulated scan: full align() and time per iteration.
 // Model: the built-in synthetic population (120 heads, 9602 vertices, 7 regions x 10 components); scan: the
-// ScanSimulator at about 80k points, both registrations started from the same similarity guess.
+// ScanSimulator at about 100k points, both registrations started from the same similarity guess; PCL's ICP also with
+// our CachedCorrespondenceEstimation, and MorphableICP also from its robust coarse start (no guess).
 #include <morphreg/model/model_builder.h>
+#include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
@@ -49,6 +51,7 @@ fixture ()
   return f;
 }
 
+/** PCL's rigid ICP from the guess, with PCL's correspondence estimation or (cached = 1) ours. */
 void
 BM_PclIcpAlign (benchmark::State& state)
 {
@@ -56,6 +59,10 @@ BM_PclIcpAlign (benchmark::State& state)
   int iterations = 0;
   for (auto _ : state) {
     pcl::IterativeClosestPoint<pcl::PointNormal, pcl::PointNormal> icp;
+    if (state.range (0) == 1)
+      icp.setCorrespondenceEstimation (
+          morphreg::CachedCorrespondenceEstimation<pcl::PointNormal, pcl::PointNormal>::Ptr (
+              new morphreg::CachedCorrespondenceEstimation<pcl::PointNormal, pcl::PointNormal>));
     icp.setInputSource (f.mean);
     icp.setInputTarget (f.scan.cloud);
     iterations = 0;
@@ -70,7 +77,7 @@ BM_PclIcpAlign (benchmark::State& state)
   state.counters["iterations"] = iterations - 1; // the first call comes from registerVisualizationCallback
   state.counters["points"] = static_cast<double> (f.scan.cloud->size ());
 }
-BENCHMARK (BM_PclIcpAlign)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_PclIcpAlign)->ArgName ("cached")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
 
 void
 BM_MorphableIcpAlign (benchmark::State& state)
@@ -83,7 +90,10 @@ BM_MorphableIcpAlign (benchmark::State& state)
     icp.setPointToPlane (true);
     icp.setInputTarget (f.scan.cloud);
     pcl::PointCloud<pcl::PointNormal> output;
-    icp.align (output, f.guess);
+    if (state.range (0) == 1)
+      icp.align (output); // no guess: the robust coarse start
+    else
+      icp.align (output, f.guess);
     report = icp.getRegistrationReport ();
     benchmark::DoNotOptimize (output.data ());
   }
@@ -95,7 +105,7 @@ BM_MorphableIcpAlign (benchmark::State& state)
   state.counters["ms_per_similarity_iteration"] = 1e3 * similarity / std::max (1, report.similarity_iterations);
   state.counters["ms_per_shape_iteration"] = 1e3 * shape / std::max (1, report.shape_iterations);
 }
-BENCHMARK (BM_MorphableIcpAlign)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_MorphableIcpAlign)->ArgName ("coarse_start")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
 
 } // namespace
 

@@ -1,9 +1,10 @@
 #include <morphreg/common/error.h>
+#include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/initial_alignment.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/search/kdtree.h>
 #include <pcl/point_types.h>
 
 #include <algorithm>
@@ -141,15 +142,17 @@ evenSamples (const Eigen::Matrix3Xd& points, int count)
   return samples;
 }
 
+using PointTree = pcl::search::KdTree<pcl::PointXYZ>;
+
 /** A k-d tree over the columns of \a points. */
-pcl::KdTreeFLANN<pcl::PointXYZ>::Ptr
+PointTree::Ptr
 pointTree (const Eigen::Matrix3Xd& points)
 {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
   cloud->resize (points.cols ());
   for (Eigen::Index i = 0; i < points.cols (); ++i)
     (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
-  pcl::KdTreeFLANN<pcl::PointXYZ>::Ptr tree (new pcl::KdTreeFLANN<pcl::PointXYZ>);
+  PointTree::Ptr tree (new PointTree);
   tree->setInputCloud (cloud);
   return tree;
 }
@@ -161,11 +164,11 @@ struct Closest
   std::vector<double> distance;
 };
 
+/** Serial: the pose hypotheses run in parallel, each on a few thousand points (too few to share out). */
 Closest
-closestPoints (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3Xd& points)
+closestPoints (const PointTree& tree, const Eigen::Matrix3Xd& points)
 {
   Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
-#pragma omp parallel for schedule(static)
   for (Eigen::Index i = 0; i < points.cols (); ++i) {
     pcl::PointXYZ query;
     query.getVector3fMap () = points.col (i).cast<float> ();
@@ -174,6 +177,25 @@ closestPoints (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3
     tree.nearestKSearch (query, 1, index, squared);
     closest.index[i] = index[0];
     closest.distance[i] = std::sqrt (static_cast<double> (squared[0]));
+  }
+  return closest;
+}
+
+/** The same through \a estimation (on the tree's target), which caches what its last call found. */
+Closest
+closestPoints (CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ>& estimation, const Eigen::Matrix3Xd& points)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  cloud->resize (points.cols ());
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
+  estimation.setInputSource (cloud);
+  pcl::Correspondences found;
+  estimation.determineCorrespondences (found);
+  Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
+  for (const pcl::Correspondence& c : found) {
+    closest.index[c.index_query] = c.index_match;
+    closest.distance[c.index_query] = std::sqrt (static_cast<double> (c.distance));
   }
   return closest;
 }
@@ -214,25 +236,22 @@ struct SurfacePoints
 };
 
 SurfacePoints
-surfacePoints (const Eigen::Matrix3Xd& target)
+surfacePoints (const Eigen::Matrix3Xd& target, const TargetNeighbourSearch& target_neighbours)
 {
-  const auto tree = pointTree (target);
   const int k = static_cast<int> (std::min<Eigen::Index> (12, target.cols ()));
   Eigen::Matrix3Xd normals (3, target.cols ());
   std::vector<double> reach (target.cols ());
 #pragma omp parallel for schedule(static)
   for (Eigen::Index i = 0; i < target.cols (); ++i) {
-    pcl::PointXYZ query;
-    query.getVector3fMap () = target.col (i).cast<float> ();
     pcl::Indices index;
     std::vector<float> squared;
-    tree->nearestKSearch (query, k, index, squared);
+    target_neighbours (i, k, index, squared);
     Eigen::Matrix3Xd neighbours (3, index.size ());
     for (size_t j = 0; j < index.size (); ++j)
       neighbours.col (j) = target.col (index[j]);
     const Eigen::Matrix3Xd centred = neighbours.colwise () - neighbours.rowwise ().mean ();
     normals.col (i) = principalAxes (centred * centred.transpose ()).col (2);
-    reach[i] = std::sqrt (static_cast<double> (squared.back ()));
+    reach[i] = std::sqrt (static_cast<double> (*std::max_element (squared.begin (), squared.end ())));
   }
   const double limit = 3.0 * trimmedLimit (reach, 0.5);
   SurfacePoints surface{Eigen::Matrix3Xd (3, target.cols ()), Eigen::Matrix3Xd (3, target.cols ())};
@@ -248,15 +267,21 @@ surfacePoints (const Eigen::Matrix3Xd& target)
 }
 
 /** Trimmed point-to-plane similarity-only ICP of \a samples onto the target of \a tree (with \a normals), from
- *  \a pose: Gauss-Newton on rotation (about the target centroid \a centre), translation and log-scale. */
+ *  \a pose: Gauss-Newton on rotation (about the target centroid \a centre), translation and log-scale. The closest
+ *  points come through a CachedCorrespondenceEstimation: the samples move less each step, so most queries are
+ *  skipped.
+ */
 Eigen::Matrix4d
-refineSimilarity (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3Xd& target,
-                  const Eigen::Matrix3Xd& normals, const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples,
-                  Eigen::Matrix4d pose, const CoarseAlignmentSettings& settings)
+refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& normals,
+                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
+                  const CoarseAlignmentSettings& settings)
 {
+  CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ> nearest;
+  nearest.setInputTarget (tree->getInputCloud ());
+  nearest.setSearchMethodTarget (tree, true);
   for (int iteration = 0; iteration < settings.refine_iterations; ++iteration) {
     const Eigen::Matrix3Xd posed = transformed (pose, samples);
-    const Closest closest = closestPoints (tree, posed);
+    const Closest closest = closestPoints (nearest, posed);
     const double limit = trimmedLimit (closest.distance, settings.inlier_fraction);
     Eigen::Matrix<double, 7, 7> normal_matrix = Eigen::Matrix<double, 7, 7>::Zero ();
     Eigen::Matrix<double, 7, 1> rhs = Eigen::Matrix<double, 7, 1>::Zero ();
@@ -287,7 +312,7 @@ refineSimilarity (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matr
 
 /** Trimmed mean of the closest-point distances samples -> target and target samples -> posed samples. */
 double
-symmetricScore (const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, const Eigen::Matrix3Xd& samples,
+symmetricScore (const PointTree& tree, const Eigen::Matrix3Xd& samples,
                 const Eigen::Matrix3Xd& target_samples, const Eigen::Matrix4d& pose, double fraction)
 {
   const Eigen::Matrix3Xd posed = transformed (pose, samples);
@@ -338,9 +363,23 @@ Eigen::Matrix4d
 robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
                         const CoarseAlignmentSettings& settings)
 {
+  requirePoints (target, 4, "robustCoarseSimilarity (target)");
+  const auto tree = pointTree (target);
+  const auto neighbours = [&tree, &target] (Eigen::Index i, int k, pcl::Indices& indices, std::vector<float>& squared) {
+    pcl::PointXYZ query;
+    query.getVector3fMap () = target.col (i).cast<float> ();
+    tree->nearestKSearch (query, k, indices, squared);
+  };
+  return robustCoarseSimilarity (source, target, neighbours, settings);
+}
+
+Eigen::Matrix4d
+robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                        const TargetNeighbourSearch& target_neighbours, const CoarseAlignmentSettings& settings)
+{
   requireSettings (settings);
   requirePoints (target, 4, "robustCoarseSimilarity (target)");
-  const SurfacePoints surface = surfacePoints (target);
+  const SurfacePoints surface = surfacePoints (target, target_neighbours);
   const CoarseFrame frame = coarseFrame (source, surface.points, "robustCoarseSimilarity");
   std::vector<Eigen::Matrix3d> rotations{Eigen::Matrix3d::Identity ()};
   const double tilt = settings.hypothesis_angle_deg * M_PI / 180.0;
@@ -350,17 +389,19 @@ robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& 
   for (const Eigen::Matrix3d& rotation : principalAxisRotations (frame.from.covariance, frame.to.covariance))
     rotations.push_back (rotation);
 
-  const pcl::KdTreeFLANN<pcl::PointXYZ>::Ptr tree = pointTree (surface.points);
+  const PointTree::Ptr tree = pointTree (surface.points);
   const Eigen::Matrix3Xd samples = evenSamples (source, settings.sample_points);
   const Eigen::Matrix3Xd target_samples = evenSamples (surface.points, settings.sample_points);
-  std::vector<Eigen::Matrix4d> poses;
-  std::vector<double> scores, angles;
-  for (const Eigen::Matrix3d& rotation : rotations) {
-    const Eigen::Matrix4d start = similarityAbout (frame.scale, rotation, frame.from.centroid, frame.to.centroid);
-    poses.push_back (refineSimilarity (*tree, surface.points, surface.normals, frame.to.centroid, samples, start, settings));
-    scores.push_back (symmetricScore (*tree, samples, target_samples, poses.back (), settings.inlier_fraction));
-    const Eigen::Matrix3d linear = poses.back ().topLeftCorner<3, 3> ();
-    angles.push_back (Eigen::AngleAxisd (linear / std::cbrt (linear.determinant ())).angle ());
+  const auto count = static_cast<long> (rotations.size ());
+  std::vector<Eigen::Matrix4d> poses (count);
+  std::vector<double> scores (count), angles (count);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long h = 0; h < count; ++h) {
+    const Eigen::Matrix4d start = similarityAbout (frame.scale, rotations[h], frame.from.centroid, frame.to.centroid);
+    poses[h] = refineSimilarity (tree, surface.points, surface.normals, frame.to.centroid, samples, start, settings);
+    scores[h] = symmetricScore (*tree, samples, target_samples, poses[h], settings.inlier_fraction);
+    const Eigen::Matrix3d linear = poses[h].topLeftCorner<3, 3> ();
+    angles[h] = Eigen::AngleAxisd (linear / std::cbrt (linear.determinant ())).angle ();
   }
   const double best = *std::min_element (scores.begin (), scores.end ());
   size_t chosen = 0;

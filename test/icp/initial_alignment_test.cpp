@@ -6,7 +6,11 @@
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/synthetic/head_generator.h>
 
+#include <pcl/search/kdtree.h>
+
 #include <gtest/gtest.h>
+
+#include <atomic>
 
 #include <Eigen/Geometry>
 
@@ -46,6 +50,25 @@ TEST (InitialAlignmentTest, RobustCoarseSimilarityRecoversTheProtocolPose)
     EXPECT_NEAR (found_scale / true_scale, 1.0, 0.02) << "seed " << seed;
     EXPECT_LT (rms, 3.0) << "seed " << seed << ": vertex RMS against the posed truth (mm)";
   }
+}
+
+TEST (InitialAlignmentTest, RobustCoarseSimilarityUsesTheCallersNeighbourSearch)
+{
+  const morphreg::synthetic::HeadGenerator generator;
+  const morphreg::TriangleMesh head = generator.sample (7).mesh;
+  const auto scan = morphreg::test::simulateProtocolScan (head, generator.landmarks (), 11);
+  const Eigen::Matrix3Xd target = scanPoints (scan);
+  pcl::search::KdTree<pcl::PointNormal> tree;
+  tree.setInputCloud (scan.cloud);
+  std::atomic<long> calls{0};
+  const auto neighbours = [&] (Eigen::Index i, int k, pcl::Indices& indices, std::vector<float>& squared) {
+    ++calls;
+    tree.nearestKSearch ((*scan.cloud)[i], k, indices, squared);
+  };
+  const Eigen::Matrix4d own_tree = morphreg::robustCoarseSimilarity (head.vertices, target);
+  const Eigen::Matrix4d callers_tree = morphreg::robustCoarseSimilarity (head.vertices, target, neighbours);
+  EXPECT_EQ (calls.load (), target.cols ()) << "one neighbourhood query per target point";
+  EXPECT_TRUE (callers_tree.isApprox (own_tree, 1e-9)) << callers_tree << "\nvs\n" << own_tree;
 }
 
 TEST (InitialAlignmentTest, RobustCoarseSimilarityRejectsBadInput)

@@ -3,7 +3,12 @@
  *  \brief Starting similarities for MorphableICP: from landmark pairs (Umeyama), or a coarse guess from centroids,
  *  principal axes and extents for scans whose orientation is roughly known.
  */
+#include <pcl/types.h>
+
 #include <Eigen/Core>
+
+#include <functional>
+#include <vector>
 
 namespace morphreg
 {
@@ -44,6 +49,20 @@ struct CoarseAlignmentSettings
  */
 Eigen::Matrix4d
 robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                        const CoarseAlignmentSettings& settings = CoarseAlignmentSettings ());
+
+/** \brief The \a k nearest target points of target point \a i (itself included): their indices and squared distances,
+ *  as pcl::search::Search::nearestKSearch gives them. Called from several threads at once.
+ */
+using TargetNeighbourSearch =
+    std::function<void (Eigen::Index i, int k, pcl::Indices& indices, std::vector<float>& squared_distances)>;
+
+/** \brief robustCoarseSimilarity with the target's neighbourhoods from a search the caller already has (e.g. a
+ *  registration's target k-d tree), so the target's tree is not built a second time.
+ */
+Eigen::Matrix4d
+robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                        const TargetNeighbourSearch& target_neighbours,
                         const CoarseAlignmentSettings& settings = CoarseAlignmentSettings ());
 
 } // namespace morphreg

@@ -4,6 +4,7 @@
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/registration/morphable_icp.h>
 
@@ -16,6 +17,7 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -137,45 +139,6 @@ robustWeight (RobustLoss loss, double d, double c)
   return 1.0;
 }
 
-/** The default correspondence estimation: pcl::registration::CorrespondenceEstimation (each source point's nearest
- *  target point within the distance, in source-index order) with the k-d tree queries spread over OpenMP threads:
- *  they are most of an iteration's time and PCL runs them serially.
- */
-template <typename PointT, typename Scalar>
-class ParallelCorrespondenceEstimation
-  : public pcl::registration::CorrespondenceEstimation<PointT, PointT, Scalar>
-{
-public:
-  void
-  determineCorrespondences (pcl::Correspondences& correspondences, double max_distance) override
-  {
-    if (!this->initCompute ())
-      return;
-    const pcl::Indices& indices = *this->indices_;
-    const auto n = static_cast<long> (indices.size ());
-    pcl::Indices matches (n);
-    std::vector<float> distances (n);
-#pragma omp parallel
-    {
-      pcl::Indices index (1);
-      std::vector<float> distance (1);
-#pragma omp for schedule(dynamic, 256)
-      for (long i = 0; i < n; ++i) {
-        this->tree_->nearestKSearch ((*this->input_)[indices[i]], 1, index, distance);
-        matches[i] = index[0];
-        distances[i] = distance[0];
-      }
-    }
-    const double max_squared = max_distance * max_distance;
-    correspondences.clear ();
-    correspondences.reserve (n);
-    for (long i = 0; i < n; ++i)
-      if (!(distances[i] > max_squared))
-        correspondences.emplace_back (indices[i], matches[i], distances[i]);
-    this->deinitCompute ();
-  }
-};
-
 /** Unit normal of \a neighbours' least-squares plane and whether the largest angular gap between them around
  *  \a centre, in that plane, exceeds 90 degrees (a boundary point).
  */
@@ -205,7 +168,7 @@ MorphableICP<PointTarget, Scalar>::MorphableICP ()
 {
   this->reg_name_ = "MorphableICP";
   this->max_iterations_ = 50;
-  this->correspondence_estimation_.reset (new detail::ParallelCorrespondenceEstimation<PointTarget, Scalar>);
+  this->correspondence_estimation_.reset (new CachedCorrespondenceEstimation<PointTarget, PointTarget, Scalar>);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -436,7 +399,13 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess) 
   for (size_t i = 0; i < this->target_->size (); ++i)
     target.col (i) = (*this->target_)[i].getVector3fMap ().template cast<double> ();
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
-  return robustCoarseSimilarity (mean, target);
+  // align() has built the target's k-d tree: the coarse start takes its neighbourhoods from it.
+  const auto& tree = *this->tree_;
+  const PointCloudTarget& cloud = *this->target_;
+  const auto neighbours = [&tree, &cloud] (Eigen::Index i, int k, pcl::Indices& indices, std::vector<float>& squared) {
+    tree.nearestKSearch (cloud[i], k, indices, squared);
+  };
+  return robustCoarseSimilarity (mean, target, neighbours);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -639,14 +608,17 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
 
   Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero (dim, dim);
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero (dim);
-#pragma omp parallel
+  // The similarity stage's 7 x 7 system is too small to be worth an OpenMP fork-join.
+#pragma omp parallel if (problem.shape)
   {
     Eigen::MatrixXd h = Eigen::MatrixXd::Zero (dim, dim);
     Eigen::VectorXd g = Eigen::VectorXd::Zero (dim);
     Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian (3, max_columns);
+    Eigen::Matrix<double, 3, Eigen::Dynamic> weighted (3, max_columns);
     Eigen::MatrixXd block (max_columns, max_columns);
     Eigen::VectorXd rhs (max_columns);
-    std::vector<int> columns (max_columns);
+    // Column ranges of one row's Jacobian: {first local column, first unknown, count}; the similarity first.
+    std::vector<std::array<int, 3>> ranges;
 #pragma omp for schedule(static) nowait
     for (long c = 0; c < kept + landmarks; ++c) {
       int vertex;
@@ -658,8 +630,7 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
       jacobian.col (0) = rotated;
       jacobian.template middleCols<3> (1) = -detail::skew (rotated);
       jacobian.template middleCols<3> (4).setIdentity ();
-      for (int k = 0; k < 7; ++k)
-        columns[k] = k;
+      ranges.assign (1, {0, 0, 7});
       int k = 7;
       if (problem.shape)
         for (const RegionEntry& e : model_->vertexEntries (vertex)) {
@@ -667,18 +638,17 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
           if (count == 0)
             continue;
           jacobian.middleCols (k, count).noalias () = (e.weight * sr) * model_->regionRows (e.region, e.row, count);
-          for (int a = 0; a < count; ++a)
-            columns[k + a] = 7 + selection.offset (e.region) + a;
+          ranges.push_back ({k, 7 + selection.offset (e.region), count});
           k += count;
         }
-      const auto j = jacobian.leftCols (k);
-      const Eigen::Matrix<double, Eigen::Dynamic, 3> jw = j.transpose () * metric;
-      block.topLeftCorner (k, k).noalias () = jw * j;
-      rhs.head (k).noalias () = jw * residual;
-      for (int a = 0; a < k; ++a) {
-        g[columns[a]] += rhs[a];
-        for (int b = 0; b < k; ++b)
-          h (columns[a], columns[b]) += block (a, b);
+      // J^T W J and J^T W r, coefficient-wise (no GEMM dispatch for these small sizes), added block by block.
+      weighted.leftCols (k).noalias () = metric * jacobian.leftCols (k);
+      block.topLeftCorner (k, k).noalias () = weighted.leftCols (k).transpose ().lazyProduct (jacobian.leftCols (k));
+      rhs.head (k).noalias () = weighted.leftCols (k).transpose () * residual;
+      for (const auto& a : ranges) {
+        g.segment (a[1], a[2]) += rhs.segment (a[0], a[2]);
+        for (const auto& b : ranges)
+          h.block (a[1], b[1], a[2], b[2]) += block.block (a[0], b[0], a[2], b[2]);
       }
     }
 #pragma omp critical
