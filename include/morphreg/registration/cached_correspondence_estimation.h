@@ -57,14 +57,20 @@ private:
   void
   resetCache (std::size_t points);
 
-  /** Nearest target point of source point \a i (index, or -1 for none, and squared distance): from the cache when it
-   *  is provably right, else from the tree, which refills the cache. Returns whether the tree was queried.
+  /** Whether the cache proves which target point is nearest to source point \a i; if so, \a match and
+   *  \a squared_distance are set.
    */
   bool
-  nearest (pcl::index_t i, pcl::index_t& match, float& squared_distance);
+  fromCache (pcl::index_t i, pcl::index_t& match, float& squared_distance) const;
 
+  /** Nearest target point of source point \a i from the tree (index, or -1 for none, and squared distance); its
+   *  kCandidates nearest refill the cache.
+   */
   void
-  query (pcl::index_t i, const Eigen::Vector3f& position, pcl::index_t& match, float& squared_distance);
+  query (pcl::index_t i, pcl::index_t& match, float& squared_distance);
+
+  /** Fewer tree queries than this in one call run on one thread. */
+  static constexpr long kParallelQueries = 256;
 
   std::vector<Eigen::Vector3f> anchors_; ///< where each source point last queried the tree (NaN: never)
   std::vector<pcl::index_t> candidates_; ///< its kCandidates nearest target points then (-1: none)

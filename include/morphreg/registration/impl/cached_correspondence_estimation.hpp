@@ -25,10 +25,16 @@ CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::determineCorre
   const auto n = static_cast<long> (indices.size ());
   pcl::Indices matches (n);
   std::vector<float> distances (n);
-  long queries = 0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(+ : queries)
+  // The cache checks are cheap and serial; the tree queries left over are spread over the threads when they are
+  // enough to be worth a fork-join (on a busy machine one costs a scheduler time slice).
+  std::vector<long> misses;
   for (long i = 0; i < n; ++i)
-    queries += nearest (indices[i], matches[i], distances[i]) ? 1 : 0;
+    if (!fromCache (indices[i], matches[i], distances[i]))
+      misses.push_back (i);
+  const auto queries = static_cast<long> (misses.size ());
+#pragma omp parallel for schedule(dynamic, 64) if (queries > kParallelQueries)
+  for (long m = 0; m < queries; ++m)
+    query (indices[misses[m]], matches[misses[m]], distances[misses[m]]);
   tree_queries_ += queries;
   const double max_squared = max_distance * max_distance;
   correspondences.clear ();
@@ -50,43 +56,38 @@ CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::resetCache (st
 
 template <typename PointSource, typename PointTarget, typename Scalar>
 bool
-CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::nearest (pcl::index_t i, pcl::index_t& match,
-                                                                           float& squared_distance)
+CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::fromCache (pcl::index_t i, pcl::index_t& match,
+                                                                             float& squared_distance) const
 {
   const Eigen::Vector3f position = (*this->input_)[i].getVector3fMap ();
   const float moved = (position - anchors_[i]).norm (); // NaN for a point never queried: the test below fails
-  if (moved < reach_[i]) {
-    const pcl::index_t* candidates = &candidates_[static_cast<std::size_t> (i) * kCandidates];
-    float best = std::numeric_limits<float>::infinity ();
-    for (int k = 0; k < kCandidates && candidates[k] >= 0; ++k) {
-      const float d = (position - (*this->target_)[candidates[k]].getVector3fMap ()).squaredNorm ();
-      if (d < best) {
-        best = d;
-        match = candidates[k];
-      }
-    }
-    const float margin = reach_[i] - moved;
-    if (best <= margin * margin) {
-      squared_distance = best;
-      return false;
+  if (!(moved < reach_[i]))
+    return false;
+  const pcl::index_t* candidates = &candidates_[static_cast<std::size_t> (i) * kCandidates];
+  float best = std::numeric_limits<float>::infinity ();
+  for (int k = 0; k < kCandidates && candidates[k] >= 0; ++k) {
+    const float d = (position - (*this->target_)[candidates[k]].getVector3fMap ()).squaredNorm ();
+    if (d < best) {
+      best = d;
+      match = candidates[k];
     }
   }
-  query (i, position, match, squared_distance);
-  return true;
+  const float margin = reach_[i] - moved;
+  squared_distance = best;
+  return best <= margin * margin;
 }
 
 template <typename PointSource, typename PointTarget, typename Scalar>
 void
-CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::query (pcl::index_t i,
-                                                                        const Eigen::Vector3f& position,
-                                                                        pcl::index_t& match, float& squared_distance)
+CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::query (pcl::index_t i, pcl::index_t& match,
+                                                                        float& squared_distance)
 {
   PointTarget point;
   pcl::copyPoint ((*this->input_)[i], point);
   pcl::Indices found;
   std::vector<float> squared;
   this->tree_->nearestKSearch (point, kCandidates, found, squared);
-  anchors_[i] = position;
+  anchors_[i] = point.getVector3fMap ();
   reach_[i] = 0.0f;
   match = -1;
   squared_distance = std::numeric_limits<float>::infinity ();
