@@ -68,6 +68,7 @@ protected:
     Icp icp;
     icp.setModel (*model_);
     icp.setPointToPlane (true);
+    icp.setGraduatedRobustLoss (true); // the protocol's scans cover the head up to their holes
     return icp;
   }
 
@@ -126,11 +127,15 @@ TEST_F (MorphableIcpTest, HeadsWithinTheModelFitFromLandmarkAndCoarseStarts)
       EXPECT_LE (report.history.size (), 50u);
     }
   }
-  // Measured 0.45-0.83 mm on 19 of 20 heads per start; the exceptions (the issue asks <= 1.0 mm on every head):
-  // head 4 from the landmark start (1.33 mm, while its coarse start reaches 0.79 mm: a different basin) and
-  // head 16 from the coarse start (2.36 mm: the guard stops a coefficient drifting beyond 8 standard deviations).
-  EXPECT_LE (over_target[true], 2) << "heads above 1.0 mm from the landmark start";
-  EXPECT_LE (over_target[false], 2) << "heads above 1.0 mm from the coarse start";
+  // Issue target: <= 1.0 mm on every head from both starts, within 50 iterations. Measured: landmark start 20/20 at
+  // 0.43-0.96 mm, coarse start 19/20 at 0.44-0.77 mm, 14-34 iterations. The exception, head 16 from the coarse start
+  // (1.08 mm): its chin region's first component is +2.4 sigma and mostly moves the chin's underside, which the
+  // protocol's under-chin hole removes; without the chin landmark the prior pulls that component back (the landmark
+  // start reaches 0.96 mm). Before the landmark weight 1, the weak first-phase lambda_1, the halved reversing updates
+  // and the graduated loss: 1.33 mm (head 4, landmark start: its nose bent by the landmarks' 2 mm noise at weight 10)
+  // and 2.36 mm (head 16, coarse start: stalled under lambda_1 = 1, then the shape flipping between two states).
+  EXPECT_EQ (over_target[true], 0) << "heads above 1.0 mm from the landmark start";
+  EXPECT_LE (over_target[false], 1) << "heads above 1.0 mm from the coarse start";
 }
 
 TEST_F (MorphableIcpTest, UnseenHeadsFitCloseToTheirModelFloor)
@@ -141,8 +146,10 @@ TEST_F (MorphableIcpTest, UnseenHeadsFitCloseToTheirModelFloor)
   int within_twice_floor = 0;
   for (int head = 0; head < kTestHeads; ++head) {
     const auto unseen = generator_->sample (kUnseenSeed + head);
-    const double floor = model.project (unseen.mesh, selection).rms_error;
     const auto scan = morphreg::test::simulateProtocolScan (unseen.mesh, startLandmarks (model), 200 + head);
+    // The floor: the best least-squares fit of the selection, in the scan's frame (scaled like the head), as the RMS.
+    const double pose_scale = std::cbrt (scan.pose.topLeftCorner<3, 3> ().determinant ());
+    const double floor = pose_scale * model.project (unseen.mesh, selection).rms_error;
     Icp icp = makeIcp ();
     icp.setComponentSelection (selection);
     icp.setTargetLandmarks (scan.landmarks);
@@ -153,8 +160,10 @@ TEST_F (MorphableIcpTest, UnseenHeadsFitCloseToTheirModelFloor)
     within_twice_floor += rms <= 2.0 * floor ? 1 : 0;
     errors.push_back (rms);
   }
-  // Measured 0.52-1.92 mm; heads 0 (1.92 mm, floor 0.63) and 19 (1.19 mm, floor 0.50) miss the issue's 2x floor.
-  EXPECT_GE (within_twice_floor, kTestHeads - 2) << "heads within twice their floor";
+  // Issue target: every head <= 2x its floor. Measured: 0.42-1.36 mm, 0.45-1.88x the floor (head 19: 1.09 mm,
+  // floor 0.58 mm), 17-29 iterations. Without the graduated loss, head 0 stays at 3.3x (2.02 mm): Tukey gives its
+  // skull, several mm higher than the mean's, weight 0.
+  EXPECT_EQ (within_twice_floor, kTestHeads) << "heads within twice their floor";
   std::nth_element (errors.begin (), errors.begin () + kTestHeads / 2, errors.end ());
   EXPECT_LE (errors[kTestHeads / 2], 2.0) << "median";
 }
@@ -396,7 +405,7 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
     icp.setRobustLoss (loss);
     const double rms = fit (icp, scan);
     std::printf ("[ robust ] %s: RMS %.3f mm\n", loss == morphreg::RobustLoss::huber ? "huber" : "tukey", rms);
-    EXPECT_LE (rms, 2.5) << "measured 1.63 (Huber) and 1.65 mm (Tukey)";
+    EXPECT_LE (rms, 2.5) << "measured 0.64 (Huber) and 0.62 mm (Tukey)";
   }
   Icp icp = makeIcp ();
   icp.setPointToPlane (false);
@@ -405,7 +414,7 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
   const double rms = fit (icp, scan);
   std::printf ("[ point-to-point ] RMS %.3f mm after %zu iterations\n", rms,
                icp.getRegistrationReport ().history.size ());
-  EXPECT_LE (rms, 2.5) << "point-to-point rows converge more slowly (measured 1.70 mm after 50 iterations)";
+  EXPECT_LE (rms, 2.5) << "point-to-point rows converge more slowly (measured 1.31 mm after 50 iterations)";
 }
 
 TEST_F (MorphableIcpTest, AreaWeightingFitsAndChangesTheWeights)
@@ -424,7 +433,7 @@ TEST_F (MorphableIcpTest, AreaWeightingFitsAndChangesTheWeights)
     coefficients[weighted] = icp.getShapeCoefficients ();
   }
   std::printf ("[ area weighting ] RMS %.3f mm (off), %.3f mm (on)\n", rms[0], rms[1]);
-  EXPECT_LE (rms[1], 1.5) << "measured 0.89 mm (0.78 mm unweighted: this model samples the surface evenly)";
+  EXPECT_LE (rms[1], 1.5) << "measured 0.82 mm (0.74 mm unweighted: this model samples the surface evenly)";
   EXPECT_GT ((coefficients[1] - coefficients[0]).norm (), 1e-6) << "the area weights take part in the fit";
 }
 

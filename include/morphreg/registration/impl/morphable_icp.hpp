@@ -233,10 +233,7 @@ MorphableICP<PointTarget, Scalar>::effectiveShapeSchedule () const
 {
   if (!schedule_.empty ())
     return schedule_;
-  std::vector<ShapePhase> phases{{selection_, lambda1_}};
-  if (refinement_lambda1_ != lambda1_)
-    phases.push_back ({selection_, refinement_lambda1_});
-  return phases;
+  return {{selection_, lambda1_}, {selection_, refinement_lambda1_}};
 }
 
 template <typename PointTarget, typename Scalar>
@@ -468,7 +465,7 @@ MorphableICP<PointTarget, Scalar>::prepareTargetPoints (const pcl::Correspondenc
 
 template <typename PointTarget, typename Scalar>
 typename MorphableICP<PointTarget, Scalar>::Evaluation
-MorphableICP<PointTarget, Scalar>::evaluate (const State& state)
+MorphableICP<PointTarget, Scalar>::evaluate (const State& state, RobustLoss loss)
 {
   Evaluation ev;
   ev.transformed = state.transformed ();
@@ -533,13 +530,13 @@ MorphableICP<PointTarget, Scalar>::evaluate (const State& state)
   ev.error = kept > 0 ? sum / static_cast<double> (kept) : std::numeric_limits<double>::infinity ();
 
   double width = robust_scale_;
-  if (robust_loss_ != RobustLoss::none && width <= 0.0) {
+  if (loss != RobustLoss::none && width <= 0.0) {
     const double sigma = 1.4826 * detail::medianOf (ev.distances);
-    width = (robust_loss_ == RobustLoss::huber ? 1.345 : 4.685) * std::max (sigma, 1e-6);
+    width = (loss == RobustLoss::huber ? 1.345 : 4.685) * std::max (sigma, 1e-6);
   }
   ev.weights.resize (kept);
   for (size_t c = 0; c < kept; ++c)
-    ev.weights[c] = detail::robustWeight (robust_loss_, ev.distances[c], width) *
+    ev.weights[c] = detail::robustWeight (loss, ev.distances[c], width) *
                     (area_weighting_ ? vertex_area_weights_[ev.kept[c].index_query] : 1.0);
   return ev;
 }
@@ -705,6 +702,20 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
 
 template <typename PointTarget, typename Scalar>
 void
+MorphableICP<PointTarget, Scalar>::dampReversal (State& state, const Eigen::VectorXd& before, const Problem& problem,
+                                                 Eigen::VectorXd& previous_change) const
+{
+  Eigen::VectorXd change = (state.coefficients - before).cwiseQuotient (problem.sigma);
+  if (previous_change.size () == change.size () && change.dot (previous_change) < 0.0) {
+    change *= 0.5;
+    state.coefficients = before + change.cwiseProduct (problem.sigma);
+    state.model_vertices = model_->generate (state.coefficients, state.selection);
+  }
+  previous_change = change;
+}
+
+template <typename PointTarget, typename Scalar>
+void
 MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& output, const Matrix4& guess)
 {
   validateInputs ();
@@ -766,6 +777,9 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   const int runs = 1 + static_cast<int> (phases.size ());
   for (int run = 0; run < runs; ++run) {
     problem.shape = run > 0;
+    const RobustLoss loss = graduated_loss_ && robust_loss_ == RobustLoss::tukey && run + 1 < runs
+                                ? RobustLoss::huber
+                                : robust_loss_;
     const IcpStage stage = problem.shape ? IcpStage::shape : IcpStage::similarity;
     if (problem.shape) {
       const ShapePhase& phase = phases[run - 1];
@@ -789,13 +803,14 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
     const int p = problem.shape ? problem.selection.total () : 0;
     const int unknowns = (estimate_scale_ ? 7 : 6) + p;
     double previous_error = std::numeric_limits<double>::infinity ();
+    Eigen::VectorXd previous_change; // the last update of the coefficients, in prior standard deviations
     int rising = 0;
     best = state;
     best_cost = std::numeric_limits<double>::infinity ();
     report_.termination = IcpTermination::max_iterations;
     for (int it = 0; it < budget; ++it) {
       const auto start = std::chrono::steady_clock::now ();
-      const Evaluation ev = evaluate (state);
+      const Evaluation ev = evaluate (state, loss);
       const int rows = static_cast<int> (ev.kept.size () + problem.landmark_vertices.size ());
       if (rows < unknowns)
         throw InvalidInputError ("MorphableICP: " + std::to_string (ev.kept.size ()) + " correspondences (of " +
@@ -825,11 +840,14 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       if (diverged)
         break;
       const Eigen::Matrix3Xd before = ev.transformed;
+      const Eigen::VectorXd before_coefficients = state.coefficients;
       if (!step (state, ev, problem, total_cost)) {
         diverged = true;
         report_.message = "the normal equations could not be solved";
         break;
       }
+      if (problem.shape && p > 0)
+        dampReversal (state, before_coefficients, problem, previous_change);
       const double motion = (state.transformed () - before).colwise ().squaredNorm ().mean ();
       const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
       report_.history.push_back ({stage, ev.error, ev.found, static_cast<int> (ev.kept.size ()), seconds});
@@ -858,11 +876,11 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   if (diverged)
     report_.termination = IcpTermination::diverged;
 
-  Evaluation final_ev = evaluate (state);
+  Evaluation final_ev = evaluate (state, robust_loss_);
   const double final_rows = static_cast<double> (final_ev.kept.size () + problem.landmark_vertices.size ());
   if (objective (state, final_ev, problem) / final_rows > best_cost) {
     state = best;
-    final_ev = evaluate (state);
+    final_ev = evaluate (state, robust_loss_);
   }
   finish (state, output);
   vertex_residuals_ = Eigen::VectorXd::Constant (model_->numVertices (), std::numeric_limits<double>::quiet_NaN ());
