@@ -52,7 +52,7 @@ struct RegisterOptions
   bool point_to_plane = true;
   double tangential_weight = 0.02; ///< point-to-point share kept along the tangent plane
   double shape_prior = 3.0;        ///< lambda_2
-  double landmark_weight = 10.0;   ///< one landmark counts as this many correspondences
+  double landmark_weight = 1.0;    ///< one landmark counts as this many correspondences (MorphableICP default)
   bool area_weighting = false;     ///< weigh model vertices by their surface area
   std::string loss = "tukey";
   double loss_scale = 0.0;

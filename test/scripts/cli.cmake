@@ -69,9 +69,10 @@ set_tests_properties(CliTest.RegisterSynthScanMatchesTruth PROPERTIES FIXTURES_R
 add_test(NAME CliTest.RegisterReportIsComplete
   COMMAND ${CMAKE_COMMAND} -DREPORT=${cli_dir}/fit.json -DMAX_TRUTH_RMS=1.0 -P ${cli_scripts}/check_register_report.cmake)
 set_tests_properties(CliTest.RegisterReportIsComplete PROPERTIES FIXTURES_REQUIRED cli_fit)
+# The synthetic scan's landmarks are exact: weighted 10 (the default 1 suits landmarks placed with a few mm of error).
 add_test(NAME CliTest.RegisterWithRejectorChainAndLandmarks
   COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
-          --landmarks ${cli_dir}/small/scan_0_landmarks.json --reject-distance 20 --reject-median 3
+          --landmarks ${cli_dir}/small/scan_0_landmarks.json --landmark-weight 10 --reject-distance 20 --reject-median 3
           --reject-one-to-one --reject-trimmed 0.95 --point-to-point --loss huber --components 5 --iterations 40
           --truth ${cli_dir}/small/scan_0_truth.ply --quiet --out ${cli_dir}/fit_rejectors.ply)
 set_tests_properties(CliTest.RegisterWithRejectorChainAndLandmarks PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
