@@ -171,6 +171,8 @@ showIterations (Icp& icp, const Progress& progress)
   std::function<Icp::UpdateVisualizerCallbackSignature> callback = [&progress, iteration] (
       const pcl::PointCloud<pcl::PointNormal>& source, const pcl::Indices& source_indices,
       const pcl::PointCloud<pcl::PointNormal>& target, const pcl::Indices& target_indices) {
+    if (source_indices.empty ())
+      return; // PCL's registerVisualizationCallback calls once at registration, before any iteration
     double squares = 0.0;
     for (std::size_t k = 0; k < source_indices.size (); ++k)
       squares += (source[source_indices[k]].getVector3fMap () - target[target_indices[k]].getVector3fMap ())
