@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -324,10 +325,12 @@ symmetricScore (const PointTree& tree, const Eigen::Matrix3Xd& samples,
 void
 requireSettings (const CoarseAlignmentSettings& settings)
 {
-  if (!(settings.sample_points >= 4) || settings.refine_iterations < 0 || !(settings.inlier_fraction > 0.0) ||
+  if (!(settings.sample_points >= 4) || settings.refine_iterations < 0 || settings.screen_iterations < 0 ||
+      settings.survivors < 1 || !(settings.inlier_fraction > 0.0) ||
       !(settings.inlier_fraction <= 1.0) || !(settings.tie_tolerance >= 0.0) ||
       !std::isfinite (settings.hypothesis_angle_deg))
     throw InvalidInputError ("robustCoarseSimilarity: the settings need sample_points >= 4, refine_iterations >= 0, "
+                             "screen_iterations >= 0, survivors >= 1, "
                              "0 < inlier_fraction <= 1, tie_tolerance >= 0 and a finite hypothesis_angle_deg");
 }
 } // namespace
@@ -394,23 +397,42 @@ robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& 
   const Eigen::Matrix3Xd target_samples = evenSamples (surface.points, settings.sample_points);
   const auto count = static_cast<long> (rotations.size ());
   std::vector<Eigen::Matrix4d> poses (count);
-  std::vector<double> scores (count), angles (count);
+  std::vector<double> scores (count);
+  for (long h = 0; h < count; ++h)
+    poses[h] = similarityAbout (frame.scale, rotations[h], frame.from.centroid, frame.to.centroid);
+  // Refines and scores the hypotheses \a active by \a iterations steps each, in parallel (each one serially).
+  const auto refine = [&] (const std::vector<long>& active, int iterations) {
+    CoarseAlignmentSettings round = settings;
+    round.refine_iterations = iterations;
 #pragma omp parallel for schedule(dynamic, 1)
-  for (long h = 0; h < count; ++h) {
-    const Eigen::Matrix4d start = similarityAbout (frame.scale, rotations[h], frame.from.centroid, frame.to.centroid);
-    poses[h] = refineSimilarity (tree, surface.points, surface.normals, frame.to.centroid, samples, start, settings);
-    scores[h] = symmetricScore (*tree, samples, target_samples, poses[h], settings.inlier_fraction);
-    const Eigen::Matrix3d linear = poses[h].topLeftCorner<3, 3> ();
-    angles[h] = Eigen::AngleAxisd (linear / std::cbrt (linear.determinant ())).angle ();
-  }
-  const double best = *std::min_element (scores.begin (), scores.end ());
-  size_t chosen = 0;
+    for (std::size_t k = 0; k < active.size (); ++k) {
+      const long h = active[k];
+      poses[h] = refineSimilarity (tree, surface.points, surface.normals, frame.to.centroid, samples, poses[h], round);
+      scores[h] = symmetricScore (*tree, samples, target_samples, poses[h], settings.inlier_fraction);
+    }
+  };
+  // Screening: every hypothesis a few steps; then only the best-scoring ones run the remaining steps.
+  std::vector<long> active (count);
+  std::iota (active.begin (), active.end (), 0L);
+  const int screening = std::min (settings.screen_iterations, settings.refine_iterations);
+  refine (active, screening);
+  std::sort (active.begin (), active.end (), [&scores] (long a, long b) { return scores[a] < scores[b]; });
+  active.resize (std::min<std::size_t> (active.size (), static_cast<std::size_t> (settings.survivors)));
+  refine (active, settings.refine_iterations - screening);
+
+  const double best = scores[*std::min_element (active.begin (), active.end (), [&scores] (long a, long b) {
+    return scores[a] < scores[b];
+  })];
+  long chosen = active.front ();
   double smallest_angle = std::numeric_limits<double>::infinity ();
-  for (size_t h = 0; h < poses.size (); ++h)
-    if (scores[h] <= best * (1.0 + settings.tie_tolerance) && angles[h] < smallest_angle) {
-      smallest_angle = angles[h];
+  for (const long h : active) {
+    const Eigen::Matrix3d linear = poses[h].topLeftCorner<3, 3> ();
+    const double angle = Eigen::AngleAxisd (linear / std::cbrt (linear.determinant ())).angle ();
+    if (scores[h] <= best * (1.0 + settings.tie_tolerance) && angle < smallest_angle) {
+      smallest_angle = angle;
       chosen = h;
     }
+  }
   return poses[chosen];
 }
 

@@ -85,4 +85,10 @@ TEST (InitialAlignmentTest, RobustCoarseSimilarityRejectsBadInput)
   morphreg::CoarseAlignmentSettings settings;
   settings.inlier_fraction = 0.0;
   EXPECT_THROW (morphreg::robustCoarseSimilarity (head, head, settings), morphreg::InvalidInputError);
+  settings = morphreg::CoarseAlignmentSettings ();
+  settings.survivors = 0;
+  EXPECT_THROW (morphreg::robustCoarseSimilarity (head, head, settings), morphreg::InvalidInputError);
+  settings = morphreg::CoarseAlignmentSettings ();
+  settings.screen_iterations = -1;
+  EXPECT_THROW (morphreg::robustCoarseSimilarity (head, head, settings), morphreg::InvalidInputError);
 }

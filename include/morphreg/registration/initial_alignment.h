@@ -33,7 +33,9 @@ struct CoarseAlignmentSettings
 {
   double hypothesis_angle_deg = 25.0; ///< tilt of the extra hypotheses about each axis, both directions
   int sample_points = 2000;           ///< source points (evenly strided) used by the refinement and the score
-  int refine_iterations = 20;         ///< similarity-only ICP iterations per hypothesis
+  int refine_iterations = 20;         ///< similarity-only ICP iterations per hypothesis that runs to the end
+  int screen_iterations = 5;          ///< iterations every hypothesis runs before the best-scoring ones go on
+  int survivors = 4;                  ///< hypotheses that go on after the screening
   double inlier_fraction = 0.7;       ///< share of the closest pairs kept in each refinement step and the score
   double tie_tolerance = 0.05;        ///< relative score margin within which the hypothesis rotating less wins
 };
@@ -41,9 +43,10 @@ struct CoarseAlignmentSettings
 /** \brief A coarse similarity mapping \a source onto \a target that tolerates holes, outliers and extra parts.
  *  Starts from several pose hypotheses sharing the trimmed centroids and spreads of coarseSimilarity: identity
  *  rotation, the principal-axis rotation in its four proper sign variants, and tilts by
- *  settings.hypothesis_angle_deg about each axis. Each is refined by a few trimmed similarity-only ICP steps
- *  (source samples -> closest target points, Umeyama) and scored by the trimmed mean of the source -> target and
- *  target -> source closest-point distances; the lowest score wins, and among scores within
+ *  settings.hypothesis_angle_deg about each axis. Each is refined by settings.screen_iterations trimmed
+ *  point-to-plane similarity-only ICP steps (source samples -> closest target points) and scored by the trimmed
+ *  mean of the source -> target and target -> source closest-point distances; the settings.survivors best go on to
+ *  settings.refine_iterations steps and are scored again. Among them the lowest score wins, and among scores within
  *  settings.tie_tolerance of it the smallest rotation (scans in roughly known orientation). Returns the refined
  *  winner. Throws InvalidInputError for fewer than 4 points, non-finite values, no spread or bad settings.
  */
