@@ -34,19 +34,46 @@ bumpySphere (int n, std::uint64_t seed)
   return cloud;
 }
 
-/** Expects \a cached to hold the correspondences of \a plain: the same source points and squared distances (up to
- *  float rounding: FLANN sums the squares in its own order), so the same or an equally near target point.
- */
-void
-expectSameCorrespondences (const pcl::Correspondences& cached, const pcl::Correspondences& plain)
+/** Ours and PCL's estimation, given the same inputs. */
+struct EstimationPair
 {
-  ASSERT_EQ (cached.size (), plain.size ());
-  for (size_t c = 0; c < plain.size (); ++c) {
-    ASSERT_EQ (cached[c].index_query, plain[c].index_query);
-    ASSERT_NEAR (cached[c].distance, plain[c].distance, 1e-5f * std::max (1.0f, plain[c].distance))
-        << "source point " << plain[c].index_query;
+  Cached cached;
+  Plain plain;
+
+  void
+  setTarget (const Cloud::Ptr& target)
+  {
+    cached.setInputTarget (target);
+    plain.setInputTarget (target);
   }
-}
+
+  void
+  setSource (const Cloud::Ptr& source, const pcl::IndicesPtr& indices = nullptr)
+  {
+    for (Plain* estimation : {static_cast<Plain*> (&cached), &plain}) {
+      estimation->setInputSource (source);
+      if (indices)
+        estimation->setIndicesSource (indices);
+    }
+  }
+
+  /** Expects both to find the same correspondences: the same source points and squared distances (up to float
+   *  rounding: FLANN sums the squares in its own order), so the same or an equally near target point.
+   */
+  void
+  expectSame (double max_distance = std::numeric_limits<double>::max ())
+  {
+    pcl::Correspondences a, b;
+    cached.determineCorrespondences (a, max_distance);
+    plain.determineCorrespondences (b, max_distance);
+    ASSERT_EQ (a.size (), b.size ());
+    for (size_t c = 0; c < b.size (); ++c) {
+      ASSERT_EQ (a[c].index_query, b[c].index_query);
+      ASSERT_NEAR (a[c].distance, b[c].distance, 1e-5f * std::max (1.0f, b[c].distance))
+          << "source point " << b[c].index_query;
+    }
+  }
+};
 
 /** Moves every point of \a cloud by a random step of about \a size (per axis). */
 void
@@ -62,27 +89,21 @@ TEST (CachedCorrespondenceEstimationTest, MatchesPclOnAMovingSourceWithFewerQuer
 {
   const Cloud::Ptr target = bumpySphere (20000, 1);
   Cloud::Ptr source = bumpySphere (2000, 2);
-  Cached cached;
-  Plain plain;
-  cached.setInputTarget (target);
-  plain.setInputTarget (target);
+  EstimationPair pair;
+  pair.setTarget (target);
   std::mt19937_64 rng (3);
   const std::vector<float> steps{5.0f, 2.0f, 0.5f, 0.2f, 0.05f, 0.01f, 0.01f, 3.0f, 0.02f, 0.0f};
   for (const float step : steps) {
     jitter (*source, step, rng);
-    cached.setInputSource (source);
-    plain.setInputSource (source);
+    pair.setSource (source);
     for (const double max_distance : {std::numeric_limits<double>::max (), 2.0}) {
-      pcl::Correspondences a, b;
-      cached.determineCorrespondences (a, max_distance);
-      plain.determineCorrespondences (b, max_distance);
       SCOPED_TRACE ("step " + std::to_string (step) + ", max distance " + std::to_string (max_distance));
-      expectSameCorrespondences (a, b);
+      pair.expectSame (max_distance);
     }
   }
   const long without_cache = 2 * static_cast<long> (steps.size () * source->size ());
-  std::printf ("[ cached ] %ld tree queries of %ld\n", cached.getTreeQueries (), without_cache);
-  EXPECT_LT (cached.getTreeQueries (), without_cache / 2) << "the small steps should mostly hit the cache";
+  std::printf ("[ cached ] %ld tree queries of %ld\n", pair.cached.getTreeQueries (), without_cache);
+  EXPECT_LT (pair.cached.getTreeQueries (), without_cache / 2) << "the small steps should mostly hit the cache";
 }
 
 TEST (CachedCorrespondenceEstimationTest, HonoursSourceIndicesAndANewTarget)
@@ -91,20 +112,12 @@ TEST (CachedCorrespondenceEstimationTest, HonoursSourceIndicesAndANewTarget)
   pcl::IndicesPtr every_third (new pcl::Indices);
   for (int i = 0; i < 1000; i += 3)
     every_third->push_back (i);
-  Cached cached;
-  Plain plain;
+  EstimationPair pair;
   for (const std::uint64_t seed : {5, 6}) {
-    const Cloud::Ptr target = bumpySphere (5000, seed);
-    for (auto* estimation : {static_cast<Plain*> (&cached), &plain}) {
-      estimation->setInputTarget (target);
-      estimation->setInputSource (source);
-      estimation->setIndicesSource (every_third);
-    }
-    pcl::Correspondences a, b;
-    cached.determineCorrespondences (a, 3.0);
-    plain.determineCorrespondences (b, 3.0);
+    pair.setTarget (bumpySphere (5000, seed));
+    pair.setSource (source, every_third);
     SCOPED_TRACE ("target " + std::to_string (seed));
-    expectSameCorrespondences (a, b);
+    pair.expectSame (3.0);
   }
 }
 
@@ -112,22 +125,16 @@ TEST (CachedCorrespondenceEstimationTest, TargetSmallerThanTheCandidatesAndClone
 {
   const Cloud::Ptr target = bumpySphere (Cached::kCandidates - 3, 7);
   Cloud::Ptr source = bumpySphere (50, 8);
-  Cached cached;
-  Plain plain;
-  cached.setInputTarget (target);
-  plain.setInputTarget (target);
+  EstimationPair pair;
+  pair.setTarget (target);
   std::mt19937_64 rng (9);
   for (int round = 0; round < 3; ++round) {
     jitter (*source, 20.0f, rng);
-    cached.setInputSource (source);
-    plain.setInputSource (source);
-    pcl::Correspondences a, b;
-    cached.determineCorrespondences (a);
-    plain.determineCorrespondences (b);
-    expectSameCorrespondences (a, b);
+    pair.setSource (source);
+    pair.expectSame ();
   }
-  EXPECT_EQ (cached.getTreeQueries (), 50) << "the whole target is every point's candidate set: one query each";
-  const auto copy = cached.clone ();
+  EXPECT_EQ (pair.cached.getTreeQueries (), 50) << "the whole target is every point's candidate set: one query each";
+  const auto copy = pair.cached.clone ();
   EXPECT_NE (std::dynamic_pointer_cast<Cached> (copy), nullptr);
 }
 
