@@ -1,5 +1,6 @@
 #include <morphreg/mesh/mesh_normals.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 namespace morphreg
@@ -52,6 +53,17 @@ triangleAreas (const TriangleMesh& mesh)
   for (Eigen::Index t = 0; t < mesh.numTriangles (); ++t)
     areas[t] = 0.5 * triangleCross (mesh, t).norm ();
   return areas;
+}
+
+PointPlane
+fitPlane (const Eigen::Matrix3Xd& points)
+{
+  PointPlane plane;
+  plane.centroid = points.rowwise ().mean ();
+  const Eigen::Matrix3Xd centred = points.colwise () - plane.centroid;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (centred * centred.transpose ());
+  plane.normal = solver.eigenvectors ().col (0);
+  return plane;
 }
 
 } // namespace morphreg

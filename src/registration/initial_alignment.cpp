@@ -1,4 +1,5 @@
 #include <morphreg/common/error.h>
+#include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/initial_alignment.h>
 
@@ -250,8 +251,7 @@ surfacePoints (const Eigen::Matrix3Xd& target, const TargetNeighbourSearch& targ
     Eigen::Matrix3Xd neighbours (3, index.size ());
     for (size_t j = 0; j < index.size (); ++j)
       neighbours.col (j) = target.col (index[j]);
-    const Eigen::Matrix3Xd centred = neighbours.colwise () - neighbours.rowwise ().mean ();
-    normals.col (i) = principalAxes (centred * centred.transpose ()).col (2);
+    normals.col (i) = fitPlane (neighbours).normal;
     reach[i] = std::sqrt (static_cast<double> (*std::max_element (squared.begin (), squared.end ())));
   }
   const double limit = 3.0 * trimmedLimit (reach, 0.5);

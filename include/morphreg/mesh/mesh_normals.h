@@ -1,6 +1,6 @@
 #pragma once
 /** \file mesh_normals.h
- *  \brief Face and area-weighted vertex normals of a triangle mesh.
+ *  \brief Face and area-weighted vertex normals of a triangle mesh, and the plane (normal) of a point neighbourhood.
  */
 #include <morphreg/mesh/triangle_mesh.h>
 
@@ -17,5 +17,16 @@ vertexNormals (const TriangleMesh& mesh);
 /** \brief Area of each triangle (mm^2). */
 Eigen::VectorXd
 triangleAreas (const TriangleMesh& mesh);
+
+/** \brief The least-squares plane through a set of points: their centroid and the unit normal. */
+struct PointPlane
+{
+  Eigen::Vector3d centroid;
+  Eigen::Vector3d normal; ///< the direction of least spread (sign arbitrary; any unit vector for collinear points)
+};
+
+/** \brief The least-squares plane of \a points (3 x K, K >= 1), e.g. a scan point's k nearest neighbours. */
+PointPlane
+fitPlane (const Eigen::Matrix3Xd& points);
 
 } // namespace morphreg

@@ -12,7 +12,6 @@
 #include <pcl/registration/correspondence_estimation.h>
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
@@ -442,19 +441,16 @@ MorphableICP<PointTarget, Scalar>::prepareTargetPoints (const pcl::Correspondenc
     Eigen::Matrix3Xd points (3, neighbours.size ());
     for (size_t j = 0; j < neighbours.size (); ++j)
       points.col (j) = target[neighbours[j]].getVector3fMap ().template cast<double> ();
-    const Eigen::Vector3d centroid = points.rowwise ().mean ();
-    const Eigen::Matrix3Xd centred = points.colwise () - centroid;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (centred * centred.transpose ());
-    const Eigen::Vector3d plane_normal = solver.eigenvectors ().col (0);
+    const PointPlane plane = fitPlane (points);
     const Eigen::Vector3d point = target[i].getVector3fMap ().template cast<double> ();
-    target_points_.col (i) = smooth_target_ && plane_normal.allFinite ()
-                                 ? Eigen::Vector3d (point - plane_normal * plane_normal.dot (point - centroid))
+    target_points_.col (i) = smooth_target_ && plane.normal.allFinite ()
+                                 ? Eigen::Vector3d (point - plane.normal * plane.normal.dot (point - plane.centroid))
                                  : point;
     Eigen::Vector3d normal = Eigen::Vector3d::Zero ();
     if constexpr (pcl::traits::has_normal_v<PointTarget>)
       normal = target[i].getNormalVector3fMap ().template cast<double> ();
     if (!normal.allFinite () || normal.norm () < 1e-6)
-      normal = plane_normal;
+      normal = plane.normal;
     normal.normalize ();
     target_normals_.col (i) = normal;
     const bool has_normal = normal.allFinite ();
