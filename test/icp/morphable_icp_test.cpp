@@ -13,6 +13,7 @@
 #include <pcl/registration/correspondence_rejection_surface_normal.h>
 #include <pcl/registration/correspondence_rejection_trimmed.h>
 #include <pcl/registration/correspondence_rejection_var_trimmed.h>
+#include <pcl/registration/correspondence_estimation_normal_shooting.h>
 #include <pcl/registration/icp.h>
 
 #include <gtest/gtest.h>
@@ -415,6 +416,28 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
   std::printf ("[ point-to-point ] RMS %.3f mm after %zu iterations\n", rms,
                icp.getRegistrationReport ().history.size ());
   EXPECT_LE (rms, 2.5) << "point-to-point rows converge more slowly (measured 1.31 mm after 50 iterations)";
+}
+
+TEST_F (MorphableIcpTest, NormalShootingCorrespondenceEstimationFits)
+{
+  const MorphableModel& model = **model_;
+  const morphreg::ComponentSelection selection = model.firstComponents (10);
+  const auto scan = withinModelScan (model, selection, 13, 400);
+  Eigen::VectorXd coefficients[2];
+  for (const bool shooting : {false, true}) {
+    Icp icp = makeIcp ();
+    icp.setComponentSelection (selection);
+    icp.setTargetLandmarks (scan.landmarks);
+    if (shooting) // the model's vertex normals go to it each iteration
+      icp.setCorrespondenceEstimation (
+          pcl::make_shared<pcl::registration::CorrespondenceEstimationNormalShooting<pcl::PointNormal, pcl::PointNormal,
+                                                                                     pcl::PointNormal>> ());
+    const double rms = fit (icp, scan);
+    std::printf ("[ estimation ] %s: RMS %.3f mm\n", shooting ? "normal shooting" : "nearest neighbour", rms);
+    EXPECT_LE (rms, 1.0) << (shooting ? "normal shooting" : "nearest neighbour") << " (measured 0.74 / 0.72 mm)";
+    coefficients[shooting ? 1 : 0] = icp.getShapeCoefficients ();
+  }
+  EXPECT_GT ((coefficients[1] - coefficients[0]).norm (), 1e-6) << "the normal-shooting estimation takes part";
 }
 
 TEST_F (MorphableIcpTest, AreaWeightingFitsAndChangesTheWeights)

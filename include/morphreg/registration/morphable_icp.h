@@ -55,7 +55,8 @@ enum class IcpInitialisation
  *  mm^2; 0 means 1e-4), setEuclideanFitnessEpsilon (absolute change of the cost per row between iterations, mm^2),
  *  addCorrespondenceRejector (every rejector, in order, each iteration), setCorrespondenceEstimation (default
  *  CachedCorrespondenceEstimation: PCL's nearest-neighbour correspondences with parallel, mostly cached queries, on
- *  the Registration's k-d tree, built once per target) and
+ *  the Registration's k-d tree, built once per target; estimations that need source normals, such as
+ *  CorrespondenceEstimationNormalShooting, get the model's vertex normals) and
  *  registerVisualizationCallback (called each iteration with the deformed model in the target frame and the
  *  accepted correspondences). The cost is
  *  sum_i w_i |r_i|^2_W + landmark_weight sum_l |r_l|^2 + lambda_1^2 |Gamma m|^2 + lambda_2^2 |Lambda m|^2,
