@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -29,7 +30,7 @@ struct WarpOptions
   std::string mesh, source, target, out = "warped.ply";
   std::string labels, truth, report;
   double blend = 100.0;
-  double overlap = 90.0;
+  std::vector<double> overlap{90.0}; ///< one for every segment, or one per segment
   double lambda = 0.0;
   bool quiet = false;
 };
@@ -58,6 +59,32 @@ landmarkPairs (const std::string& source_path, const std::string& target_path)
   return {from, to};
 }
 
+/** Accepts a number >= 0, including inf (CLI::NonNegativeNumber stops at the largest finite double). */
+CLI::Validator
+nonNegativeOrInfinite ()
+{
+  return CLI::Validator (
+      [] (std::string& text) {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast (text, value) || !(value >= 0.0))
+          return "Value " + text + " is not a number >= 0 (or inf)";
+        return std::string ();
+      },
+      "NONNEGATIVE or inf");
+}
+
+/** \a overlap given once applies to every segment; otherwise it needs one value per segment. */
+std::vector<double>
+overlapPerSegment (const std::vector<double>& overlap, int num_segments)
+{
+  if (overlap.size () == 1)
+    return std::vector<double> (static_cast<std::size_t> (num_segments), overlap.front ());
+  if (overlap.size () != static_cast<std::size_t> (num_segments))
+    throw InvalidInputError ("warp: --overlap has " + std::to_string (overlap.size ()) + " values for " +
+                             std::to_string (num_segments) + " segments; give one value or one per segment");
+  return overlap;
+}
+
 TriangleMesh
 warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& report)
 {
@@ -77,13 +104,14 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
   SegmentedWarp warp (segments.labels, num_segments);
   warp.setRegularization (options.lambda);
   warp.setBlendWidth (options.blend);
-  const auto subsets =
-      warp.setLandmarks (mesh, source, target, std::vector<double> (static_cast<std::size_t> (num_segments), options.overlap));
+  const std::vector<double> overlap = overlapPerSegment (options.overlap, num_segments);
+  const auto subsets = warp.setLandmarks (mesh, source, target, overlap);
   for (const auto& subset : subsets)
     report["segment_landmarks"].push_back (subset.size ());
   report["mode"] = "segmented";
   report["blend_width_mm"] = options.blend;
-  report["overlap_mm"] = options.overlap;
+  for (double o : overlap) // an infinite overlap (JSON has no infinity): the segment takes every landmark
+    report["overlap_mm"].push_back (std::isinf (o) ? nlohmann::json ("all") : nlohmann::json (o));
   return warp.warp (mesh);
 }
 
@@ -130,8 +158,13 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("--labels", options->labels, "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
   command->add_option ("--blend", options->blend, "seam blend width along the mesh (mm), 0 = hard segments")
       ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--overlap", options->overlap, "landmarks join segments at most this much farther (mm)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command
+      ->add_option ("--overlap", options->overlap,
+                    "landmarks join a segment at most this much farther (mm; one value, or one per segment "
+                    "separated by commas; inf = every landmark)")
+      ->delimiter (',')
+      ->check (nonNegativeOrInfinite ())
+      ->capture_default_str ();
   command->add_option ("--lambda", options->lambda, "TPS regularisation (0 = exact interpolation)")
       ->check (CLI::NonNegativeNumber)->capture_default_str ();
   command->add_option ("--truth", options->truth, "true target mesh (same topology): report the warp's error");

@@ -34,5 +34,6 @@ main ()
   const double rms = icp.getRegistrationReport ().fitness_rms;
   std::cout << "vertices " << subject.mesh.numVertices () << ", euler " << topology.eulerCharacteristic ()
             << ", scan points " << scan.cloud->size () << ", fitness RMS " << rms << " mm\n";
-  return topology.eulerCharacteristic () == 2 && fitted.size () == meshes[0].vertices.cols () && rms < 3.0 ? 0 : 1;
+  const bool every_vertex_fitted = static_cast<Eigen::Index> (fitted.size ()) == meshes[0].vertices.cols ();
+  return topology.eulerCharacteristic () == 2 && every_vertex_fitted && rms < 3.0 ? 0 : 1;
 }

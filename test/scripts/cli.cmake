@@ -137,6 +137,28 @@ add_test(NAME CliTest.WarpHeadOntoAnotherHeadsLandmarks
           --report ${cli_dir}/warp.json --out ${cli_dir}/warped.ply)
 set_tests_properties(CliTest.WarpHeadOntoAnotherHeadsLandmarks PROPERTIES FIXTURES_REQUIRED cli_small
   PASS_REGULAR_EXPRESSION "error against .*head_001.ply: mean [0-4]\\.[0-9]+ mm.*wrote .*warped.ply")
+# Segmented warp by the head's regions, with an overlap per segment (the last takes every landmark).
+add_test(NAME CliTest.SegmentedWarpTakesAnOverlapPerSegment
+  COMMAND morphreg_cli warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
+          --target ${cli_dir}/small/head_001_landmarks.json --truth ${cli_dir}/small/head_001.ply
+          --labels ${cli_dir}/small/regions.json --overlap 30,30,30,30,30,30,inf --report ${cli_dir}/warp_segmented.json
+          --out ${cli_dir}/warped_segmented.ply)
+set_tests_properties(CliTest.SegmentedWarpTakesAnOverlapPerSegment PROPERTIES FIXTURES_REQUIRED cli_small
+  PASS_REGULAR_EXPRESSION "error against .*head_001.ply: mean [0-4]\\.[0-9]+ mm.*wrote .*warped_segmented.ply"
+  FIXTURES_SETUP cli_warp_segmented)
+add_test(NAME CliTest.SegmentedWarpReportsEachOverlap
+  COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/warp_segmented.json)
+set_tests_properties(CliTest.SegmentedWarpReportsEachOverlap PROPERTIES FIXTURES_REQUIRED cli_warp_segmented
+  PASS_REGULAR_EXPRESSION "\"overlap_mm\": *\\[[^]]*30\\.0[^]]*\"all\"")
+morphreg_cli_expect_exit(WarpOverlapCountIsNamed 1 "--overlap has 2 values for 7 segments"
+  warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
+  --target ${cli_dir}/small/head_001_landmarks.json --labels ${cli_dir}/small/regions.json --overlap 30,30
+  --out ${cli_dir}/bad_warp.ply)
+set_tests_properties(CliTest.WarpOverlapCountIsNamed PROPERTIES FIXTURES_REQUIRED cli_small)
+morphreg_cli_expect_exit(WarpNegativeOverlapExits2 2 "--overlap" warp --mesh ${cli_dir}/small/head_000.ply
+  --source ${cli_dir}/small/head_000_landmarks.json --target ${cli_dir}/small/head_001_landmarks.json
+  --overlap 30,-1 --out ${cli_dir}/bad_warp.ply)
+set_tests_properties(CliTest.WarpNegativeOverlapExits2 PROPERTIES FIXTURES_REQUIRED cli_small)
 morphreg_cli_expect_exit(WarpMissingLandmarksIsNamed 1 "no_such_landmarks.json: no such file"
   warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
   --target ${cli_dir}/no_such_landmarks.json --out ${cli_dir}/bad_warp.ply)

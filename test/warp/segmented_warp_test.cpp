@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 using morphreg::SegmentedWarp;
 using morphreg::TriangleMesh;
@@ -281,24 +282,27 @@ TEST (SegmentedWarpTest, BetweenSubjectsWithAllJoints)
   const TriangleMesh base = bodies.loadMesh ("base", morphreg::BodyPose::standing);
   const auto names = bodies.jointNames ();
   const Eigen::Matrix3Xd source = bodies.joints ("base", morphreg::BodyPose::standing, names);
+  // Between subjects the trunk follows the whole skeleton, so both trunk segments take every joint; each arm takes
+  // only its own joints. In one global TPS the chest, breast and clavicle joints, whose displacement carries the
+  // trunk's bulk, drag the arms that hang beside the trunk (arm vertices 6.2 mm global, 5.6 mm with their own joints).
+  const double all = std::numeric_limits<double>::infinity ();
   for (const auto& subject : bodies.subjects ()) {
     if (subject == "base")
       continue;
     const auto c = compareWarps (bodies, base, bodies.loadMesh (subject, morphreg::BodyPose::standing), source,
-                                 bodies.joints (subject, morphreg::BodyPose::standing, names), {90.0, 90.0, 90.0, 90.0},
+                                 bodies.joints (subject, morphreg::BodyPose::standing, names), {0.0, 0.0, all, all},
                                  {100.0, 100.0, 100.0, 100.0});
     std::cout << "base -> " << subject << " (" << names.size () << " joints):\n";
     print ("global TPS", c.global);
-    print ("segmented, blended 100 mm", c.segmented);
-    // The issue asks for <= 9 mm. Female: 8.15 mm global, 8.18 mm segmented. Male: 9.12 / 9.38 mm, like the issue's
-    // own reference (8.2-9.1 mm). Its error sits in soft tissue that the joints do not see (calves 27 mm, shoulders
-    // and chest 18-33 mm); regularisation (9.04 mm at lambda 10, 8.99 mm at 30 with 3.3 mm RMS misfit at the joints),
-    // larger overlaps and merging near-coincident joints do not bring it below 9 mm, so the male bounds are the
-    // measured figures plus a small margin and the shortfall is reported.
-    const bool male = subject == "caucasian-male-young";
-    EXPECT_LE (c.global.mean_error, male ? 9.2 : 9.0) << subject;
-    EXPECT_LE (c.segmented.mean_error, male ? 9.45 : 9.0) << subject;
-    EXPECT_LE (c.segmented.mean_error, 1.25 * c.global.mean_error) << subject;
+    print ("segmented (arms: own joints; trunk: all), blended 100 mm", c.segmented);
+    // Measured: female 8.15 mm global, 8.06 segmented; male 9.12 global (the issue's reference: 8.2-9.1 mm),
+    // 8.86 segmented. The global warp's male error sits in soft tissue the joints do not see (calves, shoulders and
+    // chest) and in vertices the male target slides along the thigh; leave-one-out over the joints picks exact
+    // interpolation, so it is reported as it is, within the reference's range.
+    EXPECT_LE (c.global.mean_error, 9.2) << subject;
+    EXPECT_LE (c.segmented.mean_error, 9.0) << subject;
+    EXPECT_LT (c.segmented.mean_error, c.global.mean_error) << subject;
+    EXPECT_LE (c.segmented.seam, c.global.seam) << subject << ": the seams add no edge-length jump of their own";
   }
 }
 
