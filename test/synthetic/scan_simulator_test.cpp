@@ -167,7 +167,6 @@ TEST (ScanSimulatorTest, HolesWhereScannersMiss)
   const Eigen::Matrix3Xd normals = morphreg::vertexNormals (head ());
   const auto& regions = generator ().regionLabels ();
   const double top = head ().vertices.row (1).maxCoeff ();
-  const double chin = head ().vertices (1, generator ().landmarks ().at ("chin"));
   const double crown = missedFraction (scan, [&] (int v) { return head ().vertices (1, v) > top - 5.0; });
   const double under_chin = missedFraction (
       scan, [&] (int v) { return regions[v] == HeadRegion::chin && normals (1, v) < -0.8; });
