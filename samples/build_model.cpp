@@ -58,8 +58,10 @@ buildModel (int argc, char** argv)
                              meshes[0].triangles == generator.triangles ();
   const morphreg::MorphableModel::Ptr model =
       head_topology ? builder.build (meshes, samples::headRegions (generator)) : builder.buildGlobal (meshes);
-  if (head_topology)
+  if (head_topology) {
     model->setLandmarks (generator.landmarks ());
+    model->setProfileLine (generator.profileLine ()); // what fitting to photos needs (sample_fit_photos)
+  }
 
   for (const morphreg::ModelRegion& region : model->regions ())
     printVariance (region.name, region.vertices.size (), region.variances);

@@ -36,7 +36,9 @@ populationMeshes (const synthetic::HeadGenerator& generator, int count, std::uin
   return meshes;
 }
 
-/** A seven-region model of \a count heads with at most \a components components per region, with landmarks. */
+/** A seven-region model of \a count heads with at most \a components components per region, with landmarks and the
+ *  profile line.
+ */
 inline morphreg::MorphableModel::Ptr
 buildHeadModel (const synthetic::HeadGenerator& generator, int count, int components)
 {
@@ -45,6 +47,7 @@ buildHeadModel (const synthetic::HeadGenerator& generator, int count, int compon
   auto model =
       morphreg::ModelBuilder (settings).build (populationMeshes (generator, count, 1), headRegions (generator));
   model->setLandmarks (generator.landmarks ());
+  model->setProfileLine (generator.profileLine ());
   return model;
 }
 

@@ -57,4 +57,22 @@ requireKnownLandmarkId (const std::string& id, const std::string& source)
   throw InvalidInputError (msg.str ());
 }
 
+std::vector<std::string>
+frontalLandmarkIds ()
+{
+  const auto& ids = knownLandmarkIds ();
+  return std::vector<std::string> (ids.begin (), ids.begin () + 40);
+}
+
+LandmarkVertices
+frontalLandmarks (const LandmarkVertices& landmarks)
+{
+  const std::vector<std::string> frontal = frontalLandmarkIds ();
+  LandmarkVertices selected;
+  for (const auto& landmark : landmarks)
+    if (std::find (frontal.begin (), frontal.end (), landmark.first) != frontal.end ())
+      selected.insert (landmark);
+  return selected;
+}
+
 } // namespace morphreg

@@ -19,4 +19,14 @@ readJsonFile (const std::string& path)
   }
 }
 
+void
+writeJsonFile (const std::string& path, const nlohmann::json& document)
+{
+  std::ofstream stream (path, std::ios::trunc);
+  stream << document.dump (1) << '\n';
+  stream.close ();
+  if (!stream)
+    throw IoError (path + ": cannot be written");
+}
+
 } // namespace morphreg

@@ -28,4 +28,12 @@ using LandmarkPositions = std::map<std::string, Eigen::Vector3d>;
 /** \brief Named landmark vertices of a mesh or model: id -> vertex index. */
 using LandmarkVertices = std::map<std::string, int>;
 
+/** \brief The 40 frontal-photo landmark ids (LANDMARKS.md 1-40, thesis table 1), in that order. */
+std::vector<std::string>
+frontalLandmarkIds ();
+
+/** \brief The entries of \a landmarks whose id is one of frontalLandmarkIds(). */
+LandmarkVertices
+frontalLandmarks (const LandmarkVertices& landmarks);
+
 } // namespace morphreg

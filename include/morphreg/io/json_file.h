@@ -14,4 +14,8 @@ namespace morphreg
 nlohmann::json
 readJsonFile (const std::string& path);
 
+/** \brief Writes \a document to \a path (indented); IoError if the file cannot be written. */
+void
+writeJsonFile (const std::string& path, const nlohmann::json& document);
+
 } // namespace morphreg

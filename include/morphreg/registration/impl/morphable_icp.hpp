@@ -7,6 +7,7 @@
 #include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/similarity_shape_step.h>
 
 #include <pcl/conversions.h>
 #include <pcl/registration/correspondence_estimation.h>
@@ -77,17 +78,6 @@ struct MorphableICP<PointTarget, Scalar>::Problem
 
 namespace detail
 {
-/** Largest change of one shape coefficient per Gauss-Newton update, in prior standard deviations. */
-constexpr double kMaxShapeStep = 3.0;
-
-inline Eigen::Matrix3d
-skew (const Eigen::Vector3d& v)
-{
-  Eigen::Matrix3d s;
-  s << 0, -v.z (), v.y (), v.z (), 0, -v.x (), -v.y (), v.x (), 0;
-  return s;
-}
-
 inline double
 medianOf (std::vector<double> values)
 {
@@ -620,9 +610,7 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
       row (c, ev, problem, vertex, q, metric);
       const Eigen::Vector3d rotated = sr * state.model_vertices.col (vertex);
       const Eigen::Vector3d residual = q - rotated - state.translation;
-      jacobian.col (0) = rotated;
-      jacobian.template middleCols<3> (1) = -detail::skew (rotated);
-      jacobian.template middleCols<3> (4).setIdentity ();
+      jacobian.template leftCols<7> () = detail::similarityJacobian (rotated);
       ranges.assign (1, {0, 0, 7});
       int k = 7;
       if (problem.shape)
@@ -667,23 +655,14 @@ MorphableICP<PointTarget, Scalar>::step (State& state, const Evaluation& ev, con
     return false;
   // Trust region: no coefficient moves more than kMaxShapeStep prior standard deviations in one update, so a step
   // taken on the first, still sliding correspondences cannot throw the shape far outside the prior.
-  if (problem.shape && p > 0) {
-    const double largest = delta.tail (p).cwiseQuotient (problem.sigma).cwiseAbs ().maxCoeff ();
-    if (largest > detail::kMaxShapeStep)
-      delta *= detail::kMaxShapeStep / largest;
-  }
+  if (problem.shape)
+    detail::limitShapeStep (delta, problem.sigma);
 
   // Backtracking: halve the step until the objective (with these correspondences) decreases below \a current.
   for (double alpha = 1.0; alpha > 1e-2; alpha *= 0.5) {
     State candidate = state;
     const Eigen::VectorXd d = alpha * delta;
-    candidate.log_scale += d[0];
-    const Eigen::Vector3d theta = d.segment<3> (1);
-    const double angle = theta.norm ();
-    if (angle > 0.0)
-      candidate.rotation = Eigen::AngleAxisd (angle, theta / angle).toRotationMatrix () * candidate.rotation;
-    candidate.rotation = Eigen::Quaterniond (candidate.rotation).normalized ().toRotationMatrix ();
-    candidate.translation += d.segment<3> (4);
+    detail::updateSimilarity (d.head<7> (), candidate.log_scale, candidate.rotation, candidate.translation);
     if (problem.shape) {
       candidate.coefficients += d.tail (p);
       candidate.model_vertices = model_->generate (candidate.coefficients, selection);
@@ -783,10 +762,7 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       state.selection = phase.components;
       state.model_vertices = model_->generate (state.coefficients, state.selection);
       problem.selection = phase.components;
-      const MorphableModel::RowMatrix gamma = model_->gammaMatrix (phase.components);
-      const Eigen::VectorXd lambda = model_->lambdaDiagonal (phase.components, prior_);
-      problem.prior = phase.smoothness_weight * phase.smoothness_weight * (gamma.transpose () * gamma);
-      problem.prior.diagonal () += lambda2_ * lambda2_ * lambda.cwiseAbs2 ();
+      problem.prior = detail::shapePriorMatrix (*model_, phase.components, phase.smoothness_weight, lambda2_, prior_);
       problem.sigma = model_->variances (phase.components).cwiseSqrt ();
     }
     const int remaining = this->max_iterations_ - this->nr_iterations_;

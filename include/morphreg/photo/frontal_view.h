@@ -1,0 +1,49 @@
+#pragma once
+/** \file frontal_view.h
+ *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of LANDMARKS.md) in pixels.
+ */
+#include <morphreg/io/landmark_io.h>
+#include <morphreg/photo/photo_normalisation.h>
+
+#include <map>
+#include <string>
+
+namespace morphreg
+{
+/** \brief Named landmarks of a frontal photo, nose_tip among them (it centres the normalised frame). The subject's
+ *  right appears on the left of the image, as in any photo of a face.
+ */
+class FrontalView
+{
+public:
+  /** \brief Throws InvalidInputError naming \a source for a non-positive image size, a landmark id that is not in
+   *  LANDMARKS.md, a non-finite pixel or a missing nose_tip.
+   */
+  FrontalView (int width, int height, LandmarkPixels landmarks, const std::string& source = "FrontalView");
+
+  const PhotoNormalisation&
+  normalisation () const
+  {
+    return normalisation_;
+  }
+
+  /** \brief The landmarks in pixels. */
+  const LandmarkPixels&
+  landmarks () const
+  {
+    return landmarks_;
+  }
+
+  /** \brief The landmarks in the normalised frame: u to the image's right (the model's +X), v up (+Y). */
+  std::map<std::string, Eigen::Vector2d>
+  normalisedLandmarks () const;
+
+private:
+  /** The nose tip of \a landmarks; InvalidInputError naming \a source if it is absent. */
+  static Eigen::Vector2d
+  noseTip (const LandmarkPixels& landmarks, const std::string& source);
+
+  PhotoNormalisation normalisation_;
+  LandmarkPixels landmarks_;
+};
+} // namespace morphreg

@@ -1,0 +1,31 @@
+#pragma once
+/** \file polyline_2d.h
+ *  \brief Closest points on a 2D polyline (the profile silhouette of the two-view fit).
+ */
+#include <Eigen/Core>
+
+namespace morphreg
+{
+/** \brief An open polyline through the columns of a 2 x K matrix (K >= 2), queried for the closest point on its
+ *  segments. Brute force over the segments: silhouettes have a few hundred points.
+ */
+class Polyline2d
+{
+public:
+  /** \brief Throws InvalidInputError for fewer than 2 points or non-finite coordinates. */
+  explicit Polyline2d (Eigen::Matrix2Xd points);
+
+  /** \brief The point of the polyline closest to \a query. */
+  Eigen::Vector2d
+  closestPoint (const Eigen::Vector2d& query) const;
+
+  const Eigen::Matrix2Xd&
+  points () const
+  {
+    return points_;
+  }
+
+private:
+  Eigen::Matrix2Xd points_;
+};
+} // namespace morphreg

@@ -1,0 +1,50 @@
+#pragma once
+/** \file profile_view.h
+ *  \brief A profile (side) photo annotated for the two-view fit: the head's silhouette as a polyline and the nose
+ *  tip, in pixels.
+ */
+#include <morphreg/photo/photo_normalisation.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief The silhouette of a head in a profile photo. The face must look to the right of the image (+x): a photo
+ *  of the face looking left is mirrored before annotation. The polyline follows the whole mid-sagittal profile
+ *  (front of the neck, face, crown, back of the neck, in either direction): the fit takes its initial scale from
+ *  the polyline's height.
+ */
+class ProfileView
+{
+public:
+  /** \brief Throws InvalidInputError naming \a source for a non-positive image size, a non-finite nose tip or
+   *  silhouette point, or a silhouette of fewer than 2 distinct points.
+   */
+  ProfileView (int width, int height, std::vector<Eigen::Vector2d> silhouette, const Eigen::Vector2d& nose_tip,
+               const std::string& source = "ProfileView");
+
+  const PhotoNormalisation&
+  normalisation () const
+  {
+    return normalisation_;
+  }
+
+  /** \brief The silhouette polyline in pixels. */
+  const std::vector<Eigen::Vector2d>&
+  silhouette () const
+  {
+    return silhouette_;
+  }
+
+  /** \brief The silhouette in the normalised frame (2 x K): u towards the face (the model's +Z), v up (+Y). */
+  Eigen::Matrix2Xd
+  normalisedSilhouette () const;
+
+private:
+  PhotoNormalisation normalisation_;
+  std::vector<Eigen::Vector2d> silhouette_;
+};
+} // namespace morphreg

@@ -1,0 +1,39 @@
+#pragma once
+/** \file rgb_image.h
+ *  \brief An 8-bit RGB photo in memory, read from and written to PNG or JPEG with VTK's image readers.
+ */
+#include <morphreg/visualization/colour_map.h>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief An 8-bit RGB image, rows top to bottom (pixel (0, 0) is the top-left corner, as in photo annotations). */
+struct RgbImage
+{
+  int width = 0;
+  int height = 0;
+  std::vector<unsigned char> data; ///< 3 bytes per pixel, row by row
+
+  /** \brief The colour of column \a x, row \a y (no range check). */
+  Rgb8
+  pixel (int x, int y) const
+  {
+    const auto i = 3 * (static_cast<size_t> (y) * static_cast<size_t> (width) + static_cast<size_t> (x));
+    return {data[i], data[i + 1], data[i + 2]};
+  }
+};
+
+/** \brief Reads a PNG or JPEG photo (grey and RGBA images become RGB). Throws IoError if the file is missing,
+ *  FormatError naming it if it is not a readable 8-bit PNG or JPEG.
+ */
+RgbImage
+loadRgbImage (const std::string& path);
+
+/** \brief Writes \a image as PNG. Throws InvalidInputError for an empty or inconsistent image, IoError if the file
+ *  cannot be written.
+ */
+void
+saveRgbImage (const std::string& path, const RgbImage& image);
+} // namespace morphreg

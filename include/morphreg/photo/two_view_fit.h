@@ -1,0 +1,59 @@
+#pragma once
+/** \file two_view_fit.h
+ *  \brief The result of a two-view (profile + frontal photo) fit of a morphable model, and its JSON report.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/model/component_selection.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief The stage of a two-view fit iteration. */
+enum class TwoViewStage
+{
+  similarity, ///< pose and scale only (mean shape)
+  shape,      ///< pose, scale and shape coefficients
+  tps_icp     ///< one round of approach 2: TPS warp to the landmarks, then the 3D-3D fit to the warped mesh
+};
+
+/** \brief One Gauss-Newton iteration (or TPS-ICP round) of a two-view fit, measured at its start. Residuals are in
+ *  model millimetres (normalised-frame distances divided by the fit's scale).
+ */
+struct TwoViewIteration
+{
+  TwoViewStage stage = TwoViewStage::similarity;
+  int profile_correspondences = 0; ///< profile-line vertices within the correspondence distance
+  double profile_rms = 0.0;        ///< RMS in-image distance of those vertices to the silhouette (mm)
+  double landmark_rms = 0.0;       ///< RMS in-image distance of the frontal landmarks (mm; 0 without them)
+};
+
+/** \brief A fitted model instance v = mu + M m and the similarity X = s R v + t from the model frame (mm) into the
+ *  normalised photo frame (frontal image = (X, Y), profile image = (Z, Y)).
+ */
+struct TwoViewFit
+{
+  ComponentSelection selection;   ///< the components of \a coefficients
+  Eigen::VectorXd coefficients;   ///< shape coefficients (mm along the orthonormal basis)
+  double scale = 1.0;             ///< s: normalised units per model millimetre
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity ();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero ();
+  TriangleMesh model_mesh;        ///< the fitted shape in the model frame (mm)
+  TriangleMesh image_mesh;        ///< the fitted shape in the normalised photo frame
+  std::vector<TwoViewIteration> history;
+  TwoViewIteration final_residuals; ///< the residuals at the returned state
+
+  /** \brief [s R | t] as a 4 x 4 matrix. */
+  Eigen::Matrix4d
+  similarity () const;
+};
+
+/** \brief Writes \a fit's similarity, coefficients, final residuals and iteration history as JSON (not the meshes);
+ *  IoError if the file cannot be written.
+ */
+void
+saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit);
+} // namespace morphreg

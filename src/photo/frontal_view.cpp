@@ -1,0 +1,33 @@
+#include <morphreg/common/error.h>
+#include <morphreg/common/landmarks.h>
+#include <morphreg/photo/frontal_view.h>
+
+namespace morphreg
+{
+FrontalView::FrontalView (int width, int height, LandmarkPixels landmarks, const std::string& source)
+  : normalisation_ (width, height, noseTip (landmarks, source), source), landmarks_ (std::move (landmarks))
+{
+  for (const auto& landmark : landmarks_) {
+    requireKnownLandmarkId (landmark.first, source);
+    requireFinitePixel (landmark.second, source + ": landmark '" + landmark.first + "'");
+  }
+}
+
+Eigen::Vector2d
+FrontalView::noseTip (const LandmarkPixels& landmarks, const std::string& source)
+{
+  const auto it = landmarks.find ("nose_tip");
+  if (it == landmarks.end ())
+    throw InvalidInputError (source + ": the frontal landmarks have no nose_tip (it centres the normalised frame)");
+  return it->second;
+}
+
+std::map<std::string, Eigen::Vector2d>
+FrontalView::normalisedLandmarks () const
+{
+  std::map<std::string, Eigen::Vector2d> points;
+  for (const auto& landmark : landmarks_)
+    points[landmark.first] = normalisation_.normalise (landmark.second);
+  return points;
+}
+} // namespace morphreg

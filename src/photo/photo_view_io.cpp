@@ -1,0 +1,108 @@
+#include <morphreg/common/error.h>
+#include <morphreg/io/json_file.h>
+#include <morphreg/photo/photo_view_io.h>
+
+
+namespace morphreg
+{
+namespace
+{
+using nlohmann::json;
+
+/** \brief The value of \a key of \a document; FormatError naming \a path if absent. */
+const json&
+member (const json& document, const std::string& key, const std::string& path)
+{
+  if (!document.is_object () || !document.contains (key))
+    throw FormatError (path + ": missing \"" + key + "\"");
+  return document.at (key);
+}
+
+/** \brief "image": {"width": W, "height": H} as integers. */
+std::pair<int, int>
+readImageSize (const json& document, const std::string& path)
+{
+  const json& image = member (document, "image", path);
+  int size[2];
+  const char* keys[2] = {"width", "height"};
+  for (int k = 0; k < 2; ++k) {
+    const json& value = member (image, keys[k], path + ": image");
+    if (!value.is_number_integer ())
+      throw FormatError (path + ": image." + keys[k] + " (" + value.dump () + ") is not an integer");
+    size[k] = value.get<int> ();
+  }
+  return {size[0], size[1]};
+}
+
+/** \brief [x, y] as a pixel; FormatError naming \a where otherwise. */
+Eigen::Vector2d
+readPixel (const json& value, const std::string& where)
+{
+  if (!value.is_array () || value.size () != 2 || !value[0].is_number () || !value[1].is_number ())
+    throw FormatError (where + ": expected [x, y] pixel coordinates, found " + value.dump ());
+  return {value[0].get<double> (), value[1].get<double> ()};
+}
+
+void
+requireView (const json& document, const std::string& view, const std::string& path)
+{
+  if (member (document, "view", path) != view)
+    throw FormatError (path + ": \"view\" is " + document.at ("view").dump () + ", expected \"" + view + "\"");
+}
+
+json
+imageSize (const PhotoNormalisation& normalisation)
+{
+  return {{"width", normalisation.width ()}, {"height", normalisation.height ()}};
+}
+} // namespace
+
+ProfileView
+loadProfileView (const std::string& path)
+{
+  const json document = readJsonFile (path);
+  requireView (document, "profile", path);
+  const auto [width, height] = readImageSize (document, path);
+  const Eigen::Vector2d nose_tip = readPixel (member (document, "nose_tip", path), path + ": nose_tip");
+  const json& points = member (document, "silhouette", path);
+  if (!points.is_array ())
+    throw FormatError (path + ": \"silhouette\" must be an array of [x, y] points");
+  std::vector<Eigen::Vector2d> silhouette;
+  for (size_t k = 0; k < points.size (); ++k)
+    silhouette.push_back (readPixel (points[k], path + ": silhouette[" + std::to_string (k) + "]"));
+  return ProfileView (width, height, std::move (silhouette), nose_tip, path);
+}
+
+FrontalView
+loadFrontalView (const std::string& path)
+{
+  const json document = readJsonFile (path);
+  requireView (document, "frontal", path);
+  const auto [width, height] = readImageSize (document, path);
+  return FrontalView (width, height, loadLandmarkPixels (path), path);
+}
+
+void
+saveProfileView (const std::string& path, const ProfileView& view)
+{
+  json silhouette = json::array ();
+  for (const Eigen::Vector2d& point : view.silhouette ())
+    silhouette.push_back ({point.x (), point.y ()});
+  const Eigen::Vector2d& nose = view.normalisation ().noseTip ();
+  writeJsonFile (path, {{"view", "profile"},
+                    {"image", imageSize (view.normalisation ())},
+                    {"nose_tip", {nose.x (), nose.y ()}},
+                    {"silhouette", silhouette}});
+}
+
+void
+saveFrontalView (const std::string& path, const FrontalView& view)
+{
+  // The landmark file layout, written by the landmark writer, plus the view and the image size.
+  saveLandmarkPixels (path, view.landmarks ());
+  json document = readJsonFile (path);
+  document["view"] = "frontal";
+  document["image"] = imageSize (view.normalisation ());
+  writeJsonFile (path, document);
+}
+} // namespace morphreg

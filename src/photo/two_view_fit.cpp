@@ -1,0 +1,50 @@
+#include <morphreg/common/error.h>
+#include <morphreg/photo/two_view_fit.h>
+
+#include <morphreg/io/json_file.h>
+
+
+namespace morphreg
+{
+namespace
+{
+nlohmann::json
+iterationJson (const TwoViewIteration& iteration)
+{
+  const char* const stages[] = {"similarity", "shape", "tps_icp"};
+  return {{"stage", stages[static_cast<int> (iteration.stage)]},
+          {"profile_correspondences", iteration.profile_correspondences},
+          {"profile_rms_mm", iteration.profile_rms},
+          {"landmark_rms_mm", iteration.landmark_rms}};
+}
+} // namespace
+
+Eigen::Matrix4d
+TwoViewFit::similarity () const
+{
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity ();
+  m.topLeftCorner<3, 3> () = scale * rotation;
+  m.topRightCorner<3, 1> () = translation;
+  return m;
+}
+
+void
+saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit)
+{
+  nlohmann::json history = nlohmann::json::array ();
+  for (const TwoViewIteration& iteration : fit.history)
+    history.push_back (iterationJson (iteration));
+  nlohmann::json rotation = nlohmann::json::array ();
+  for (int r = 0; r < 3; ++r)
+    rotation.push_back ({fit.rotation (r, 0), fit.rotation (r, 1), fit.rotation (r, 2)});
+  const nlohmann::json document = {
+      {"scale", fit.scale},
+      {"rotation", rotation},
+      {"translation", {fit.translation.x (), fit.translation.y (), fit.translation.z ()}},
+      {"component_counts", fit.selection.counts ()},
+      {"coefficients", std::vector<double> (fit.coefficients.data (), fit.coefficients.data () + fit.coefficients.size ())},
+      {"final", iterationJson (fit.final_residuals)},
+      {"history", history}};
+  writeJsonFile (path, document);
+}
+} // namespace morphreg

@@ -1,0 +1,388 @@
+#include "pose_shape_gauss_newton.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/photo/polyline_2d.h>
+#include <morphreg/photo/two_view_fitting.h>
+#include <morphreg/registration/thin_plate_spline.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace morphreg
+{
+namespace
+{
+/** At most this many rounds of TPS warp and 3D-3D fit in fitTpsIcp. */
+constexpr int kTpsIcpRounds = 10;
+
+using detail::PoseShapeState;
+using detail::ShapeProblem;
+using detail::WeightedRow;
+
+/** The frontal landmarks' model vertices and normalised (X, Y) positions. */
+struct FrontalTargets
+{
+  std::vector<int> vertices;
+  std::vector<Eigen::Vector2d> points;
+};
+
+/** The rows of a two-view fit: the profile-line vertices (the first profile_count of shape.vertices), then the
+ *  frontal landmark vertices, with their weights.
+ */
+struct TwoViewProblem
+{
+  ShapeProblem shape;
+  Eigen::Index profile_count;
+  std::vector<Eigen::Vector2d> landmarks; ///< normalised (X, Y) of shape.vertices[profile_count + k]
+  double frontal_weight;
+  double sagittal_weight;
+  double max_distance;
+};
+
+/** Throws InvalidInputError if the normalised frontal landmarks coincide or lie on one line. */
+void
+requireSpreadLandmarks (const std::vector<Eigen::Vector2d>& points)
+{
+  Eigen::Matrix2Xd centred (2, points.size ());
+  for (size_t k = 0; k < points.size (); ++k)
+    centred.col (static_cast<Eigen::Index> (k)) = points[k];
+  centred.colwise () -= centred.rowwise ().mean ();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen (centred * centred.transpose ());
+  const Eigen::Vector2d spread = eigen.eigenvalues ().cwiseMax (0.0).cwiseSqrt ();
+  if (spread[1] < 1e-9)
+    throw InvalidInputError ("TwoViewFitting: the frontal landmarks coincide");
+  if (spread[0] < 1e-3 * spread[1])
+    throw InvalidInputError ("TwoViewFitting: the frontal landmarks are collinear (they fix no pose)");
+}
+
+/** The frontal landmarks, validated against \a model: every id a model landmark, at least 3, spread out. */
+FrontalTargets
+frontalTargets (const MorphableModel& model, const FrontalView& frontal)
+{
+  FrontalTargets targets;
+  for (const auto& landmark : frontal.normalisedLandmarks ()) {
+    if (!model.landmarks ().count (landmark.first))
+      throw InvalidInputError ("TwoViewFitting: frontal landmark '" + landmark.first + "' is not a model landmark");
+    targets.vertices.push_back (model.landmarkVertex (landmark.first));
+    targets.points.push_back (landmark.second);
+  }
+  if (targets.points.size () < 3)
+    throw InvalidInputError ("TwoViewFitting: " + std::to_string (targets.points.size ()) +
+                             " frontal landmarks; at least 3 are needed");
+  requireSpreadLandmarks (targets.points);
+  return targets;
+}
+
+/** \a state with the constrained vertices of \a problem. */
+PoseShapeState
+onProblem (PoseShapeState state, const ShapeProblem& problem)
+{
+  state.vertices = problem.vertexPositions (state.coefficients);
+  return state;
+}
+
+/** The rows at \a state: profile correspondences (closest silhouette point within the distance), then the frontal
+ *  landmarks; fills \a residuals with their in-image RMS distances in model mm.
+ */
+std::vector<WeightedRow>
+currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const PoseShapeState& state,
+             TwoViewIteration& residuals)
+{
+  const Eigen::Matrix3Xd posed = state.posed ();
+  const double mm = 1.0 / state.scale ();
+  std::vector<WeightedRow> rows;
+  double profile_sum = 0.0;
+  for (Eigen::Index k = 0; k < problem.profile_count; ++k) {
+    const Eigen::Vector2d projected (posed (2, k), posed (1, k));
+    const Eigen::Vector2d closest = silhouette.closestPoint (projected);
+    const double distance = (closest - projected).norm () * mm;
+    if (!(distance <= problem.max_distance))
+      continue;
+    rows.push_back ({k, Eigen::Vector3d (0.0, closest.y (), closest.x ()),
+                     Eigen::Vector3d (problem.sagittal_weight, 1.0, 1.0)});
+    profile_sum += distance * distance;
+  }
+  residuals.profile_correspondences = static_cast<int> (rows.size ());
+  residuals.profile_rms = rows.empty () ? 0.0 : std::sqrt (profile_sum / static_cast<double> (rows.size ()));
+  double landmark_sum = 0.0;
+  for (size_t l = 0; l < problem.landmarks.size (); ++l) {
+    const Eigen::Index slot = problem.profile_count + static_cast<Eigen::Index> (l);
+    const Eigen::Vector2d& marked = problem.landmarks[l];
+    rows.push_back ({slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0),
+                     Eigen::Vector3d (problem.frontal_weight, problem.frontal_weight, 0.0)});
+    landmark_sum += (marked - posed.col (slot).head<2> ()).squaredNorm () * mm * mm;
+  }
+  residuals.landmark_rms =
+      problem.landmarks.empty () ? 0.0 : std::sqrt (landmark_sum / static_cast<double> (problem.landmarks.size ()));
+  return rows;
+}
+
+/** The joint fit's data cost per row (model mm^2) of \a residuals: profile and \a weight times landmark squares. */
+double
+jointCost (const TwoViewIteration& residuals, size_t landmarks, double weight)
+{
+  const double profile = residuals.profile_correspondences, marked = weight * static_cast<double> (landmarks);
+  return (residuals.profile_rms * residuals.profile_rms * profile +
+          residuals.landmark_rms * residuals.landmark_rms * marked) /
+         (profile + marked);
+}
+
+/** The rows of one TPS-ICP round, for every model vertex (\a state holds them all): the posed model warped by a 3D
+ *  thin plate spline (in mm) that moves each frontal landmark vertex to its mark (X, Y) at its current depth (the mean
+ *  mark of landmarks sharing a vertex) and each other profile-line vertex with a correspondence in \a image_rows to
+ *  its silhouette point (Z, Y) at its current X; the landmark rows get \a frontal_weight.
+ */
+std::vector<WeightedRow>
+tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& image_rows,
+               const PoseShapeState& state, double frontal_weight)
+{
+  const double s = state.scale ();
+  const Eigen::Matrix3Xd posed = state.posed ();
+  std::map<int, Eigen::Vector3d> marked; // landmark vertex -> sum of its marks (X, Y) and their count
+  std::map<int, Eigen::Vector3d> anchors; // vertex -> its target
+  for (const WeightedRow& row : image_rows) {
+    const int vertex = two_view.shape.vertices[row.slot];
+    if (row.slot >= two_view.profile_count)
+      marked.emplace (vertex, Eigen::Vector3d::Zero ()).first->second += Eigen::Vector3d (row.target.x (), row.target.y (), 1.0);
+    else
+      anchors[vertex] = Eigen::Vector3d (posed (0, vertex), row.target.y (), row.target.z ());
+  }
+  for (const auto& [vertex, sum] : marked)
+    anchors[vertex] = Eigen::Vector3d (sum.x () / sum.z (), sum.y () / sum.z (), posed (2, vertex));
+  Eigen::Matrix3Xd source (3, anchors.size ()), target (3, anchors.size ());
+  Eigen::Index column = 0;
+  for (const auto& [vertex, point] : anchors) {
+    source.col (column) = posed.col (vertex) / s;
+    target.col (column++) = point / s;
+  }
+  ThinPlateSpline<double, 3> tps;
+  tps.fit (source, target);
+  Eigen::Matrix3Xd warped = posed / s;
+  tps.transformPositions (warped);
+  warped *= s;
+  std::vector<WeightedRow> rows;
+  for (Eigen::Index i = 0; i < warped.cols (); ++i)
+    rows.push_back ({i, warped.col (i), Eigen::Vector3d::Ones ()});
+  for (const auto& entry : marked)
+    rows.push_back ({entry.first, anchors.at (entry.first), Eigen::Vector3d::Constant (frontal_weight)});
+  return rows;
+}
+
+/** The initial pose: no rotation, the scale that gives the model's profile line the silhouette's height, and the
+ *  model's nose tip at the origin (the nose tip centres both photos).
+ */
+PoseShapeState
+initialState (const MorphableModel& model, const TwoViewProblem& problem, const Eigen::Matrix2Xd& silhouette)
+{
+  const Eigen::Matrix3Xd profile = problem.shape.mean.leftCols (problem.profile_count);
+  const double model_height = profile.row (1).maxCoeff () - profile.row (1).minCoeff ();
+  const double image_height = silhouette.row (1).maxCoeff () - silhouette.row (1).minCoeff ();
+  if (!(model_height > 0.0) || !(image_height > 0.0))
+    throw InvalidInputError ("TwoViewFitting: the model's profile line or the silhouette has no height");
+  PoseShapeState state;
+  state.log_scale = std::log (image_height / model_height);
+  state.translation = -state.scale () * model.meanVertex (model.landmarkVertex ("nose_tip"));
+  state.coefficients = Eigen::VectorXd::Zero (problem.shape.sigma.size ());
+  state.vertices = problem.shape.mean;
+  return state;
+}
+
+/** Stores \a state's similarity, coefficients (of \a fit.selection) and meshes in \a fit. */
+void
+storeState (const MorphableModel& model, const PoseShapeState& state, TwoViewFit& fit)
+{
+  fit.coefficients = state.coefficients;
+  fit.scale = state.scale ();
+  fit.rotation = state.rotation;
+  fit.translation = state.translation;
+  fit.model_mesh = model.generateMesh (state.coefficients, fit.selection);
+  fit.image_mesh = fit.model_mesh;
+  fit.image_mesh.vertices = (fit.scale * fit.rotation * fit.model_mesh.vertices).colwise () + fit.translation;
+}
+
+/** \a value if it is finite and > 0 (>= 0 with \a zero_allowed); else InvalidInputError naming \a what. */
+double
+checkedSetting (double value, bool zero_allowed, const std::string& what)
+{
+  if (!std::isfinite (value) || value < 0.0 || (value == 0.0 && !zero_allowed))
+    throw InvalidInputError ("TwoViewFitting: " + what + " must be finite and " + (zero_allowed ? ">= 0" : "> 0") +
+                             ", got " + std::to_string (value));
+  return value;
+}
+} // namespace
+
+TwoViewFitting::TwoViewFitting (MorphableModel::ConstPtr model) : model_ (std::move (model))
+{
+  if (!model_)
+    throw InvalidInputError ("TwoViewFitting: the model is null");
+  if (model_->profileLine ().size () < 2)
+    throw InvalidInputError ("TwoViewFitting: the model has no profile line (MorphableModel::setProfileLine)");
+  if (!model_->landmarks ().count ("nose_tip"))
+    throw InvalidInputError ("TwoViewFitting: the model has no nose_tip landmark (it centres the photos)");
+  selection_ = model_->firstComponents (10);
+}
+
+void
+TwoViewFitting::setComponentSelection (const ComponentSelection& selection)
+{
+  model_->requireCompatible (selection, nullptr, "TwoViewFitting::setComponentSelection");
+  selection_ = selection;
+}
+
+void
+TwoViewFitting::setSmoothnessWeight (double lambda1)
+{
+  lambda1_ = checkedSetting (lambda1, false, "lambda_1 (the smoothness weight; regions without data need it)");
+}
+
+void
+TwoViewFitting::setShapePriorWeight (double lambda2, ShapePrior prior)
+{
+  lambda2_ = checkedSetting (lambda2, true, "lambda_2");
+  prior_ = prior;
+}
+
+void
+TwoViewFitting::setFrontalWeight (double weight)
+{
+  frontal_weight_ = checkedSetting (weight, false, "the frontal weight");
+}
+
+void
+TwoViewFitting::setSagittalWeight (double weight)
+{
+  sagittal_weight_ = checkedSetting (weight, true, "the sagittal weight");
+}
+
+void
+TwoViewFitting::setMaxCorrespondenceDistance (double millimetres)
+{
+  max_distance_ = checkedSetting (millimetres, false, "the max correspondence distance");
+}
+
+void
+TwoViewFitting::setIterations (int similarity, int shape)
+{
+  if (similarity < 0 || shape < 0)
+    throw InvalidInputError ("TwoViewFitting: iteration budgets must be >= 0, got " + std::to_string (similarity) +
+                             " and " + std::to_string (shape));
+  similarity_iterations_ = similarity;
+  shape_iterations_ = shape;
+}
+
+TwoViewFit
+TwoViewFitting::fitProfile (const ProfileView& profile) const
+{
+  if (sagittal_weight_ <= 0.0)
+    throw InvalidInputError ("TwoViewFitting::fitProfile: the sagittal weight is 0, so nothing fixes X");
+  return fit (profile, nullptr);
+}
+
+TwoViewFit
+TwoViewFitting::fitJoint (const ProfileView& profile, const FrontalView& frontal) const
+{
+  return fit (profile, &frontal);
+}
+
+TwoViewFit
+TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const
+{
+  const FrontalTargets targets = frontalTargets (*model_, frontal);
+  TwoViewFit result = fitProfile (profile);
+  // The error that decides when to stop: the image residuals of the joint fit's rows.
+  std::vector<int> two_view_vertices = model_->profileLine ();
+  two_view_vertices.insert (two_view_vertices.end (), targets.vertices.begin (), targets.vertices.end ());
+  const TwoViewProblem two_view{
+      ShapeProblem (*model_, selection_, two_view_vertices, lambda1_, lambda2_, prior_),
+      static_cast<Eigen::Index> (model_->profileLine ().size ()), targets.points, frontal_weight_, sagittal_weight_,
+      max_distance_};
+  std::vector<int> all (static_cast<size_t> (model_->numVertices ()));
+  std::iota (all.begin (), all.end (), 0);
+  const ShapeProblem whole (*model_, selection_, all, lambda1_, lambda2_, prior_);
+  const Polyline2d silhouette (profile.normalisedSilhouette ());
+
+  PoseShapeState state;
+  state.log_scale = std::log (result.scale);
+  state.rotation = result.rotation;
+  state.translation = result.translation;
+  state.coefficients = result.coefficients;
+  state.vertices = whole.vertexPositions (state.coefficients);
+  PoseShapeState best = state;
+  double best_error = std::numeric_limits<double>::infinity ();
+  for (int round = 0;; ++round) {
+    TwoViewIteration iteration;
+    iteration.stage = TwoViewStage::tps_icp;
+    const std::vector<WeightedRow> image_rows =
+        currentRows (two_view, silhouette, onProblem (state, two_view.shape), iteration);
+    const double error = jointCost (iteration, targets.points.size (), frontal_weight_);
+    if (!(error < best_error))
+      break;
+    best = state;
+    best_error = error;
+    result.history.push_back (iteration);
+    if (round == kTpsIcpRounds)
+      break;
+    const std::vector<WeightedRow> rows = tpsTargetRows (two_view, image_rows, state, frontal_weight_);
+    for (int it = 0; it < shape_iterations_; ++it) {
+      const Eigen::Matrix3Xd before = state.posed ();
+      if (!detail::poseShapeStep (whole, state, rows, selection_.total () > 0))
+        throw NumericalError ("TwoViewFitting::fitTpsIcp: the normal equations could not be solved");
+      if (detail::poseShapeMotion (before, state) < detail::kPoseShapeMotionEpsilon)
+        break;
+    }
+  }
+  result.final_residuals.stage = TwoViewStage::tps_icp;
+  currentRows (two_view, silhouette, onProblem (best, two_view.shape), result.final_residuals);
+  storeState (*model_, best, result);
+  return result;
+}
+
+TwoViewFit
+TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) const
+{
+  std::vector<int> vertices = model_->profileLine ();
+  FrontalTargets targets;
+  if (frontal) {
+    targets = frontalTargets (*model_, *frontal);
+    vertices.insert (vertices.end (), targets.vertices.begin (), targets.vertices.end ());
+  }
+  const TwoViewProblem problem{ShapeProblem (*model_, selection_, vertices, lambda1_, lambda2_, prior_),
+                               static_cast<Eigen::Index> (model_->profileLine ().size ()),
+                               targets.points,
+                               frontal_weight_,
+                               sagittal_weight_,
+                               max_distance_};
+  const Eigen::Matrix2Xd silhouette_points = profile.normalisedSilhouette ();
+  const Polyline2d silhouette (silhouette_points);
+  PoseShapeState state = initialState (*model_, problem, silhouette_points);
+  TwoViewFit result;
+  for (const TwoViewStage stage : {TwoViewStage::similarity, TwoViewStage::shape}) {
+    const bool shape = stage == TwoViewStage::shape && selection_.total () > 0;
+    const int budget = stage == TwoViewStage::similarity ? similarity_iterations_ : shape_iterations_;
+    for (int it = 0; it < budget; ++it) {
+      TwoViewIteration iteration;
+      iteration.stage = stage;
+      const std::vector<WeightedRow> rows = currentRows (problem, silhouette, state, iteration);
+      if (iteration.profile_correspondences < 3)
+        throw InvalidInputError ("TwoViewFitting: only " + std::to_string (iteration.profile_correspondences) +
+                                 " profile-line vertices lie within " + std::to_string (max_distance_) +
+                                 " mm of the silhouette; check the silhouette and the max correspondence distance");
+      result.history.push_back (iteration);
+      const Eigen::Matrix3Xd before = state.posed ();
+      if (!detail::poseShapeStep (problem.shape, state, rows, shape))
+        throw NumericalError ("TwoViewFitting: the normal equations could not be solved");
+      if (detail::poseShapeMotion (before, state) < detail::kPoseShapeMotionEpsilon)
+        break;
+    }
+  }
+  result.final_residuals.stage = result.history.empty () ? TwoViewStage::similarity : result.history.back ().stage;
+  currentRows (problem, silhouette, state, result.final_residuals);
+  result.selection = selection_;
+  storeState (*model_, state, result);
+  return result;
+}
+} // namespace morphreg
