@@ -1,14 +1,13 @@
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
 #include "commands.h"
-#include "json_report.h"
 #include "mesh_annotations.h"
 #include "pipeline.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/ict_facekit.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/model/ict_region_model.h>
@@ -25,35 +24,45 @@ namespace tools
 {
 namespace
 {
+/** The meshes of a folder and, from its population.json, the profile line of their topology. */
+struct MeshFolder
+{
+  std::vector<std::string> files;
+  std::vector<int> profile_line; ///< empty without population.json or without "profile_line" in it
+};
+
 /** The meshes of \a directory: the heads listed in its population.json (written by synth and demo), else every
  *  .ply .obj .vtk .stl file in name order. */
-std::vector<std::string>
-directoryMeshes (const std::string& directory)
+MeshFolder
+readMeshFolder (const std::string& directory)
 {
   if (!std::filesystem::is_directory (directory))
     throw IoError (directory + ": not a directory");
   const std::string manifest_path = directory + "/population.json";
-  std::vector<std::string> files;
+  MeshFolder folder;
   if (std::filesystem::exists (manifest_path)) {
     const nlohmann::json manifest = readJsonFile (manifest_path);
     try {
       for (const auto& head : manifest.at ("heads"))
-        files.push_back (directory + "/" + head.at ("file").get<std::string> ());
+        folder.files.push_back (directory + "/" + head.at ("file").get<std::string> ());
+      if (manifest.contains ("profile_line"))
+        folder.profile_line = manifest.at ("profile_line").get<std::vector<int>> ();
     }
     catch (const nlohmann::json::exception& e) {
-      throw FormatError (manifest_path + ": expected {\"heads\": [{\"file\": mesh file}, ...]} (" + e.what () + ")");
+      throw FormatError (manifest_path + ": expected {\"heads\": [{\"file\": mesh file}, ...], \"profile_line\": "
+                         "[vertex, ...]} (" + e.what () + ")");
     }
-    return files;
+    return folder;
   }
   for (const auto& entry : std::filesystem::directory_iterator (directory)) {
     const std::string ext = fileExtension (entry.path ().string ());
     if (entry.is_regular_file () && (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl"))
-      files.push_back (entry.path ().string ());
+      folder.files.push_back (entry.path ().string ());
   }
-  std::sort (files.begin (), files.end ());
-  if (files.empty ())
+  std::sort (folder.files.begin (), folder.files.end ());
+  if (folder.files.empty ())
     throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl) in the folder");
-  return files;
+  return folder;
 }
 
 /** Loads every mesh, each checked against the first: a mismatch names the file. */
@@ -77,9 +86,10 @@ loadMeshes (const std::vector<std::string>& files, bool quiet)
 MorphableModel::Ptr
 buildFromMeshes (const BuildModelOptions& options, nlohmann::json& summary)
 {
-  std::vector<std::string> files;
+  MeshFolder folder;
   if (!options.directory.empty ())
-    files = directoryMeshes (options.directory);
+    folder = readMeshFolder (options.directory);
+  std::vector<std::string>& files = folder.files;
   files.insert (files.end (), options.meshes.begin (), options.meshes.end ());
   const std::vector<TriangleMesh> meshes = loadMeshes (files, options.quiet);
   const Eigen::Index num_vertices = meshes.front ().numVertices ();
@@ -89,8 +99,19 @@ buildFromMeshes (const BuildModelOptions& options, nlohmann::json& summary)
                                   : builder.build (meshes, loadRegionLabels (options.regions, num_vertices));
   if (!options.landmark_vertices.empty ())
     model->setLandmarks (loadLandmarkVertices (options.landmark_vertices, num_vertices));
-  summary["source"] = {{"meshes", files.size ()}, {"regions", options.regions}, {"landmark_vertices",
-                                                                                options.landmark_vertices}};
+  if (!folder.profile_line.empty ()) { // what fit-photos needs
+    try {
+      model->setProfileLine (folder.profile_line);
+    }
+    catch (const InvalidInputError& e) {
+      throw FormatError (options.directory + "/population.json: profile_line does not fit the meshes (" + e.what () +
+                         ")");
+    }
+  }
+  summary["source"] = {{"meshes", files.size ()},
+                       {"regions", options.regions},
+                       {"landmark_vertices", options.landmark_vertices},
+                       {"profile_line_vertices", folder.profile_line.size ()}};
   return model;
 }
 

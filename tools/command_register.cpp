@@ -1,12 +1,13 @@
 // `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
-#include "json_report.h"
+#include "distance_statistics.h"
 #include "pipeline.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
@@ -43,38 +44,6 @@ double
 secondsSince (Clock::time_point start)
 {
   return std::chrono::duration<double> (Clock::now () - start).count ();
-}
-
-/** The finite entries of \a values (NaN = a vertex without a residual), sorted. */
-std::vector<double>
-sortedFinite (const Eigen::VectorXd& values)
-{
-  std::vector<double> finite;
-  for (double v : values)
-    if (std::isfinite (v))
-      finite.push_back (v);
-  std::sort (finite.begin (), finite.end ());
-  return finite;
-}
-
-/** Count, mean, median, RMS and maximum (mm) of the finite \a values. */
-nlohmann::json
-distanceStatistics (const Eigen::VectorXd& values)
-{
-  const std::vector<double> finite = sortedFinite (values);
-  if (finite.empty ())
-    return {{"count", 0}};
-  double sum = 0.0, squares = 0.0;
-  for (double v : finite) {
-    sum += v;
-    squares += v * v;
-  }
-  const double n = static_cast<double> (finite.size ());
-  return {{"count", finite.size ()},
-          {"mean", sum / n},
-          {"median", finite[finite.size () / 2]},
-          {"rms", std::sqrt (squares / n)},
-          {"max", finite.back ()}};
 }
 
 /** The colour scale (mm) of the residual map: the given maximum, else the 95th percentile of the residuals. */
@@ -354,7 +323,7 @@ registerScanFile (const RegisterOptions& options)
                          {"total", secondsSince (start)}};
   const std::string report_path =
       options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string () : options.report;
-  writeJsonReport (report_path, report);
+  writeJsonFile (report_path, report);
   std::cout << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
             << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS "
             << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"

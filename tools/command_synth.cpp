@@ -4,6 +4,9 @@
 #include "scanner_options.h"
 #include "synthetic_output.h"
 
+#include <morphreg/common/landmarks.h>
+
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -20,9 +23,28 @@ struct SynthOptions
   std::uint64_t seed = 1;
   int resolution = 40;
   int scans = 0;
+  int photos = 0;
   bool quiet = false;
   synthetic::ScanSimulator::Parameters scanner;
 };
+
+/** Profile and frontal photo annotations of the first options.photos heads, each nodding by 5 degrees. */
+void
+writeHeadPhotos (const SynthOptions& options, const synthetic::HeadGenerator& generator,
+                 const std::vector<synthetic::SyntheticHead>& heads)
+{
+  synthetic::PhotoSimulator::Parameters camera;
+  camera.rotation = Eigen::AngleAxisd (5.0 * M_PI / 180.0, Eigen::Vector3d::UnitX ()).toRotationMatrix ();
+  const synthetic::PhotoSimulator simulator (camera);
+  const LandmarkVertices frontal = frontalLandmarks (generator.landmarks ());
+  for (int i = 0; i < options.photos; ++i) {
+    const auto& head = heads[static_cast<std::size_t> (i)];
+    const std::uint64_t seed = options.seed + static_cast<std::uint64_t> (i);
+    writePhotos (options.out, "photo_" + std::to_string (i),
+                 simulator.photograph (head.mesh.vertices, frontal, generator.profileLine (), seed),
+                 static_cast<std::size_t> (i));
+  }
+}
 
 void
 runSynth (const SynthOptions& options)
@@ -40,7 +62,9 @@ runSynth (const SynthOptions& options)
   }
   if (options.scans > 0)
     progress.finish ();
-  std::cout << "wrote " << options.count << " heads and " << options.scans << " scans to " << options.out << '\n';
+  writeHeadPhotos (options, generator, heads);
+  std::cout << "wrote " << options.count << " heads, " << options.scans << " scans and " << options.photos
+            << " photo pairs to " << options.out << '\n';
 }
 } // namespace
 
@@ -58,11 +82,16 @@ registerSynthCommand (CLI::App& app)
       ->capture_default_str ();
   command->add_option ("--scans", options->scans, "simulate scans of the first N heads")->check (CLI::NonNegativeNumber)
       ->capture_default_str ();
+  command->add_option ("--photos", options->photos,
+                       "annotated profile and frontal photos of the first N heads (for fit-photos)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
   addScannerOptions (command, options->scanner);
   command->callback ([options] () {
     if (options->scans > options->count)
       throw CLI::ValidationError ("--scans", "cannot scan more heads than --count");
+    if (options->photos > options->count)
+      throw CLI::ValidationError ("--photos", "cannot photograph more heads than --count");
     runSynth (*options);
   });
 }

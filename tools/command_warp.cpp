@@ -1,11 +1,11 @@
 // `morphreg warp`: a mesh warped by a thin plate spline from source to target landmarks, globally or by segments
 // with blended seams; with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
-#include "json_report.h"
 #include "mesh_annotations.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
@@ -141,7 +141,7 @@ runWarp (const WarpOptions& options)
                 << quality.max_error << " mm (vertex colours of " << options.out << ")\n";
   }
   if (!options.report.empty ())
-    writeJsonReport (options.report, report);
+    writeJsonFile (options.report, report);
   std::cout << "wrote " << options.out << '\n';
 }
 } // namespace

@@ -17,6 +17,7 @@ void registerRenderCommand (CLI::App& app);
 void registerWarpCommand (CLI::App& app);
 void registerBuildModelCommand (CLI::App& app);
 void registerRegisterCommand (CLI::App& app);
+void registerFitPhotosCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -25,6 +26,7 @@ registerCommands (CLI::App& app)
   registerSynthCommand (app);
   registerBuildModelCommand (app);
   registerRegisterCommand (app);
+  registerFitPhotosCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
   registerWarpCommand (app);

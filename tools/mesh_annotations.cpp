@@ -1,5 +1,4 @@
 #include "mesh_annotations.h"
-#include "json_report.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
@@ -24,7 +23,7 @@ generatorRegions (const synthetic::HeadGenerator& generator)
 void
 saveRegionLabels (const std::string& path, const RegionLabels& regions)
 {
-  writeJsonReport (path, {{"regions", regions.names}, {"labels", regions.labels}});
+  writeJsonFile (path, {{"regions", regions.names}, {"labels", regions.labels}});
 }
 
 RegionLabels
@@ -58,7 +57,7 @@ loadRegionLabels (const std::string& path, Eigen::Index num_vertices)
 void
 saveLandmarkVertices (const std::string& path, const LandmarkVertices& landmarks)
 {
-  writeJsonReport (path, {{"landmark_vertices", landmarks}});
+  writeJsonFile (path, {{"landmark_vertices", landmarks}});
 }
 
 LandmarkVertices

@@ -1,12 +1,13 @@
 #include "synthetic_output.h"
-#include "json_report.h"
 #include "mesh_annotations.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/photo/photo_view_io.h>
 
 #include <filesystem>
 #include <fstream>
@@ -89,7 +90,7 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
     progress.step (static_cast<int> (i + 1));
   }
   progress.finish ();
-  writeJsonReport (directory + "/population.json", manifest);
+  writeJsonFile (directory + "/population.json", manifest);
   return manifest;
 }
 
@@ -113,7 +114,7 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
                           {"source_triangle", scan.source_triangle},
                           {"barycentric", std::vector<double> (scan.barycentric.data (),
                                                                scan.barycentric.data () + scan.barycentric.size ())}};
-  writeJsonReport (directory + "/" + name + "_truth.json", truth);
+  writeJsonFile (directory + "/" + name + "_truth.json", truth);
   if (!scan.range_mesh.polygons.empty ())
     savePolygonMesh (directory + "/" + name + "_range.ply", scan.range_mesh);
   return {{"cloud", name + ".pcd"},
@@ -123,6 +124,25 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
           {"num_points", scan.cloud->size ()},
           {"num_outliers", scan.num_outliers},
           {"scale", scan.scale}};
+}
+
+nlohmann::json
+writePhotos (const std::string& directory, const std::string& name, const synthetic::SimulatedPhotos& photos,
+             std::size_t head_index)
+{
+  makeDirectory (directory);
+  saveProfileView (directory + "/" + name + "_profile.json", photos.profile);
+  saveFrontalView (directory + "/" + name + "_frontal.json", photos.frontal);
+  Eigen::Matrix4d pose = Eigen::Matrix4d::Identity ();
+  pose.topLeftCorner<3, 3> () = photos.scale * photos.rotation;
+  pose.topRightCorner<3, 1> () = photos.translation;
+  const nlohmann::json truth = {{"head", headFileName (head_index, ".ply")},
+                                {"units", "head in mm, photo frame normalised (pixels / longer image side)"},
+                                {"head_to_photo", std::vector<double> (pose.data (), pose.data () + 16)},
+                                {"head_to_photo_layout", "column-major 4x4"},
+                                {"scale", photos.scale}};
+  writeJsonFile (directory + "/" + name + "_truth.json", truth);
+  return {{"profile", name + "_profile.json"}, {"frontal", name + "_frontal.json"}, {"truth", name + "_truth.json"}};
 }
 
 } // namespace tools

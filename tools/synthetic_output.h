@@ -1,6 +1,7 @@
 #pragma once
 // Writing the synthetic population and simulated scans to disk, shared by the synth and demo commands.
 #include <morphreg/synthetic/head_generator.h>
+#include <morphreg/synthetic/photo_simulator.h>
 #include <morphreg/synthetic/scan_simulator.h>
 
 #include <nlohmann/json.hpp>
@@ -25,6 +26,14 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
 nlohmann::json
 writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan,
            const TriangleMesh& head, const LandmarkVertices& landmarks);
+
+/** Writes the annotations of two simulated photos of head \a head_index of writePopulation's heads as
+ *  <name>_profile.json and <name>_frontal.json (read by `fit-photos`), and <name>_truth.json: the head file and the
+ *  similarity that took it into the photos' normalised frame (the ground truth of `fit-photos --truth`); returns a
+ *  summary for reports. */
+nlohmann::json
+writePhotos (const std::string& directory, const std::string& name, const synthetic::SimulatedPhotos& photos,
+             std::size_t head_index);
 
 /** Creates \a directory (and parents); throws IoError naming it on failure. */
 void

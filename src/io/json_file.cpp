@@ -3,6 +3,7 @@
 #include <morphreg/io/json_file.h>
 
 #include <fstream>
+#include <iomanip>
 
 namespace morphreg
 {
@@ -23,7 +24,7 @@ void
 writeJsonFile (const std::string& path, const nlohmann::json& document)
 {
   std::ofstream stream (path, std::ios::trunc);
-  stream << document.dump (1) << '\n';
+  stream << std::setw (2) << document << '\n';
   stream.close ();
   if (!stream)
     throw IoError (path + ": cannot be written");

@@ -28,8 +28,8 @@ TwoViewFit::similarity () const
   return m;
 }
 
-void
-saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit)
+nlohmann::json
+twoViewFitJson (const TwoViewFit& fit)
 {
   nlohmann::json history = nlohmann::json::array ();
   for (const TwoViewIteration& iteration : fit.history)
@@ -37,7 +37,7 @@ saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit)
   nlohmann::json rotation = nlohmann::json::array ();
   for (int r = 0; r < 3; ++r)
     rotation.push_back ({fit.rotation (r, 0), fit.rotation (r, 1), fit.rotation (r, 2)});
-  const nlohmann::json document = {
+  return {
       {"scale", fit.scale},
       {"rotation", rotation},
       {"translation", {fit.translation.x (), fit.translation.y (), fit.translation.z ()}},
@@ -45,6 +45,11 @@ saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit)
       {"coefficients", std::vector<double> (fit.coefficients.data (), fit.coefficients.data () + fit.coefficients.size ())},
       {"final", iterationJson (fit.final_residuals)},
       {"history", history}};
-  writeJsonFile (path, document);
+}
+
+void
+saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit)
+{
+  writeJsonFile (path, twoViewFitJson (fit));
 }
 } // namespace morphreg

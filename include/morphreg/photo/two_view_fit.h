@@ -6,6 +6,7 @@
 #include <morphreg/model/component_selection.h>
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -50,6 +51,10 @@ struct TwoViewFit
   Eigen::Matrix4d
   similarity () const;
 };
+
+/** \brief \a fit's similarity, coefficients, final residuals and iteration history as JSON (not the meshes). */
+nlohmann::json
+twoViewFitJson (const TwoViewFit& fit);
 
 /** \brief Writes \a fit's similarity, coefficients, final residuals and iteration history as JSON (not the meshes);
  *  IoError if the file cannot be written.

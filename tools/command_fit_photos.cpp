@@ -1,0 +1,192 @@
+// `morphreg fit-photos`: a head model fitted to an annotated profile photo and frontal photo (METHOD.md section 4),
+// written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.
+#include "commands.h"
+#include "distance_statistics.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/json_file.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/io/model_io.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/photo/frontal_texture.h>
+#include <morphreg/photo/photo_view_io.h>
+#include <morphreg/photo/rgb_image.h>
+#include <morphreg/photo/two_view_fitting.h>
+#include <morphreg/visualization/colour_map.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+struct FitPhotosOptions
+{
+  std::string profile, frontal, model, photo, truth, report;
+  std::string out = "fitted.ply";
+  std::string approach = "joint";
+  double lambda1 = 1.0;
+  double frontal_weight = 4.0;
+  double sagittal_weight = 1.0;
+  double colour_max = 5.0;
+  bool quiet = false;
+};
+
+/** A head and the similarity that took it into the photos' normalised frame, as `synth --photos` writes them. */
+struct PhotoTruth
+{
+  TriangleMesh head;
+  Eigen::Matrix4d head_to_photo;
+};
+
+PhotoTruth
+loadPhotoTruth (const std::string& path)
+{
+  const nlohmann::json document = readJsonFile (path);
+  PhotoTruth truth;
+  std::string head_file;
+  std::vector<double> pose;
+  try {
+    head_file = document.at ("head").get<std::string> ();
+    pose = document.at ("head_to_photo").get<std::vector<double>> ();
+  }
+  catch (const nlohmann::json::exception& e) {
+    throw FormatError (path + ": expected {\"head\": mesh file, \"head_to_photo\": [16 numbers, column-major]} (" +
+                       e.what () + ")");
+  }
+  if (pose.size () != 16)
+    throw FormatError (path + ": head_to_photo has " + std::to_string (pose.size ()) + " numbers, not 16");
+  truth.head_to_photo = Eigen::Map<const Eigen::Matrix4d> (pose.data ());
+  if (!truth.head_to_photo.allFinite () || !(std::abs (truth.head_to_photo.topLeftCorner<3, 3> ().determinant ()) > 0.0))
+    throw FormatError (path + ": head_to_photo is not an invertible similarity");
+  truth.head = loadTriangleMesh ((std::filesystem::path (path).parent_path () / head_file).string ());
+  return truth;
+}
+
+/** Vertex errors (mm) of the fit against the true head: the fitted head in the photo frame taken back through the
+ *  true similarity; printed and added to \a report. */
+Eigen::VectorXd
+truthErrors (const std::string& path, const TwoViewFit& fit, nlohmann::json& report)
+{
+  const PhotoTruth truth = loadPhotoTruth (path);
+  requireSameTopology (fit.image_mesh, truth.head, path);
+  const Eigen::Affine3d to_photo (truth.head_to_photo);
+  const Eigen::Matrix3Xd back = to_photo.inverse () * fit.image_mesh.vertices;
+  const Eigen::Matrix3Xd difference = back - truth.head.vertices;
+  const Eigen::VectorXd errors = difference.colwise ().norm ().transpose ();
+  report["truth_error_mm"] = distanceStatistics (errors);
+  report["truth_error_mm"]["width_rms"] = std::sqrt (difference.row (0).squaredNorm () / difference.cols ());
+  report["truth_error_mm"]["file"] = path;
+  report["truth_scale_ratio"] = fit.scale / std::cbrt (truth.head_to_photo.topLeftCorner<3, 3> ().determinant ());
+  std::cout << "vertex RMS against the truth " << path << ": " << std::fixed << std::setprecision (3)
+            << report["truth_error_mm"]["rms"].get<double> () << " mm (max "
+            << report["truth_error_mm"]["max"].get<double> () << ", width RMS "
+            << report["truth_error_mm"]["width_rms"].get<double> () << ")\n"
+            << std::defaultfloat;
+  return errors;
+}
+
+TwoViewFit
+fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model, const ProfileView& profile,
+          const FrontalView& frontal)
+{
+  if (model->profileLine ().empty ())
+    throw InvalidInputError (options.model + ": the model has no profile line; build it with `build-model --dir` on "
+                             "the output of synth or demo (their population.json holds it)");
+  TwoViewFitting fitting (model);
+  fitting.setSmoothnessWeight (options.lambda1);
+  fitting.setFrontalWeight (options.frontal_weight);
+  fitting.setSagittalWeight (options.sagittal_weight);
+  if (!options.quiet)
+    std::cerr << "fitting " << options.model << " to " << options.profile << " and " << options.frontal << " ("
+              << options.approach << ")\n";
+  if (options.approach == "profile")
+    return fitting.fitProfile (profile);
+  if (options.approach == "tps")
+    return fitting.fitTpsIcp (profile, frontal);
+  return fitting.fitJoint (profile, frontal);
+}
+
+void
+runFitPhotos (const FitPhotosOptions& options)
+{
+  const auto start = std::chrono::steady_clock::now ();
+  const MorphableModel::ConstPtr model = loadModel (options.model);
+  const ProfileView profile = loadProfileView (options.profile);
+  const FrontalView frontal = loadFrontalView (options.frontal);
+  const TwoViewFit fit = fitViews (options, model, profile, frontal);
+
+  nlohmann::json report = twoViewFitJson (fit);
+  report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
+  report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
+  report["settings"] = {{"approach", options.approach},
+                        {"lambda1", options.lambda1},
+                        {"frontal_weight", options.frontal_weight},
+                        {"sagittal_weight", options.sagittal_weight}};
+  std::cout << "fit (" << options.approach << "): " << fit.history.size () << " iterations, profile RMS "
+            << fit.final_residuals.profile_rms << " mm over " << fit.final_residuals.profile_correspondences
+            << " profile-line vertices, landmark RMS " << fit.final_residuals.landmark_rms << " mm\n";
+
+  std::string colouring = "none";
+  if (!options.truth.empty ()) {
+    const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max)));
+    colouring = "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
+  }
+  else if (!options.photo.empty ()) {
+    const VertexTexture texture = frontalTexture (fit.image_mesh, frontal.normalisation (), loadRgbImage (options.photo));
+    report["texture"] = {{"photo", options.photo}, {"visible_vertices", texture.visibleCount ()}};
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture.colours));
+    colouring = "frontal photo (grey where unseen)";
+  }
+  else {
+    saveTriangleMesh (options.out, fit.model_mesh);
+  }
+  report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
+  report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  if (!options.report.empty ())
+    writeJsonFile (options.report, report);
+  std::cout << "wrote " << options.out << " (model frame, mm; colours: " << colouring << ")\n";
+}
+} // namespace
+
+void
+registerFitPhotosCommand (CLI::App& app)
+{
+  auto options = std::make_shared<FitPhotosOptions> ();
+  CLI::App* command =
+      app.add_subcommand ("fit-photos", "fit a head model to a profile silhouette and frontal landmarks (two photos)");
+  command->add_option ("--profile", options->profile, "profile annotation (JSON: silhouette, nose tip, pixels)")
+      ->required ();
+  command->add_option ("--frontal", options->frontal, "frontal annotation (JSON: named landmarks, pixels)")->required ();
+  command->add_option ("-m,--model", options->model, "model file with a profile line and landmarks (HDF5)")->required ();
+  command->add_option ("--approach", options->approach,
+                       "joint (one Gauss-Newton over both photos), tps (TPS-ICP) or profile (the silhouette alone)")
+      ->check (CLI::IsMember ({"joint", "tps", "profile"}))->capture_default_str ();
+  command->add_option ("--photo", options->photo, "frontal photo (PNG/JPEG): colour the fitted head from it");
+  command->add_option ("--truth", options->truth,
+                       "true head and pose (JSON of `synth --photos`): report the fit's error, colour by it");
+  command->add_option ("--smoothness", options->lambda1, "lambda_1, the smoothness prior across regions (> 0)")
+      ->check (CLI::PositiveNumber)->capture_default_str ();
+  command->add_option ("--frontal-weight", options->frontal_weight, "weight of each frontal landmark's rows (> 0)")
+      ->check (CLI::PositiveNumber)->capture_default_str ();
+  command->add_option ("--sagittal-weight", options->sagittal_weight,
+                       "weight of the rows that keep the profile in the plane X = 0 (0 for a turned or tilted head)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--colour-max", options->colour_max, "error (mm) at the top of the colour scale with --truth")
+      ->check (CLI::PositiveNumber)->capture_default_str ();
+  command->add_option ("-o,--out", options->out, "fitted head to write (PLY, model frame, mm)")->capture_default_str ();
+  command->add_option ("--report", options->report, "JSON report to write");
+  command->add_flag ("-q,--quiet", options->quiet, "less output");
+  command->callback ([options] () { runFitPhotos (*options); });
+}
+
+} // namespace tools
+} // namespace morphreg
