@@ -27,14 +27,9 @@ struct Fixture
     std::vector<morphreg::TriangleMesh> meshes;
     for (auto& head : generator.population (120, 1000))
       meshes.push_back (std::move (head.mesh));
-    morphreg::RegionLabels regions;
-    for (int r = 0; r < morphreg::synthetic::kNumHeadRegions; ++r)
-      regions.names.push_back (morphreg::synthetic::headRegionName (static_cast<morphreg::synthetic::HeadRegion> (r)));
-    for (auto label : generator.regionLabels ())
-      regions.labels.push_back (static_cast<int> (label));
     morphreg::ModelBuilderSettings settings;
     settings.max_components = 10;
-    model = morphreg::ModelBuilder (settings).build (meshes, regions);
+    model = morphreg::ModelBuilder (settings).build (meshes, generator.regions ());
     mean = model->generateCloud<pcl::PointNormal> (Eigen::VectorXd::Zero (0),
                                                    morphreg::ComponentSelection (std::vector<int> (7, 0)));
     morphreg::synthetic::ScanSimulator::Parameters parameters;

@@ -57,7 +57,7 @@ buildModel (int argc, char** argv)
   const bool head_topology = meshes[0].triangles.cols () == generator.triangles ().cols () &&
                              meshes[0].triangles == generator.triangles ();
   const morphreg::MorphableModel::Ptr model =
-      head_topology ? builder.build (meshes, samples::headRegions (generator)) : builder.buildGlobal (meshes);
+      head_topology ? builder.build (meshes, generator.regions ()) : builder.buildGlobal (meshes);
   if (head_topology) {
     model->setLandmarks (generator.landmarks ());
     model->setProfileLine (generator.profileLine ()); // what fitting to photos needs (sample_fit_photos)

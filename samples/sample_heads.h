@@ -5,26 +5,11 @@
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
 
-#include <algorithm>
-#include <iterator>
 #include <vector>
 
 namespace samples
 {
 namespace synthetic = morphreg::synthetic;
-
-/** The generator's seven regions (eyes, nose, mouth, ...) as the model builder takes them. */
-inline morphreg::RegionLabels
-headRegions (const synthetic::HeadGenerator& generator)
-{
-  morphreg::RegionLabels regions;
-  for (int r = 0; r < synthetic::kNumHeadRegions; ++r)
-    regions.names.push_back (synthetic::headRegionName (synthetic::HeadRegion (r)));
-  const auto& labels = generator.regionLabels ();
-  std::transform (labels.begin (), labels.end (), std::back_inserter (regions.labels),
-                  [] (synthetic::HeadRegion region) { return static_cast<int> (region); });
-  return regions;
-}
 
 /** Heads seed, seed + 1, ..., seed + count - 1 of the population, as meshes in one topology (mm). */
 inline std::vector<morphreg::TriangleMesh>
@@ -45,7 +30,7 @@ buildHeadModel (const synthetic::HeadGenerator& generator, int count, int compon
   morphreg::ModelBuilderSettings settings;
   settings.max_components = components;
   auto model =
-      morphreg::ModelBuilder (settings).build (populationMeshes (generator, count, 1), headRegions (generator));
+      morphreg::ModelBuilder (settings).build (populationMeshes (generator, count, 1), generator.regions ());
   model->setLandmarks (generator.landmarks ());
   model->setProfileLine (generator.profileLine ());
   return model;

@@ -9,17 +9,6 @@ namespace morphreg
 {
 namespace tools
 {
-RegionLabels
-generatorRegions (const synthetic::HeadGenerator& generator)
-{
-  RegionLabels regions;
-  for (int r = 0; r < synthetic::kNumHeadRegions; ++r)
-    regions.names.push_back (synthetic::headRegionName (static_cast<synthetic::HeadRegion> (r)));
-  for (synthetic::HeadRegion label : generator.regionLabels ())
-    regions.labels.push_back (static_cast<int> (label));
-  return regions;
-}
-
 void
 saveRegionLabels (const std::string& path, const RegionLabels& regions)
 {

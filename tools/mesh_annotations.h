@@ -11,10 +11,6 @@ namespace morphreg
 {
 namespace tools
 {
-/** The seven region labels of the generator's heads. */
-RegionLabels
-generatorRegions (const synthetic::HeadGenerator& generator);
-
 /** Writes {"regions": [names], "labels": [region index per vertex]}. */
 void
 saveRegionLabels (const std::string& path, const RegionLabels& regions);

@@ -51,7 +51,7 @@ parametersJson (const synthetic::HeadParameters& parameters)
 nlohmann::json
 writeTopology (const std::string& directory, const synthetic::HeadGenerator& generator)
 {
-  saveRegionLabels (directory + "/regions.json", generatorRegions (generator));
+  saveRegionLabels (directory + "/regions.json", generator.regions ());
   saveLandmarkVertices (directory + "/landmark_vertices.json", generator.landmarks ());
   return {{"num_vertices", generator.numVertices ()},
           {"region_labels", "regions.json"},

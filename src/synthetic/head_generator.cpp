@@ -151,6 +151,17 @@ HeadGenerator::population (int count, std::uint64_t seed) const
   return heads;
 }
 
+RegionLabels
+HeadGenerator::regions () const
+{
+  RegionLabels regions;
+  for (int r = 0; r < kNumHeadRegions; ++r)
+    regions.names.push_back (headRegionName (static_cast<HeadRegion> (r)));
+  for (const HeadRegion label : region_labels_)
+    regions.labels.push_back (static_cast<int> (label));
+  return regions;
+}
+
 void
 HeadGenerator::placeLandmarks ()
 {

@@ -44,14 +44,9 @@ protected:
     std::vector<morphreg::TriangleMesh> meshes;
     for (auto& head : generator_->population (kTrainingHeads, kTrainingSeed))
       meshes.push_back (std::move (head.mesh));
-    morphreg::RegionLabels regions;
-    for (int r = 0; r < morphreg::synthetic::kNumHeadRegions; ++r)
-      regions.names.push_back (morphreg::synthetic::headRegionName (static_cast<morphreg::synthetic::HeadRegion> (r)));
-    for (auto label : generator_->regionLabels ())
-      regions.labels.push_back (static_cast<int> (label));
     morphreg::ModelBuilderSettings settings;
     settings.max_components = 20;
-    auto model = morphreg::ModelBuilder (settings).build (meshes, regions);
+    auto model = morphreg::ModelBuilder (settings).build (meshes, generator_->regions ());
     model->setLandmarks (generator_->landmarks ());
     model_ = new MorphableModel::ConstPtr (model);
   }

@@ -31,12 +31,7 @@ trainingMeshes (int count, std::uint64_t seed = 7)
 inline RegionLabels
 headRegions ()
 {
-  RegionLabels regions;
-  for (int j = 0; j < synthetic::kNumHeadRegions; ++j)
-    regions.names.push_back (synthetic::headRegionName (static_cast<synthetic::HeadRegion> (j)));
-  for (const auto label : coarseGenerator ().regionLabels ())
-    regions.labels.push_back (static_cast<int> (label));
-  return regions;
+  return coarseGenerator ().regions ();
 }
 } // namespace test
 } // namespace morphreg

@@ -38,14 +38,9 @@ photoTestModel ()
     result.training_mean = Eigen::Matrix3Xd::Zero (3, generator.numVertices ());
     for (const TriangleMesh& mesh : meshes)
       result.training_mean += mesh.vertices / static_cast<double> (meshes.size ());
-    RegionLabels regions;
-    for (int r = 0; r < synthetic::kNumHeadRegions; ++r)
-      regions.names.push_back (synthetic::headRegionName (static_cast<synthetic::HeadRegion> (r)));
-    for (auto label : generator.regionLabels ())
-      regions.labels.push_back (static_cast<int> (label));
     ModelBuilderSettings settings;
     settings.max_components = 20;
-    auto model = ModelBuilder (settings).build (meshes, regions);
+    auto model = ModelBuilder (settings).build (meshes, generator.regions ());
     model->setLandmarks (generator.landmarks ());
     model->setProfileLine (generator.profileLine ());
     result.model = model;

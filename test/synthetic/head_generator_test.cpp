@@ -125,6 +125,18 @@ TEST (HeadGeneratorTest, AllLandmarksPresentAndOnTheirSide)
   EXPECT_GT (landmark (head, "left_eye_outer").x (), landmark (head, "left_eye_inner").x ());
 }
 
+TEST (HeadGeneratorTest, RegionsAreTheLabelsNamedForTheModelBuilder)
+{
+  const morphreg::RegionLabels regions = generator ().regions ();
+  ASSERT_EQ (regions.names.size (), static_cast<std::size_t> (morphreg::synthetic::kNumHeadRegions));
+  EXPECT_EQ (regions.names[static_cast<int> (HeadRegion::nose)], "nose");
+  EXPECT_EQ (regions.names[static_cast<int> (HeadRegion::skull_neck)], "skull_neck");
+  ASSERT_EQ (regions.labels.size (), generator ().regionLabels ().size ());
+  for (std::size_t v = 0; v < regions.labels.size (); ++v)
+    ASSERT_EQ (regions.labels[v], static_cast<int> (generator ().regionLabels ()[v])) << "vertex " << v;
+  EXPECT_NO_THROW (morphreg::validateRegionLabels (regions, generator ().numVertices ()));
+}
+
 TEST (HeadGeneratorTest, RegionLabelsCoverEveryVertexAndFeature)
 {
   const auto& labels = generator ().regionLabels ();

@@ -4,6 +4,7 @@
  */
 #include <morphreg/common/landmarks.h>
 #include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/model/region_segmentation.h>
 #include <morphreg/synthetic/head_parameters.h>
 
 #include <cstdint>
@@ -109,6 +110,10 @@ public:
   {
     return region_labels_;
   }
+
+  /** \brief The seven regions named (headRegionName) and indexed per vertex, as ModelBuilder::build takes them. */
+  RegionLabels
+  regions () const;
 
 private:
   void
