@@ -29,7 +29,7 @@ struct WarpOptions
 {
   std::string mesh, source, target, out = "warped.ply";
   std::string labels, truth, report;
-  double blend = 100.0;
+  std::vector<double> blend{100.0};  ///< one for every segment, or one per segment
   std::vector<double> overlap{90.0}; ///< one for every segment, or one per segment
   double lambda = 0.0;
   bool quiet = false;
@@ -73,16 +73,16 @@ nonNegativeOrInfinite ()
       "NONNEGATIVE or inf");
 }
 
-/** \a overlap given once applies to every segment; otherwise it needs one value per segment. */
+/** The \a values of \a option: given once they apply to every segment; otherwise one value per segment. */
 std::vector<double>
-overlapPerSegment (const std::vector<double>& overlap, int num_segments)
+valuePerSegment (const std::vector<double>& values, int num_segments, const std::string& option)
 {
-  if (overlap.size () == 1)
-    return std::vector<double> (static_cast<std::size_t> (num_segments), overlap.front ());
-  if (overlap.size () != static_cast<std::size_t> (num_segments))
-    throw InvalidInputError ("warp: --overlap has " + std::to_string (overlap.size ()) + " values for " +
+  if (values.size () == 1)
+    return std::vector<double> (static_cast<std::size_t> (num_segments), values.front ());
+  if (values.size () != static_cast<std::size_t> (num_segments))
+    throw InvalidInputError ("warp: " + option + " has " + std::to_string (values.size ()) + " values for " +
                              std::to_string (num_segments) + " segments; give one value or one per segment");
-  return overlap;
+  return values;
 }
 
 TriangleMesh
@@ -103,13 +103,15 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
   const int num_segments = static_cast<int> (segments.names.size ());
   SegmentedWarp warp (segments.labels, num_segments);
   warp.setRegularization (options.lambda);
-  warp.setBlendWidth (options.blend);
-  const std::vector<double> overlap = overlapPerSegment (options.overlap, num_segments);
+  const std::vector<double> blend = valuePerSegment (options.blend, num_segments, "--blend");
+  for (int s = 0; s < num_segments; ++s)
+    warp.setSegmentBlendWidth (s, blend[static_cast<std::size_t> (s)]);
+  const std::vector<double> overlap = valuePerSegment (options.overlap, num_segments, "--overlap");
   const auto subsets = warp.setLandmarks (mesh, source, target, overlap);
   for (const auto& subset : subsets)
     report["segment_landmarks"].push_back (subset.size ());
   report["mode"] = "segmented";
-  report["blend_width_mm"] = options.blend;
+  report["blend_width_mm"] = blend;
   for (double o : overlap) // an infinite overlap (JSON has no infinity): the segment takes every landmark
     report["overlap_mm"].push_back (std::isinf (o) ? nlohmann::json ("all") : nlohmann::json (o));
   return warp.warp (mesh);
@@ -156,8 +158,13 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
   command->add_option ("-o,--out", options->out, "warped mesh to write")->capture_default_str ();
   command->add_option ("--labels", options->labels, "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
-  command->add_option ("--blend", options->blend, "seam blend width along the mesh (mm), 0 = hard segments")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command
+      ->add_option ("--blend", options->blend,
+                    "how far each segment's warp reaches into its neighbours along the mesh (mm; one value, or one "
+                    "per segment separated by commas; 0 = hard segments)")
+      ->delimiter (',')
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command
       ->add_option ("--overlap", options->overlap,
                     "landmarks join a segment at most this much farther (mm; one value, or one per segment "

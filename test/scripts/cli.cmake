@@ -178,6 +178,20 @@ add_test(NAME CliTest.SegmentedWarpReportsEachOverlap
   COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/warp_segmented.json)
 set_tests_properties(CliTest.SegmentedWarpReportsEachOverlap PROPERTIES FIXTURES_REQUIRED cli_warp_segmented
   PASS_REGULAR_EXPRESSION "\"overlap_mm\": *\\[[^]]*30\\.0[^]]*\"all\"")
+add_test(NAME CliTest.SegmentedWarpTakesABlendWidthPerSegment
+  COMMAND morphreg_cli warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
+          --target ${cli_dir}/small/head_001_landmarks.json --labels ${cli_dir}/small/regions.json
+          --blend 0,0,0,0,0,0,40 --report ${cli_dir}/warp_blend.json --out ${cli_dir}/warped_blend.ply)
+set_tests_properties(CliTest.SegmentedWarpTakesABlendWidthPerSegment PROPERTIES FIXTURES_REQUIRED cli_small
+  FIXTURES_SETUP cli_warp_blend PASS_REGULAR_EXPRESSION "wrote .*warped_blend.ply")
+add_test(NAME CliTest.SegmentedWarpReportsEachBlendWidth COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/warp_blend.json)
+set_tests_properties(CliTest.SegmentedWarpReportsEachBlendWidth PROPERTIES FIXTURES_REQUIRED cli_warp_blend
+  PASS_REGULAR_EXPRESSION "\"blend_width_mm\": *\\[[^]]*0\\.0,[^]]*40\\.0")
+morphreg_cli_expect_exit(WarpBlendCountIsNamed 1 "--blend has 3 values for 7 segments"
+  warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
+  --target ${cli_dir}/small/head_001_landmarks.json --labels ${cli_dir}/small/regions.json --blend 1,2,3
+  --out ${cli_dir}/bad_warp.ply)
+set_tests_properties(CliTest.WarpBlendCountIsNamed PROPERTIES FIXTURES_REQUIRED cli_small)
 morphreg_cli_expect_exit(WarpOverlapCountIsNamed 1 "--overlap has 2 values for 7 segments"
   warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
   --target ${cli_dir}/small/head_001_landmarks.json --labels ${cli_dir}/small/regions.json --overlap 30,30
