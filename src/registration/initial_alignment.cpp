@@ -1,7 +1,8 @@
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
-#include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/initial_alignment.h>
+
+#include "similarity_refinement.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -19,6 +20,14 @@ namespace morphreg
 {
 namespace
 {
+using detail::PointTree;
+using detail::closestPoints;
+using detail::evenSamples;
+using detail::pointTree;
+using detail::transformed;
+using detail::trimmedLimit;
+using detail::trimmedMean;
+
 /** Centroid and covariance of the 90 % of \a points nearest to their coordinate-wise median. */
 struct RobustMoments
 {
@@ -133,103 +142,6 @@ principalAxisRotations (const Eigen::Matrix3d& from, const Eigen::Matrix3d& to)
   return rotations;
 }
 
-/** Every \a stride-th column of \a points, for about \a count columns. */
-Eigen::Matrix3Xd
-evenSamples (const Eigen::Matrix3Xd& points, int count)
-{
-  const Eigen::Index stride = std::max<Eigen::Index> (1, points.cols () / count);
-  Eigen::Matrix3Xd samples (3, (points.cols () + stride - 1) / stride);
-  for (Eigen::Index i = 0; i < samples.cols (); ++i)
-    samples.col (i) = points.col (i * stride);
-  return samples;
-}
-
-using PointTree = pcl::search::KdTree<pcl::PointXYZ>;
-
-/** A k-d tree over the columns of \a points. */
-PointTree::Ptr
-pointTree (const Eigen::Matrix3Xd& points)
-{
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-  cloud->resize (points.cols ());
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
-  PointTree::Ptr tree (new PointTree);
-  tree->setInputCloud (cloud);
-  return tree;
-}
-
-/** Closest point in \a tree (its index) and the distance, for each column of \a points. */
-struct Closest
-{
-  std::vector<int> index;
-  std::vector<double> distance;
-};
-
-/** Serial: the pose hypotheses run in parallel, each on a few thousand points (too few to share out). */
-Closest
-closestPoints (const PointTree& tree, const Eigen::Matrix3Xd& points)
-{
-  Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
-  for (Eigen::Index i = 0; i < points.cols (); ++i) {
-    pcl::PointXYZ query;
-    query.getVector3fMap () = points.col (i).cast<float> ();
-    pcl::Indices index (1);
-    std::vector<float> squared (1);
-    tree.nearestKSearch (query, 1, index, squared);
-    closest.index[i] = index[0];
-    closest.distance[i] = std::sqrt (static_cast<double> (squared[0]));
-  }
-  return closest;
-}
-
-/** The same through \a estimation (on the tree's target), which caches what its last call found. */
-Closest
-closestPoints (CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ>& estimation, const Eigen::Matrix3Xd& points)
-{
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-  cloud->resize (points.cols ());
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
-  estimation.setInputSource (cloud);
-  pcl::Correspondences found;
-  estimation.determineCorrespondences (found);
-  Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
-  for (const pcl::Correspondence& c : found) {
-    closest.index[c.index_query] = c.index_match;
-    closest.distance[c.index_query] = std::sqrt (static_cast<double> (c.distance));
-  }
-  return closest;
-}
-
-/** The distance below which the \a fraction smallest of \a distances lie. */
-double
-trimmedLimit (std::vector<double> distances, double fraction)
-{
-  const auto keep = std::max<size_t> (1, static_cast<size_t> (fraction * static_cast<double> (distances.size ())));
-  std::nth_element (distances.begin (), distances.begin () + static_cast<long> (keep - 1), distances.end ());
-  return distances[keep - 1];
-}
-
-double
-trimmedMean (const std::vector<double>& distances, double fraction)
-{
-  const double limit = trimmedLimit (distances, fraction);
-  double sum = 0.0, count = 0.0;
-  for (double d : distances)
-    if (d <= limit) {
-      sum += d;
-      count += 1.0;
-    }
-  return sum / count;
-}
-
-Eigen::Matrix3Xd
-transformed (const Eigen::Matrix4d& similarity, const Eigen::Matrix3Xd& points)
-{
-  return (similarity.topLeftCorner<3, 3> () * points).colwise () + similarity.topRightCorner<3, 1> ();
-}
-
 /** The points of \a target not isolated (their 12th nearest neighbour within 3x the median such distance: drops
  *  scattered outliers) and their unit normals from the principal axes of those 12 neighbours. */
 struct SurfacePoints
@@ -265,50 +177,6 @@ surfacePoints (const Eigen::Matrix3Xd& target, const TargetNeighbourSearch& targ
   surface.points.conservativeResize (3, kept);
   surface.normals.conservativeResize (3, kept);
   return surface;
-}
-
-/** Trimmed point-to-plane similarity-only ICP of \a samples onto the target of \a tree (with \a normals), from
- *  \a pose: Gauss-Newton on rotation (about the target centroid \a centre), translation and log-scale. The closest
- *  points come through a CachedCorrespondenceEstimation: the samples move less each step, so most queries are
- *  skipped.
- */
-Eigen::Matrix4d
-refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& normals,
-                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
-                  const CoarseAlignmentSettings& settings)
-{
-  CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ> nearest;
-  nearest.setInputTarget (tree->getInputCloud ());
-  nearest.setSearchMethodTarget (tree, true);
-  for (int iteration = 0; iteration < settings.refine_iterations; ++iteration) {
-    const Eigen::Matrix3Xd posed = transformed (pose, samples);
-    const Closest closest = closestPoints (nearest, posed);
-    const double limit = trimmedLimit (closest.distance, settings.inlier_fraction);
-    Eigen::Matrix<double, 7, 7> normal_matrix = Eigen::Matrix<double, 7, 7>::Zero ();
-    Eigen::Matrix<double, 7, 1> rhs = Eigen::Matrix<double, 7, 1>::Zero ();
-    for (Eigen::Index i = 0; i < samples.cols (); ++i)
-      if (closest.distance[i] <= limit) {
-        const Eigen::Vector3d y = posed.col (i) - centre;
-        const Eigen::Vector3d n = normals.col (closest.index[i]);
-        Eigen::Matrix<double, 7, 1> row;
-        row << y.cross (n), n, n.dot (y);
-        normal_matrix += row * row.transpose ();
-        rhs -= row * n.dot (posed.col (i) - target.col (closest.index[i]));
-      }
-    const Eigen::Matrix<double, 7, 1> step = normal_matrix.ldlt ().solve (rhs);
-    if (!step.allFinite ())
-      break;
-    Eigen::Matrix4d update = Eigen::Matrix4d::Identity ();
-    const double angle = step.head<3> ().norm ();
-    const Eigen::Matrix3d rotation =
-        angle > 0.0 ? Eigen::AngleAxisd (angle, step.head<3> () / angle).toRotationMatrix () : Eigen::Matrix3d::Identity ();
-    update.topLeftCorner<3, 3> () = std::exp (step[6]) * rotation;
-    update.topRightCorner<3, 1> () = centre + step.segment<3> (3) - update.topLeftCorner<3, 3> () * centre;
-    pose = update * pose;
-    if (step.norm () < 1e-6)
-      break;
-  }
-  return pose;
 }
 
 /** Trimmed mean of the closest-point distances samples -> target and target samples -> posed samples. */
@@ -402,12 +270,11 @@ robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& 
     poses[h] = similarityAbout (frame.scale, rotations[h], frame.from.centroid, frame.to.centroid);
   // Refines and scores the hypotheses \a active by \a iterations steps each, in parallel (each one serially).
   const auto refine = [&] (const std::vector<long>& active, int iterations) {
-    CoarseAlignmentSettings round = settings;
-    round.refine_iterations = iterations;
 #pragma omp parallel for schedule(dynamic, 1)
     for (std::size_t k = 0; k < active.size (); ++k) {
       const long h = active[k];
-      poses[h] = refineSimilarity (tree, surface.points, surface.normals, frame.to.centroid, samples, poses[h], round);
+      poses[h] = detail::refineSimilarity (tree, surface.points, surface.normals, frame.to.centroid, samples, poses[h],
+                                          iterations, settings.inlier_fraction);
       scores[h] = symmetricScore (*tree, samples, target_samples, poses[h], settings.inlier_fraction);
     }
   };
@@ -426,8 +293,7 @@ robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& 
   long chosen = active.front ();
   double smallest_angle = std::numeric_limits<double>::infinity ();
   for (const long h : active) {
-    const Eigen::Matrix3d linear = poses[h].topLeftCorner<3, 3> ();
-    const double angle = Eigen::AngleAxisd (linear / std::cbrt (linear.determinant ())).angle ();
+    const double angle = detail::similarityAngle (poses[h]);
     if (scores[h] <= best * (1.0 + settings.tie_tolerance) && angle < smallest_angle) {
       smallest_angle = angle;
       chosen = h;

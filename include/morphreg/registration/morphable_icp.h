@@ -4,6 +4,7 @@
  *  similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
  */
 #include <morphreg/common/landmarks.h>
+#include <morphreg/common/length_unit.h>
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/registration/registration_report.h>
 
@@ -12,6 +13,7 @@
 #include <pcl/registration/registration.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,10 +37,11 @@ struct ShapePhase
 /** \brief Where the iterations start when align() is given the identity guess. */
 enum class IcpInitialisation
 {
-  automatic, ///< a non-identity guess as given; else landmarks if >= 3 are set; else the coarse alignment
+  automatic, ///< a non-identity guess as given; else landmarks if >= 3 are set; else the global alignment
   guess,     ///< always the guess passed to align(), even the identity
   landmarks, ///< Umeyama from the target landmarks (InvalidInputError if fewer than 3)
-  coarse     ///< robustCoarseSimilarity (pose hypotheses refined and scored) of the model mean onto the target
+  coarse,    ///< robustCoarseSimilarity (11 pose hypotheses about the principal axes): heads in a roughly known pose
+  global     ///< alignHeadGlobally: any rotation, scans with shoulders and clutter (see global_alignment.h)
 };
 
 /** \brief ICP with shape parameters: fits s R (mu_i + M_i m) + t to a target cloud by Gauss-Newton over
@@ -252,6 +255,18 @@ public:
     initialisation_ = initialisation;
   }
 
+  /** \brief The target's length unit; std::nullopt (the default) guesses it in align() from the target's size against
+   *  the model's (guessLengthUnit: scans in cm, m or inches are 10, 1000 or 25.4 times smaller than a model in mm).
+   *  The fit runs in mm (a scaled copy of the target; landmarks and the guess are scaled too); the transformation,
+   *  align()'s output and getFittedVertices() are returned in the target's unit, the residuals and the report's
+   *  fitness in mm. The unit used and why are in getRegistrationReport().
+   */
+  void
+  setTargetUnit (std::optional<LengthUnit> unit)
+  {
+    target_unit_ = unit;
+  }
+
   // ---- results --------------------------------------------------------------------------------------------
 
   /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()). */
@@ -272,7 +287,7 @@ public:
     return fitted_vertices_;
   }
 
-  /** \brief Per model vertex: distance (mm) to its accepted correspondence at the returned state, NaN where it
+  /** \brief Per model vertex: distance (mm, whatever the target's unit) to its accepted correspondence at the returned state, NaN where it
    *  has none.
    */
   const Eigen::VectorXd&
@@ -312,8 +327,9 @@ private:
   void
   validateInputs () const;
 
+  /** The starting similarity of \a guess's mode; records how it was found in the report. */
   Eigen::Matrix4d
-  initialTransformation (const Matrix4& guess) const;
+  initialTransformation (const Matrix4& guess);
 
   /** Finds, rejects and weighs (IRLS weights of \a loss) the correspondences of the model at \a state. */
   Evaluation
@@ -354,6 +370,15 @@ private:
   void
   finish (const State& state, PointCloudSource& output);
 
+  /** setTargetUnit's unit, or the guess from the target's size. */
+  LengthUnitGuess
+  resolveTargetUnit () const;
+
+  /** Base::align on a copy of the target (and the landmarks and \a guess) scaled by \a to_mm; the results are
+   *  scaled back into the target's unit. */
+  void
+  alignInMillimetres (PointCloudSource& output, const Matrix4& guess, double to_mm);
+
   MorphableModel::ConstPtr model_;
   ComponentSelection selection_;
   double lambda1_ = 0.1;
@@ -378,6 +403,7 @@ private:
   LandmarkPositions landmarks_;
   double landmark_weight_ = 1.0;
   IcpInitialisation initialisation_ = IcpInitialisation::automatic;
+  std::optional<LengthUnit> target_unit_;
 
   bool smooth_target_ = true;
   bool target_prepared_ = false;

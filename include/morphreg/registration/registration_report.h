@@ -52,9 +52,16 @@ struct IcpReport
   std::vector<IcpIteration> history;
   int similarity_iterations = 0;
   int shape_iterations = 0;
-  /** The similarity the iterations started from (the guess, the landmark or the coarse initialisation). */
+  /** The similarity the iterations started from (the guess, the landmark, the coarse or the global start). */
   Eigen::Matrix4d initial_transformation = Eigen::Matrix4d::Identity ();
-  /** Fit quality at the returned state: scan-to-model distances (mm) over the accepted correspondences. */
+  std::string initialisation;         ///< how it was found: "guess", "landmarks", "coarse" or "global"
+  std::string initialisation_detail;  ///< for the global start: how it chose (GlobalAlignment::method)
+  double initialisation_confidence = 1.0; ///< the global start's confidence in [0, 1]; 1 for the others
+  int head_points = -1;               ///< target points the global start found on the head (-1: not searched)
+  std::string target_unit = "mm";     ///< the target's length unit (given or guessed); the fit ran in mm
+  std::string target_unit_reason;     ///< why that unit: "given", or guessLengthUnit's sentence
+  /** Fit quality at the returned state: scan-to-model distances (mm, whatever the target's unit) over the accepted
+   *  correspondences. */
   int correspondences = 0;
   double fitness_mean = 0.0;
   double fitness_median = 0.0;

@@ -23,6 +23,7 @@ struct SurfaceDistanceSettings
 struct SurfaceDistance
 {
   std::vector<double> distances; ///< per kept sample
+  std::vector<int> fitted_triangles; ///< per kept sample: the fitted triangle its closest point lies on
   int samples = 0;               ///< samples drawn (before dropping)
   int dropped_on_boundary = 0;   ///< samples whose closest fitted point lies on the fitted boundary
   double mean = 0.0;
@@ -39,6 +40,13 @@ struct SurfaceDistance
 SurfaceDistance
 surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
                  const std::vector<bool>& excluded_target = {}, const SurfaceDistanceSettings& settings = {});
+
+/** \brief The statistics of the kept samples whose closest point lies on a fitted triangle flagged in
+ *  \a triangles (one flag per fitted triangle), e.g. the face of a head model; \a distance as surfaceDistance
+ *  returned it. Throws InvalidInputError for a wrongly sized \a triangles or when no sample lands on them.
+ */
+SurfaceDistance
+surfaceDistanceOver (const SurfaceDistance& distance, const std::vector<bool>& triangles);
 
 /** \brief The value below which \a fraction (in [0, 1]) of \a values lie (linear interpolation between order
  *  statistics); throws InvalidInputError for an empty set or a fraction outside [0, 1].

@@ -5,6 +5,7 @@
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/registration/cached_correspondence_estimation.h>
+#include <morphreg/registration/global_alignment.h>
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/similarity_shape_step.h>
@@ -354,19 +355,79 @@ void
 MorphableICP<PointTarget, Scalar>::align (PointCloudSource& output, const Matrix4& guess)
 {
   validateInputs ();
-  Base::align (output, guess);
+  const LengthUnitGuess unit = resolveTargetUnit ();
+  const double to_mm = millimetresPer (unit.unit);
+  if (to_mm == 1.0)
+    Base::align (output, guess);
+  else
+    alignInMillimetres (output, guess, to_mm);
+  report_.target_unit = toString (unit.unit);
+  report_.target_unit_reason = unit.reason;
+}
+
+template <typename PointTarget, typename Scalar>
+LengthUnitGuess
+MorphableICP<PointTarget, Scalar>::resolveTargetUnit () const
+{
+  if (target_unit_)
+    return {*target_unit_, 0.0, "given"};
+  const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
+  const double model_radius = std::sqrt ((mean.colwise () - mean.rowwise ().mean ()).colwise ().squaredNorm ().mean ());
+  Eigen::Matrix3Xd target (3, this->target_->size ());
+  for (size_t i = 0; i < this->target_->size (); ++i)
+    target.col (i) = (*this->target_)[i].getVector3fMap ().template cast<double> ();
+  return guessLengthUnit (target, model_radius);
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::alignInMillimetres (PointCloudSource& output, const Matrix4& guess, double to_mm)
+{
+  const PointCloudTargetConstPtr user_target = this->target_;
+  const LandmarkPositions user_landmarks = landmarks_;
+  typename PointCloudTarget::Ptr scaled (new PointCloudTarget (*user_target));
+  for (auto& point : *scaled)
+    point.getVector3fMap () *= static_cast<float> (to_mm);
+  for (auto& landmark : landmarks_)
+    landmark.second *= to_mm;
+  Matrix4 scaled_guess = guess;
+  if (!guess.isIdentity ()) // the identity means "no guess" (see IcpInitialisation::automatic)
+    scaled_guess.template topRows<3> () *= static_cast<Scalar> (to_mm);
+  const auto restore = [&] () {
+    landmarks_ = user_landmarks;
+    setInputTarget (user_target);
+  };
+  setInputTarget (scaled);
+  try {
+    Base::align (output, scaled_guess);
+  }
+  catch (...) {
+    restore ();
+    throw;
+  }
+  restore ();
+  for (auto& point : output)
+    point.getVector3fMap () /= static_cast<float> (to_mm);
+  fitted_vertices_ /= to_mm;
+  this->final_transformation_.template topRows<3> () /= static_cast<Scalar> (to_mm);
+  this->transformation_ = this->final_transformation_;
+  report_.initial_transformation.template topRows<3> () /= to_mm;
 }
 
 template <typename PointTarget, typename Scalar>
 Eigen::Matrix4d
-MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess) const
+MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess)
 {
   const Eigen::Matrix4d given = guess.template cast<double> ();
   IcpInitialisation mode = initialisation_;
   if (mode == IcpInitialisation::automatic)
     mode = !given.isIdentity () ? IcpInitialisation::guess
            : landmarks_.size () >= 3 ? IcpInitialisation::landmarks
-                                     : IcpInitialisation::coarse;
+                                     : IcpInitialisation::global;
+  report_.initialisation = mode == IcpInitialisation::guess       ? "guess"
+                           : mode == IcpInitialisation::landmarks ? "landmarks"
+                           : mode == IcpInitialisation::coarse    ? "coarse"
+                                                                  : "global";
   if (mode == IcpInitialisation::guess)
     return given;
   if (mode == IcpInitialisation::landmarks) {
@@ -385,6 +446,19 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess) 
   for (size_t i = 0; i < this->target_->size (); ++i)
     target.col (i) = (*this->target_)[i].getVector3fMap ().template cast<double> ();
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
+  if (mode == IcpInitialisation::global) {
+    Eigen::Matrix3Xd normals;
+    if constexpr (pcl::traits::has_normal_v<PointTarget>) {
+      normals.resize (3, this->target_->size ());
+      for (size_t i = 0; i < this->target_->size (); ++i)
+        normals.col (i) = (*this->target_)[i].getNormalVector3fMap ().template cast<double> ();
+    }
+    const GlobalAlignment found = alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normals);
+    report_.initialisation_detail = found.method;
+    report_.initialisation_confidence = found.confidence;
+    report_.head_points = static_cast<int> (found.head_indices.size ());
+    return found.similarity;
+  }
   // align() has built the target's k-d tree: the coarse start takes its neighbourhoods from it.
   const auto& tree = *this->tree_;
   const PointCloudTarget& cloud = *this->target_;

@@ -1,0 +1,73 @@
+#pragma once
+/** \file global_alignment.h
+ *  \brief A landmark-free start for MorphableICP from any rotation, on scans that hold more than the head
+ *  (shoulders, a chair back, hair): the head is found as the strongest head-sized sphere of the scan, the rotation
+ *  by scoring a grid over all of SO(3) on a distance transform of the scan, and the best distinct poses are refined
+ *  by a trimmed similarity ICP and scored again.
+ */
+#include <morphreg/mesh/triangle_mesh.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Settings of alignHeadGlobally. Lengths are relative to the model's size, so they hold for any model. */
+struct GlobalAlignmentSettings
+{
+  double voxel_ratio = 0.05;     ///< the scan is thinned to one point per voxel of this share of the model's radius
+  double min_radius_ratio = 0.6; ///< smallest head sphere searched, relative to the model's own head sphere
+  double max_radius_ratio = 1.6; ///< largest head sphere searched, relative to the model's own head sphere
+  int centre_candidates = 3;     ///< strongest distinct head spheres whose rotations are searched
+  int rotation_directions = 256; ///< directions of the model's up axis in the rotation grid (Fibonacci sphere)
+  int rotation_twists = 24;      ///< rotations about the up axis per direction (24: 15 degree steps)
+  int score_samples = 400;       ///< model surface samples scored per rotation on the distance transform
+  int refined_poses = 10;        ///< best distinct rotations per head sphere refined by similarity ICP
+  int refine_iterations = 30;    ///< similarity ICP iterations of the poses that are refined to the end
+  int screen_iterations = 8;     ///< iterations every refined pose runs before only the best 3 go on
+  double inlier_fraction = 0.7;  ///< share of the closest pairs kept in each similarity ICP step
+  double truncation_ratio = 0.15; ///< distances are truncated at this share of the model's radius in the scores
+};
+
+/** \brief The pose found by alignHeadGlobally, how sure it is and how it was chosen. */
+struct GlobalAlignment
+{
+  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity (); ///< model frame -> scan frame, [sR | t]
+  /** In [0, 1]: the share of the model's surface the scan covers at the pose (within a few voxels, normals
+   *  agreeing) times how much better the pose scores than the best distinct alternative (1 - best / runner-up).
+   */
+  double confidence = 0.0;
+  double coverage = 0.0;          ///< share of the model's surface samples with a scan point close by at the pose
+  double score = 0.0;             ///< truncated mean distance (mm) of the model's surface samples to the scan
+  double runner_up_score = 0.0;   ///< the same for the best pose at least 30 degrees away (0 if there is none)
+  Eigen::Vector3d head_centre = Eigen::Vector3d::Zero (); ///< centre of the head sphere that won (scan frame)
+  double head_radius = 0.0;       ///< its radius (mm)
+  int rotations_scored = 0;       ///< rotations scored on the distance transform
+  int poses_refined = 0;          ///< poses refined by similarity ICP
+  std::vector<int> head_indices;  ///< scan points near the aligned model: the head; the rest are outliers to the fit
+  std::string method;             ///< a sentence saying how the pose was chosen (for reports)
+};
+
+/** \brief Finds the similarity mapping \a model_mean (the model's mean mesh, mm) onto its head in \a scan (3 x N,
+ *  mm) from any rotation, without landmarks. \a scan_normals (3 x N) may be empty or hold non-finite columns:
+ *  those normals are estimated from the neighbourhood (their sign does not matter).
+ *  1. The scan is thinned to one point per voxel and isolated points (hair strands, spray) are dropped.
+ *  2. Every point votes, along its normal in both directions and over a range of radii, for the centre of a
+ *     sphere it may lie on; the strongest distinct peaks are head candidates (the cranium is the scan's most
+ *     sphere-like part: shoulders and planes spread their votes), and the same vote on the model's mean gives the
+ *     model's head sphere. The radii's ratio is the first scale.
+ *  3. For each candidate, the rotations of a grid over SO(3) about the matched sphere centres are scored by the
+ *     truncated mean distance of model samples to the scan, read from a distance transform of the scan.
+ *  4. The best distinct rotations are refined by trimmed point-to-plane similarity ICP; the pose with the lowest
+ *     truncated distance (wrong normals count as far) and a scale within the searched radius range wins.
+ *  Throws InvalidInputError for an invalid mesh, fewer than 10 scan points, non-finite points, normals of the
+ *  wrong size or bad settings.
+ */
+GlobalAlignment
+alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
+                   const Eigen::Matrix3Xd& scan_normals = Eigen::Matrix3Xd (),
+                   const GlobalAlignmentSettings& settings = GlobalAlignmentSettings ());
+
+} // namespace morphreg

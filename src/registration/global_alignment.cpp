@@ -1,0 +1,618 @@
+#include <morphreg/common/error.h>
+#include <morphreg/mesh/mesh_normals.h>
+#include <morphreg/mesh/surface_sampling.h>
+#include <morphreg/registration/global_alignment.h>
+
+#include "similarity_refinement.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+namespace morphreg
+{
+namespace
+{
+using detail::PointTree;
+
+/** Points with unit normals (sign arbitrary) and the surface area each stands for (relative). */
+struct OrientedPoints
+{
+  Eigen::Matrix3Xd points, normals;
+  Eigen::VectorXd areas;
+};
+
+/** A sphere the Hough vote found, with its (smoothed) votes. */
+struct Sphere
+{
+  Eigen::Vector3d centre;
+  double radius;
+  double votes;
+};
+
+void
+requireSettings (const GlobalAlignmentSettings& s)
+{
+  if (!(s.voxel_ratio > 0.0) || !(s.min_radius_ratio > 0.0) || !(s.max_radius_ratio > s.min_radius_ratio) ||
+      s.centre_candidates < 1 || s.rotation_directions < 1 || s.rotation_twists < 1 || s.score_samples < 10 ||
+      s.refined_poses < 1 || s.refine_iterations < 0 || s.screen_iterations < 0 || !(s.inlier_fraction > 0.0) ||
+      !(s.inlier_fraction <= 1.0) || !(s.truncation_ratio > 0.0) || !std::isfinite (s.max_radius_ratio) ||
+      !std::isfinite (s.voxel_ratio) || !std::isfinite (s.truncation_ratio))
+    throw InvalidInputError ("alignHeadGlobally: the settings need positive, finite ratios with min_radius_ratio < "
+                             "max_radius_ratio, at least one candidate, direction, twist and refined pose, "
+                             "score_samples >= 10, iterations >= 0 and 0 < inlier_fraction <= 1");
+}
+
+/** Area-uniform samples of \a mesh (about \a count) with the normals of their triangles. */
+OrientedPoints
+surfaceSamples (const TriangleMesh& mesh, int count, std::uint64_t seed)
+{
+  const double area = triangleAreas (mesh).sum ();
+  const SurfaceSamples samples = sampleSurfaceUniformly (mesh, area / count, seed);
+  const Eigen::Matrix3Xd face_normals = faceNormals (mesh);
+  OrientedPoints result{samples.points, Eigen::Matrix3Xd (3, samples.points.cols ()),
+                        Eigen::VectorXd::Ones (samples.points.cols ())};
+  for (Eigen::Index i = 0; i < samples.points.cols (); ++i)
+    result.normals.col (i) = face_normals.col (samples.triangles[static_cast<size_t> (i)]);
+  return result;
+}
+
+/** One point per occupied voxel of edge \a voxel: the mean of its points, with the mean of their normals (each
+ *  flipped to agree with the voxel's first; NaN where \a normals has none). */
+OrientedPoints
+thinToVoxels (const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals, double voxel)
+{
+  struct Cell
+  {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero (), normal = Eigen::Vector3d::Zero ();
+    int count = 0;
+  };
+  std::unordered_map<std::uint64_t, Cell> cells;
+  const Eigen::Vector3d origin = points.rowwise ().minCoeff ();
+  for (Eigen::Index i = 0; i < points.cols (); ++i) {
+    const Eigen::Array3d index = ((points.col (i) - origin) / voxel).array ().floor ();
+    const std::uint64_t key = (static_cast<std::uint64_t> (index[0]) << 42) |
+                              (static_cast<std::uint64_t> (index[1]) << 21) | static_cast<std::uint64_t> (index[2]);
+    Cell& cell = cells[key];
+    cell.sum += points.col (i);
+    ++cell.count;
+    if (normals.cols () == points.cols () && normals.col (i).allFinite ()) {
+      const Eigen::Vector3d n = normals.col (i);
+      cell.normal += cell.normal.dot (n) < 0.0 ? Eigen::Vector3d (-n) : n;
+    }
+  }
+  OrientedPoints thinned{Eigen::Matrix3Xd (3, cells.size ()), Eigen::Matrix3Xd (3, cells.size ()),
+                         Eigen::VectorXd::Ones (static_cast<Eigen::Index> (cells.size ()))};
+  Eigen::Index k = 0;
+  for (const auto& entry : cells) {
+    thinned.points.col (k) = entry.second.sum / entry.second.count;
+    const double length = entry.second.normal.norm ();
+    thinned.normals.col (k++) = length > 1e-9 ? Eigen::Vector3d (entry.second.normal / length)
+                                              : Eigen::Vector3d::Constant (std::nan (""));
+  }
+  return thinned;
+}
+
+/** Drops isolated points (the 8th neighbour farther than 3 times the median such distance: hair strands,
+ *  spray), gives the points without a normal the normal of their 10 neighbours' plane, and each point the area it
+ *  stands for (its 4th neighbour's squared distance over the median such: a scan sparse on the skull and dense
+ *  on the face then votes by area, not by point count). */
+OrientedPoints
+surfaceOnly (const OrientedPoints& thinned)
+{
+  const auto tree = detail::pointTree (thinned.points);
+  const Eigen::Index n = thinned.points.cols ();
+  const int k = static_cast<int> (std::min<Eigen::Index> (10, n));
+  std::vector<double> reach (n), spacing (n);
+  Eigen::Matrix3Xd normals = thinned.normals;
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    pcl::PointXYZ query;
+    query.getVector3fMap () = thinned.points.col (i).cast<float> ();
+    pcl::Indices index;
+    std::vector<float> squared;
+    tree->nearestKSearch (query, k, index, squared);
+    reach[i] = std::sqrt (static_cast<double> (squared[std::min<size_t> (7, squared.size () - 1)]));
+    spacing[i] = static_cast<double> (squared[std::min<size_t> (4, squared.size () - 1)]);
+    if (!normals.col (i).allFinite ()) {
+      Eigen::Matrix3Xd neighbours (3, index.size ());
+      for (size_t j = 0; j < index.size (); ++j)
+        neighbours.col (j) = thinned.points.col (index[j]);
+      normals.col (i) = fitPlane (neighbours).normal;
+    }
+  }
+  const double limit = 3.0 * detail::trimmedLimit (reach, 0.5);
+  const double typical_spacing = std::max (detail::trimmedLimit (spacing, 0.5), 1e-12);
+  OrientedPoints kept{Eigen::Matrix3Xd (3, n), Eigen::Matrix3Xd (3, n), Eigen::VectorXd (n)};
+  Eigen::Index count = 0;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (reach[i] <= limit && normals.col (i).allFinite ()) {
+      kept.points.col (count) = thinned.points.col (i);
+      kept.areas[count] = std::min (spacing[i] / typical_spacing, 10.0);
+      kept.normals.col (count++) = normals.col (i);
+    }
+  kept.points.conservativeResize (3, count);
+  kept.normals.conservativeResize (3, count);
+  kept.areas.conservativeResize (count);
+  return kept;
+}
+
+/** A dense 3D grid of cells of edge \a cell from \a origin. */
+struct Grid
+{
+  Eigen::Vector3d origin;
+  double cell;
+  Eigen::Array3i size;
+
+  Eigen::Index
+  count () const
+  {
+    return static_cast<Eigen::Index> (size[0]) * size[1] * size[2];
+  }
+
+  /** The cell holding \a p, or -1 outside the grid. */
+  Eigen::Index
+  index (const Eigen::Vector3d& p) const
+  {
+    const Eigen::Array3d f = (p - origin).array () / cell;
+    if ((f < 0.0).any () || (f >= size.cast<double> ()).any ())
+      return -1;
+    const Eigen::Array3i i = f.cast<int> ();
+    return (static_cast<Eigen::Index> (i[2]) * size[1] + i[1]) * size[0] + i[0];
+  }
+
+  Eigen::Vector3d
+  centre (Eigen::Index index) const
+  {
+    const Eigen::Index x = index % size[0], y = (index / size[0]) % size[1], z = index / (size[0] * size[1]);
+    return origin + cell * (Eigen::Vector3d (static_cast<double> (x), static_cast<double> (y), static_cast<double> (z)) +
+                            Eigen::Vector3d::Constant (0.5));
+  }
+};
+
+/** A grid of edge at least \a cell over the box [low, high], with at most about 128 cells along its longest side. */
+Grid
+gridOver (const Eigen::Vector3d& low, const Eigen::Vector3d& high, double cell)
+{
+  const double edge = std::max (cell, (high - low).maxCoeff () / 128.0);
+  const Eigen::Array3i size = ((high - low).array () / edge).ceil ().cast<int> ().max (1);
+  return {low, edge, size};
+}
+
+/** Sums each cell's 3 x 3 x 3 neighbourhood (separable box filter), in place. */
+void
+boxFilter (const Grid& grid, std::vector<double>& values)
+{
+  const Eigen::Index strides[3] = {1, grid.size[0], static_cast<Eigen::Index> (grid.size[0]) * grid.size[1]};
+  std::vector<double> out (values.size ());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (Eigen::Index i = 0; i < grid.count (); ++i) {
+      const Eigen::Index coordinate = (i / strides[axis]) % grid.size[axis];
+      double sum = values[i];
+      if (coordinate > 0)
+        sum += values[i - strides[axis]];
+      if (coordinate + 1 < grid.size[axis])
+        sum += values[i + strides[axis]];
+      out[i] = sum;
+    }
+    values.swap (out);
+  }
+}
+
+/** Hough vote for spheres with radii in [r_min, r_max] that \a surface lies on: each point votes at p +- r n for
+ *  12 radii; votes are summed over 3 x 3 x 3 cells and the \a count strongest peaks at least \a separation apart
+ *  are returned, each with the mean radius of its votes. */
+std::vector<Sphere>
+houghSpheres (const OrientedPoints& surface, double r_min, double r_max, double cell, int count, double separation)
+{
+  const Eigen::Vector3d low = surface.points.rowwise ().minCoeff ().transpose ().array () - r_max;
+  const Eigen::Vector3d high = surface.points.rowwise ().maxCoeff ().transpose ().array () + r_max;
+  const Grid grid = gridOver (low, high, cell);
+  std::vector<double> votes (grid.count (), 0.0), radii (grid.count (), 0.0);
+  constexpr int kRadii = 12;
+  for (Eigen::Index i = 0; i < surface.points.cols (); ++i)
+    for (int r = 0; r < kRadii; ++r) {
+      const double radius = r_min * std::pow (r_max / r_min, r / (kRadii - 1.0));
+      for (double sign : {-1.0, 1.0}) {
+        const Eigen::Index c = grid.index (surface.points.col (i) + sign * radius * surface.normals.col (i));
+        if (c >= 0) {
+          votes[c] += surface.areas[i];
+          radii[c] += surface.areas[i] * radius;
+        }
+      }
+    }
+  boxFilter (grid, votes);
+  boxFilter (grid, radii);
+  std::vector<Eigen::Index> order (grid.count ());
+  std::iota (order.begin (), order.end (), Eigen::Index (0));
+  const auto top = std::min<size_t> (order.size (), 4096);
+  std::partial_sort (order.begin (), order.begin () + static_cast<long> (top), order.end (),
+                     [&votes] (Eigen::Index a, Eigen::Index b) { return votes[a] > votes[b]; });
+  std::vector<Sphere> spheres;
+  for (size_t k = 0; k < top && static_cast<int> (spheres.size ()) < count; ++k) {
+    const Eigen::Index c = order[k];
+    if (votes[c] <= 0.0)
+      break;
+    const Eigen::Vector3d centre = grid.centre (c);
+    const bool distinct = std::all_of (spheres.begin (), spheres.end (), [&] (const Sphere& s) {
+      return (s.centre - centre).norm () >= separation;
+    });
+    if (distinct)
+      spheres.push_back ({centre, radii[c] / votes[c], votes[c]});
+  }
+  return spheres;
+}
+
+/** Truncated distances to the nearest of some seed points, on a grid (exact squared Euclidean distance
+ *  transform, Felzenszwalb and Huttenlocher's lower envelope of parabolas, one axis at a time). */
+class DistanceField
+{
+public:
+  DistanceField (const Grid& grid, const Eigen::Matrix3Xd& seeds, double truncation)
+    : grid_ (grid), truncation_ (static_cast<float> (truncation))
+  {
+    const double infinity = 1e20;
+    std::vector<double> squared (grid_.count (), infinity);
+    for (Eigen::Index i = 0; i < seeds.cols (); ++i) {
+      const Eigen::Index c = grid_.index (seeds.col (i));
+      if (c >= 0)
+        squared[c] = 0.0;
+    }
+    const Eigen::Index strides[3] = {1, grid_.size[0], static_cast<Eigen::Index> (grid_.size[0]) * grid_.size[1]};
+    for (int axis = 0; axis < 3; ++axis) {
+      const int length = grid_.size[axis];
+      const Eigen::Index lines = grid_.count () / length;
+#pragma omp parallel for schedule(static)
+      for (Eigen::Index line = 0; line < lines; ++line) {
+        // The first cell of this line: all coordinates but \a axis from \a line.
+        const Eigen::Index below = line % strides[axis], above = line / strides[axis];
+        const Eigen::Index first = below + above * strides[axis] * length;
+        std::vector<double> f (length), d (length);
+        for (int q = 0; q < length; ++q)
+          f[q] = squared[first + q * strides[axis]];
+        transform1d (f, d);
+        for (int q = 0; q < length; ++q)
+          squared[first + q * strides[axis]] = d[q];
+      }
+    }
+    distances_.resize (grid_.count ());
+    for (Eigen::Index i = 0; i < grid_.count (); ++i)
+      distances_[i] = std::min (truncation_, static_cast<float> (std::sqrt (squared[i]) * grid_.cell));
+  }
+
+  /** The truncated distance at \a p (the truncation outside the grid). */
+  float
+  at (const Eigen::Vector3d& p) const
+  {
+    const Eigen::Index c = grid_.index (p);
+    return c < 0 ? truncation_ : distances_[c];
+  }
+
+private:
+  static void
+  transform1d (const std::vector<double>& f, std::vector<double>& d)
+  {
+    const int n = static_cast<int> (f.size ());
+    std::vector<int> v (n);
+    std::vector<double> z (n + 1);
+    int k = 0;
+    v[0] = 0;
+    z[0] = -std::numeric_limits<double>::infinity ();
+    z[1] = std::numeric_limits<double>::infinity ();
+    for (int q = 1; q < n; ++q) {
+      double s;
+      while (true) {
+        s = ((f[q] + q * q) - (f[v[k]] + v[k] * v[k])) / (2.0 * q - 2.0 * v[k]);
+        if (s > z[k] || k == 0)
+          break;
+        --k;
+      }
+      if (s <= z[k]) { // k == 0 and the new parabola is lower everywhere
+        v[0] = q;
+        z[1] = std::numeric_limits<double>::infinity ();
+        continue;
+      }
+      ++k;
+      v[k] = q;
+      z[k] = s;
+      z[k + 1] = std::numeric_limits<double>::infinity ();
+    }
+    k = 0;
+    for (int q = 0; q < n; ++q) {
+      while (z[k + 1] < q)
+        ++k;
+      d[q] = (q - v[k]) * (q - v[k]) + f[v[k]];
+    }
+  }
+
+  Grid grid_;
+  float truncation_;
+  std::vector<float> distances_;
+};
+
+/** Rotations covering SO(3): the model's up axis (+Y) turned onto \a directions Fibonacci-sphere directions, each
+ *  with \a twists turns about that axis. */
+std::vector<Eigen::Matrix3d>
+rotationGrid (int directions, int twists)
+{
+  std::vector<Eigen::Matrix3d> rotations;
+  rotations.reserve (static_cast<size_t> (directions) * twists);
+  const double golden = M_PI * (3.0 - std::sqrt (5.0));
+  for (int j = 0; j < directions; ++j) {
+    const double y = 1.0 - 2.0 * (j + 0.5) / directions;
+    const double r = std::sqrt (std::max (0.0, 1.0 - y * y));
+    const Eigen::Vector3d direction (r * std::cos (golden * j), y, r * std::sin (golden * j));
+    const Eigen::Matrix3d tilt = Eigen::Quaterniond::FromTwoVectors (Eigen::Vector3d::UnitY (), direction)
+                                     .toRotationMatrix ();
+    for (int t = 0; t < twists; ++t)
+      rotations.push_back (tilt * Eigen::AngleAxisd (2.0 * M_PI * t / twists, Eigen::Vector3d::UnitY ()).matrix ());
+  }
+  return rotations;
+}
+
+double
+angleBetween (const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
+{
+  return Eigen::AngleAxisd (Eigen::Matrix3d (a.transpose () * b)).angle ();
+}
+
+/** The similarity x -> scale R (x - from) + to. */
+Eigen::Matrix4d
+similarityAbout (double scale, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& from, const Eigen::Vector3d& to)
+{
+  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity ();
+  similarity.topLeftCorner<3, 3> () = scale * rotation;
+  similarity.topRightCorner<3, 1> () = to - scale * rotation * from;
+  return similarity;
+}
+
+/** A rotation search's fixed point: the model point \a model goes to the scan point \a scan at \a scale. */
+struct Anchor
+{
+  Eigen::Vector3d model, scan;
+  double scale;
+};
+
+/** A pose and its score (lower is better), its coverage and the anchor it was searched about. */
+struct Pose
+{
+  Eigen::Matrix4d similarity;
+  double score = std::numeric_limits<double>::infinity ();
+  double coverage = 0.0;
+  int anchor = 0;
+};
+
+/** How well \a samples (model surface samples with normals) posed by \a pose and \a scan agree: the mean of the
+ *  distances from each posed sample to the tangent plane of its closest scan point (a sparse scan is a surface
+ *  between its points), the truncation where that point is farther than it or the normals disagree by more than 45
+ *  degrees, averaged with the mean truncated distance from the scan points within the posed model's reach to their
+ *  closest posed sample (a face turned backwards lies inside the scan's face: only this direction sees the nose
+ *  sticking out); and the share of the samples within \a near. A scale outside [min_scale, max_scale] scores the
+ *  truncation. */
+void
+scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoints& samples, double truncation,
+           double near, double min_scale, double max_scale, Pose& pose)
+{
+  const double scale = detail::similarityScale (pose.similarity);
+  if (!(scale >= min_scale && scale <= max_scale)) {
+    pose.score = truncation;
+    pose.coverage = 0.0;
+    return;
+  }
+  const Eigen::Matrix3Xd posed = detail::transformed (pose.similarity, samples.points);
+  const Eigen::Matrix3d rotation = pose.similarity.topLeftCorner<3, 3> () / scale;
+  const detail::Closest closest = detail::closestPoints (tree, posed);
+  double forward = 0.0, covered = 0.0;
+  for (Eigen::Index i = 0; i < posed.cols (); ++i) {
+    const Eigen::Vector3d normal = scan.normals.col (closest.index[i]);
+    const double agreement = std::abs ((rotation * samples.normals.col (i)).dot (normal));
+    const double d = agreement >= std::sqrt (0.5) && closest.distance[i] <= truncation
+                         ? std::min (std::abs (normal.dot (posed.col (i) - scan.points.col (closest.index[i]))),
+                                     truncation)
+                         : truncation;
+    forward += d;
+    covered += d <= near ? 1.0 : 0.0;
+  }
+  const Eigen::Vector3d centre = posed.rowwise ().mean ();
+  const double reach = (posed.colwise () - centre).colwise ().norm ().maxCoeff ();
+  const auto posed_tree = detail::pointTree (posed);
+  double backward = 0.0, count = 0.0;
+  for (Eigen::Index j = 0; j < scan.points.cols (); ++j)
+    if ((scan.points.col (j) - centre).norm () <= reach) {
+      pcl::PointXYZ query;
+      query.getVector3fMap () = scan.points.col (j).cast<float> ();
+      pcl::Indices index (1);
+      std::vector<float> squared (1);
+      posed_tree->nearestKSearch (query, 1, index, squared);
+      backward += std::min (std::sqrt (static_cast<double> (squared[0])), truncation);
+      count += 1.0;
+    }
+  const double n = static_cast<double> (posed.cols ());
+  pose.score = 0.5 * (forward / n + (count > 0.0 ? backward / count : truncation));
+  pose.coverage = covered / n;
+}
+
+/** The \a count best-scoring rotations of \a rotations at least 30 degrees apart. */
+std::vector<size_t>
+bestDistinct (const std::vector<Eigen::Matrix3d>& rotations, const std::vector<double>& scores, int count)
+{
+  std::vector<size_t> order (rotations.size ());
+  std::iota (order.begin (), order.end (), size_t (0));
+  std::sort (order.begin (), order.end (), [&scores] (size_t a, size_t b) { return scores[a] < scores[b]; });
+  std::vector<size_t> chosen;
+  for (size_t k = 0; k < order.size () && static_cast<int> (chosen.size ()) < count; ++k) {
+    const bool distinct = std::all_of (chosen.begin (), chosen.end (), [&] (size_t c) {
+      return angleBetween (rotations[c], rotations[order[k]]) > M_PI / 6.0;
+    });
+    if (distinct)
+      chosen.push_back (order[k]);
+  }
+  return chosen;
+}
+
+void
+requireInputs (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& scan_normals)
+{
+  validateMesh (model_mean, "alignHeadGlobally: the model mean");
+  if (scan.cols () < 10)
+    throw InvalidInputError ("alignHeadGlobally: the scan has " + std::to_string (scan.cols ()) +
+                             " points, at least 10 are needed");
+  if (!scan.allFinite ())
+    throw InvalidInputError ("alignHeadGlobally: the scan has non-finite points");
+  if (scan_normals.cols () != 0 && scan_normals.cols () != scan.cols ())
+    throw InvalidInputError ("alignHeadGlobally: " + std::to_string (scan_normals.cols ()) + " normals for " +
+                             std::to_string (scan.cols ()) + " scan points");
+}
+} // namespace
+
+GlobalAlignment
+alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& scan_normals,
+                   const GlobalAlignmentSettings& settings)
+{
+  requireSettings (settings);
+  requireInputs (model_mean, scan, scan_normals);
+
+  // The model: its size, its surface samples and its own head sphere.
+  const OrientedPoints model = surfaceSamples (model_mean, 1500, 11);
+  const Eigen::Vector3d model_centroid = model.points.rowwise ().mean ();
+  const double model_radius = std::sqrt ((model.points.colwise () - model_centroid).colwise ().squaredNorm ().mean ());
+  const double voxel = settings.voxel_ratio * model_radius;
+  const std::vector<Sphere> model_spheres =
+      houghSpheres (model, 0.4 * model_radius, 1.2 * model_radius, voxel, 1, model_radius);
+  if (model_spheres.empty ())
+    throw InvalidInputError ("alignHeadGlobally: the model mean has no head-like sphere");
+  const Sphere& model_sphere = model_spheres.front ();
+
+  // The scan: thinned, without isolated points, with normals; its head spheres.
+  const OrientedPoints surface = surfaceOnly (thinToVoxels (scan, scan_normals, voxel));
+  if (surface.points.cols () < 10)
+    throw InvalidInputError ("alignHeadGlobally: fewer than 10 scan points are left on a surface (" +
+                             std::to_string (surface.points.cols ()) + " after thinning to " + std::to_string (voxel) +
+                             " mm and dropping isolated points)");
+  const std::vector<Sphere> spheres =
+      houghSpheres (surface, settings.min_radius_ratio * model_sphere.radius,
+                    settings.max_radius_ratio * model_sphere.radius, voxel, settings.centre_candidates,
+                    model_sphere.radius);
+  const PointTree::Ptr tree = detail::pointTree (surface.points);
+
+  // Where the model's anchor goes and at what scale: each head sphere, and the scan's centroid with the model's
+  // centroid at the ratio of their spreads (a scan of the head alone, where a cut crown leaves no clear sphere).
+  std::vector<Anchor> anchors;
+  for (const Sphere& sphere : spheres)
+    anchors.push_back ({model_sphere.centre, sphere.centre, sphere.radius / model_sphere.radius});
+  const Eigen::Vector3d scan_centroid = surface.points.rowwise ().mean ();
+  const double scan_radius = std::sqrt ((surface.points.colwise () - scan_centroid).colwise ().squaredNorm ().mean ());
+  anchors.push_back ({model_centroid, scan_centroid,
+                      std::clamp (scan_radius / model_radius, settings.min_radius_ratio, settings.max_radius_ratio)});
+
+  // The rotation grid, scored about each anchor on a distance transform of the scan.
+  const std::vector<Eigen::Matrix3d> rotations = rotationGrid (settings.rotation_directions, settings.rotation_twists);
+  const Eigen::Matrix3Xd score_samples = detail::evenSamples (model.points, settings.score_samples);
+  // Samples off the model's head sphere (nose, chin, ears, neck) tell the rotations apart; the cranium hardly does.
+  Eigen::VectorXd weights (score_samples.cols ());
+  for (Eigen::Index i = 0; i < score_samples.cols (); ++i)
+    weights[i] = 1.0 + 4.0 * std::min (1.0, std::abs ((score_samples.col (i) - model_sphere.centre).norm () -
+                                                      model_sphere.radius) / (0.3 * model_sphere.radius));
+  const double truncation = settings.truncation_ratio * model_radius;
+  std::vector<Pose> poses;
+  for (size_t a = 0; a < anchors.size (); ++a) {
+    const Anchor& anchor = anchors[a];
+    const Eigen::Matrix3Xd centred = score_samples.colwise () - anchor.model;
+    const double reach = centred.colwise ().norm ().maxCoeff ();
+    const Eigen::Vector3d half = Eigen::Vector3d::Constant (anchor.scale * reach + truncation);
+    const Grid grid = gridOver (anchor.scan - half, anchor.scan + half, voxel);
+    const DistanceField field (grid, surface.points, truncation);
+    std::vector<double> scores (rotations.size ());
+#pragma omp parallel for schedule(static)
+    for (size_t r = 0; r < rotations.size (); ++r) {
+      const Eigen::Matrix3Xd posed = ((anchor.scale * rotations[r]) * centred).colwise () + anchor.scan;
+      double sum = 0.0;
+      for (Eigen::Index i = 0; i < posed.cols (); ++i)
+        sum += weights[i] * field.at (posed.col (i));
+      scores[r] = sum;
+    }
+    for (size_t r : bestDistinct (rotations, scores, settings.refined_poses))
+      poses.push_back ({similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan),
+                        std::numeric_limits<double>::infinity (), 0.0, static_cast<int> (a)});
+  }
+
+  // Refinement: every pose a few similarity ICP steps, the best three to the end; scored on the scan's k-d tree.
+  const Eigen::Matrix3Xd refine_samples = detail::evenSamples (model.points, 1000);
+  const double min_scale = settings.min_radius_ratio, max_scale = settings.max_radius_ratio;
+  const auto refine = [&] (std::vector<size_t> active, int iterations) {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (size_t k = 0; k < active.size (); ++k) {
+      Pose& pose = poses[active[k]];
+      const Eigen::Vector3d centre = pose.similarity.topLeftCorner<3, 3> () * anchors[pose.anchor].model +
+                                     pose.similarity.topRightCorner<3, 1> ();
+      pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, refine_samples,
+                                                  pose.similarity, iterations, settings.inlier_fraction);
+      scorePose (*tree, surface, model, truncation, 2.0 * voxel, min_scale, max_scale, pose);
+    }
+  };
+  std::vector<size_t> active (poses.size ());
+  std::iota (active.begin (), active.end (), size_t (0));
+  const int screening = std::min (settings.screen_iterations, settings.refine_iterations);
+  refine (active, screening);
+  std::sort (active.begin (), active.end (), [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; });
+  std::vector<size_t> finalists (active.begin (), active.begin () + std::min<long> (3, static_cast<long> (active.size ())));
+  refine (finalists, settings.refine_iterations - screening);
+  std::sort (active.begin (), active.end (), [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; });
+
+  const Pose& best = poses[active.front ()];
+  GlobalAlignment result;
+  result.similarity = best.similarity;
+  result.score = best.score;
+  result.coverage = best.coverage;
+  const Eigen::Matrix3d best_rotation = best.similarity.topLeftCorner<3, 3> () / detail::similarityScale (best.similarity);
+  for (size_t k = 1; k < active.size (); ++k) {
+    const Pose& other = poses[active[k]];
+    const Eigen::Matrix3d rotation = other.similarity.topLeftCorner<3, 3> () / detail::similarityScale (other.similarity);
+    const double shift = (other.similarity.topRightCorner<3, 1> () - best.similarity.topRightCorner<3, 1> ()).norm ();
+    if (angleBetween (rotation, best_rotation) > M_PI / 6.0 || shift > model_radius) {
+      result.runner_up_score = other.score;
+      break;
+    }
+  }
+  const double distinctness = result.runner_up_score > 0.0 ? 1.0 - result.score / result.runner_up_score : 1.0;
+  result.confidence = std::clamp (result.coverage * distinctness, 0.0, 1.0);
+  const Anchor& anchor = anchors[static_cast<size_t> (best.anchor)];
+  result.head_centre = anchor.scan;
+  result.head_radius = anchor.scale * model_sphere.radius;
+  result.rotations_scored = static_cast<int> (rotations.size () * anchors.size ());
+  result.poses_refined = static_cast<int> (poses.size ());
+
+  // The head's part of the scan: the points within the truncation distance of the posed model.
+  const Eigen::Matrix3Xd posed_model = detail::transformed (best.similarity, model.points);
+  const auto model_tree = detail::pointTree (posed_model);
+  const double head_reach = truncation * detail::similarityScale (best.similarity);
+  for (Eigen::Index i = 0; i < scan.cols (); ++i) {
+    pcl::PointXYZ query;
+    query.getVector3fMap () = scan.col (i).cast<float> ();
+    pcl::Indices index (1);
+    std::vector<float> squared (1);
+    model_tree->nearestKSearch (query, 1, index, squared);
+    if (std::sqrt (static_cast<double> (squared[0])) <= head_reach)
+      result.head_indices.push_back (static_cast<int> (i));
+  }
+
+  std::ostringstream method;
+  method.precision (3);
+  method << "global: the scan thinned to " << surface.points.cols () << " points (" << voxel << " mm voxels); "
+         << spheres.size () << " head sphere(s) by Hough vote and the scan's centroid as anchors, the winner "
+         << (static_cast<size_t> (best.anchor) < spheres.size () ? "a sphere" : "the centroid") << " at ("
+         << result.head_centre.transpose () << "), head radius " << result.head_radius << " mm (the model's "
+         << model_sphere.radius << " mm); " << rotations.size () << " rotations per anchor scored on a distance transform; " << poses.size ()
+         << " poses refined by similarity ICP; best truncated distance " << result.score << " mm, runner-up "
+         << result.runner_up_score << " mm; coverage " << result.coverage << "; " << result.head_indices.size ()
+         << " of " << scan.cols () << " scan points on the head";
+  result.method = method.str ();
+  return result;
+}
+
+} // namespace morphreg

@@ -1,0 +1,156 @@
+#include "similarity_refinement.h"
+
+#include <morphreg/registration/cached_correspondence_estimation.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace morphreg
+{
+namespace detail
+{
+namespace
+{
+/** The closest points through \a estimation (on the tree's target), which caches what its last call found. */
+Closest
+closestPoints (CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ>& estimation, const Eigen::Matrix3Xd& points)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  cloud->resize (points.cols ());
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
+  estimation.setInputSource (cloud);
+  pcl::Correspondences found;
+  estimation.determineCorrespondences (found);
+  Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
+  for (const pcl::Correspondence& c : found) {
+    closest.index[c.index_query] = c.index_match;
+    closest.distance[c.index_query] = std::sqrt (static_cast<double> (c.distance));
+  }
+  return closest;
+}
+} // namespace
+
+PointTree::Ptr
+pointTree (const Eigen::Matrix3Xd& points)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  cloud->resize (points.cols ());
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
+  PointTree::Ptr tree (new PointTree);
+  tree->setInputCloud (cloud);
+  return tree;
+}
+
+Eigen::Matrix3Xd
+evenSamples (const Eigen::Matrix3Xd& points, int count)
+{
+  const Eigen::Index stride = std::max<Eigen::Index> (1, points.cols () / count);
+  Eigen::Matrix3Xd samples (3, (points.cols () + stride - 1) / stride);
+  for (Eigen::Index i = 0; i < samples.cols (); ++i)
+    samples.col (i) = points.col (i * stride);
+  return samples;
+}
+
+Eigen::Matrix3Xd
+transformed (const Eigen::Matrix4d& transform, const Eigen::Matrix3Xd& points)
+{
+  return (transform.topLeftCorner<3, 3> () * points).colwise () + transform.topRightCorner<3, 1> ();
+}
+
+double
+trimmedLimit (std::vector<double> distances, double fraction)
+{
+  const auto keep = std::max<size_t> (1, static_cast<size_t> (fraction * static_cast<double> (distances.size ())));
+  std::nth_element (distances.begin (), distances.begin () + static_cast<long> (keep - 1), distances.end ());
+  return distances[keep - 1];
+}
+
+double
+trimmedMean (const std::vector<double>& distances, double fraction)
+{
+  const double limit = trimmedLimit (distances, fraction);
+  double sum = 0.0, count = 0.0;
+  for (double d : distances)
+    if (d <= limit) {
+      sum += d;
+      count += 1.0;
+    }
+  return sum / count;
+}
+
+Closest
+closestPoints (const PointTree& tree, const Eigen::Matrix3Xd& points)
+{
+  Closest closest{std::vector<int> (points.cols ()), std::vector<double> (points.cols ())};
+  for (Eigen::Index i = 0; i < points.cols (); ++i) {
+    pcl::PointXYZ query;
+    query.getVector3fMap () = points.col (i).cast<float> ();
+    pcl::Indices index (1);
+    std::vector<float> squared (1);
+    tree.nearestKSearch (query, 1, index, squared);
+    closest.index[i] = index[0];
+    closest.distance[i] = std::sqrt (static_cast<double> (squared[0]));
+  }
+  return closest;
+}
+
+Eigen::Matrix4d
+refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& normals,
+                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
+                  int iterations, double inlier_fraction)
+{
+  // The samples move less each step, so the cached estimation skips most of the tree queries.
+  CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ> nearest;
+  nearest.setInputTarget (tree->getInputCloud ());
+  nearest.setSearchMethodTarget (tree, true);
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    const Eigen::Matrix3Xd posed = transformed (pose, samples);
+    const Closest closest = closestPoints (nearest, posed);
+    const double limit = trimmedLimit (closest.distance, inlier_fraction);
+    Eigen::Matrix<double, 7, 7> normal_matrix = Eigen::Matrix<double, 7, 7>::Zero ();
+    Eigen::Matrix<double, 7, 1> rhs = Eigen::Matrix<double, 7, 1>::Zero ();
+    for (Eigen::Index i = 0; i < samples.cols (); ++i)
+      if (closest.distance[i] <= limit) {
+        const Eigen::Vector3d y = posed.col (i) - centre;
+        const Eigen::Vector3d n = normals.col (closest.index[i]);
+        Eigen::Matrix<double, 7, 1> row;
+        row << y.cross (n), n, n.dot (y);
+        normal_matrix += row * row.transpose ();
+        rhs -= row * n.dot (posed.col (i) - target.col (closest.index[i]));
+      }
+    const Eigen::Matrix<double, 7, 1> step = normal_matrix.ldlt ().solve (rhs);
+    if (!step.allFinite ())
+      break;
+    Eigen::Matrix4d update = Eigen::Matrix4d::Identity ();
+    const double angle = step.head<3> ().norm ();
+    const Eigen::Matrix3d rotation =
+        angle > 0.0 ? Eigen::AngleAxisd (angle, step.head<3> () / angle).toRotationMatrix () : Eigen::Matrix3d::Identity ();
+    update.topLeftCorner<3, 3> () = std::exp (step[6]) * rotation;
+    update.topRightCorner<3, 1> () = centre + step.segment<3> (3) - update.topLeftCorner<3, 3> () * centre;
+    pose = update * pose;
+    if (step.norm () < 1e-6)
+      break;
+  }
+  return pose;
+}
+
+double
+similarityScale (const Eigen::Matrix4d& transform)
+{
+  return std::cbrt (transform.topLeftCorner<3, 3> ().determinant ());
+}
+
+double
+similarityAngle (const Eigen::Matrix4d& transform)
+{
+  const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3> ();
+  return Eigen::AngleAxisd (Eigen::Matrix3d (linear / similarityScale (transform))).angle ();
+}
+
+} // namespace detail
+} // namespace morphreg
