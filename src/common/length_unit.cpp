@@ -33,7 +33,8 @@ robustRadius (const Eigen::Matrix3Xd& points)
   Eigen::Matrix3Xd kept (3, static_cast<Eigen::Index> (keep));
   for (size_t k = 0; k < keep; ++k)
     kept.col (static_cast<Eigen::Index> (k)) = points.col (by_distance[k].second);
-  return std::sqrt ((kept.colwise () - kept.rowwise ().mean ()).colwise ().squaredNorm ().mean ());
+  const Eigen::Vector3d centroid = kept.rowwise ().mean ();
+  return std::sqrt ((kept.colwise () - centroid).colwise ().squaredNorm ().mean ());
 }
 } // namespace
 

@@ -40,7 +40,7 @@ requireSettings (const GlobalAlignmentSettings& s)
 {
   if (!(s.voxel_ratio > 0.0) || !(s.min_radius_ratio > 0.0) || !(s.max_radius_ratio > s.min_radius_ratio) ||
       s.centre_candidates < 1 || s.rotation_directions < 1 || s.rotation_twists < 1 || s.score_samples < 10 ||
-      s.refined_poses < 1 || s.refine_iterations < 0 || s.screen_iterations < 0 || !(s.inlier_fraction > 0.0) ||
+      s.rotations_per_anchor < 1 || s.refined_poses < 1 || s.refine_iterations < 0 || s.screen_iterations < 0 || !(s.inlier_fraction > 0.0) ||
       !(s.inlier_fraction <= 1.0) || !(s.truncation_ratio > 0.0) || !std::isfinite (s.max_radius_ratio) ||
       !std::isfinite (s.voxel_ratio) || !std::isfinite (s.truncation_ratio))
     throw InvalidInputError ("alignHeadGlobally: the settings need positive, finite ratios with min_radius_ratio < "
@@ -536,13 +536,16 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
         sum += weights[i] * field.at (posed.col (i));
       scores[r] = sum;
     }
-    for (size_t r : bestDistinct (rotations, scores, settings.refined_poses))
+    for (size_t r : bestDistinct (rotations, scores, settings.rotations_per_anchor))
       poses.push_back ({similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan),
-                        std::numeric_limits<double>::infinity (), 0.0, static_cast<int> (a)});
+                        scores[r] / weights.sum (), 0.0, static_cast<int> (a)});
   }
+  // Only the best grid scores over all anchors go on (an anchor off the head scores badly for every rotation).
+  std::sort (poses.begin (), poses.end (), [] (const Pose& a, const Pose& b) { return a.score < b.score; });
+  poses.resize (std::min<size_t> (poses.size (), static_cast<size_t> (settings.refined_poses)));
 
   // Refinement: every pose a few similarity ICP steps, the best three to the end; scored on the scan's k-d tree.
-  const Eigen::Matrix3Xd refine_samples = detail::evenSamples (model.points, 1000);
+  const Eigen::Matrix3Xd refine_samples = detail::evenSamples (model.points, 600);
   const double min_scale = settings.min_radius_ratio, max_scale = settings.max_radius_ratio;
   const auto refine = [&] (std::vector<size_t> active, int iterations) {
 #pragma omp parallel for schedule(dynamic, 1)

@@ -116,10 +116,10 @@ TEST_F (MorphableIcpTest, HeadsWithinTheModelFitFromLandmarkAndCoarseStarts)
       const double rms = fit (icp, scan);
       const auto& report = icp.getRegistrationReport ();
       std::printf ("[ within-model ] head %d %s start: RMS %.3f mm, %d+%d iterations, %s\n", head,
-                   landmark_start ? "landmark" : "coarse", rms, report.similarity_iterations,
+                   landmark_start ? "landmark" : "global", rms, report.similarity_iterations,
                    report.shape_iterations, morphreg::toString (report.termination).c_str ());
       over_target[landmark_start] += rms > 1.0 ? 1 : 0;
-      EXPECT_LE (rms, 2.5) << "head " << head << (landmark_start ? " landmark" : " coarse") << " start";
+      EXPECT_LE (rms, 2.5) << "head " << head << (landmark_start ? " landmark" : " global") << " start";
       EXPECT_LE (report.history.size (), 50u);
     }
   }

@@ -24,7 +24,8 @@ struct GlobalAlignmentSettings
   int rotation_directions = 256; ///< directions of the model's up axis in the rotation grid (Fibonacci sphere)
   int rotation_twists = 24;      ///< rotations about the up axis per direction (24: 15 degree steps)
   int score_samples = 400;       ///< model surface samples scored per rotation on the distance transform
-  int refined_poses = 10;        ///< best distinct rotations per head sphere refined by similarity ICP
+  int rotations_per_anchor = 10; ///< best distinct rotations kept per anchor (head sphere or centroid)
+  int refined_poses = 24;        ///< of those, the best-scoring over all anchors refined by similarity ICP
   int refine_iterations = 30;    ///< similarity ICP iterations of the poses that are refined to the end
   int screen_iterations = 8;     ///< iterations every refined pose runs before only the best 3 go on
   double inlier_fraction = 0.7;  ///< share of the closest pairs kept in each similarity ICP step
@@ -60,7 +61,7 @@ struct GlobalAlignment
  *     model's head sphere. The radii's ratio is the first scale.
  *  3. For each candidate, the rotations of a grid over SO(3) about the matched sphere centres are scored by the
  *     truncated mean distance of model samples to the scan, read from a distance transform of the scan.
- *  4. The best distinct rotations are refined by trimmed point-to-plane similarity ICP; the pose with the lowest
+ *  4. The best distinct rotations over all anchors are refined by trimmed point-to-plane similarity ICP; the pose with the lowest
  *     truncated distance (wrong normals count as far) and a scale within the searched radius range wins.
  *  Throws InvalidInputError for an invalid mesh, fewer than 10 scan points, non-finite points, normals of the
  *  wrong size or bad settings.

@@ -372,7 +372,8 @@ MorphableICP<PointTarget, Scalar>::resolveTargetUnit () const
   if (target_unit_)
     return {*target_unit_, 0.0, "given"};
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
-  const double model_radius = std::sqrt ((mean.colwise () - mean.rowwise ().mean ()).colwise ().squaredNorm ().mean ());
+  const Eigen::Vector3d centroid = mean.rowwise ().mean ();
+  const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
   Eigen::Matrix3Xd target (3, this->target_->size ());
   for (size_t i = 0; i < this->target_->size (); ++i)
     target.col (i) = (*this->target_)[i].getVector3fMap ().template cast<double> ();
