@@ -6,13 +6,16 @@
 #include "progress.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/scan_checks.h>
 #include <morphreg/visualization/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
@@ -73,7 +76,46 @@ loadScan (const std::string& path)
   pcl::removeNaNFromPointCloud (*scan, *scan, kept);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
+  requireRegistrableScan (scan->getMatrixXfMap (3, sizeof (pcl::PointNormal) / sizeof (float), 0).cast<double> (),
+                          path);
   return scan;
+}
+
+/** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
+LengthUnitGuess
+convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
+                          const MorphableModel& model)
+{
+  LengthUnitGuess unit;
+  if (options.units == "auto") {
+    const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
+    const Eigen::Vector3d centroid = mean.rowwise ().mean ();
+    const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
+    unit = guessLengthUnit (scan.getMatrixXfMap (3, sizeof (pcl::PointNormal) / sizeof (float), 0).cast<double> (),
+                            model_radius);
+  }
+  else {
+    unit.unit = parseLengthUnit (options.units);
+    unit.reason = "given (--units " + options.units + ")";
+  }
+  const auto to_mm = static_cast<float> (millimetresPer (unit.unit));
+  if (to_mm != 1.0f) {
+    for (auto& point : scan)
+      point.getVector3fMap () *= to_mm;
+    std::cout << "units: the scan is in " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
+  }
+  return unit;
+}
+
+/** The plausibility checks of the finished fit (the model and the scan in mm). */
+FitPlausibility
+checkFit (Icp& icp, const MorphableModel& model)
+{
+  const Eigen::VectorXd sigma = model.variances (icp.getComponentSelection ()).cwiseSqrt ();
+  const Eigen::VectorXd in_sigma = icp.getShapeCoefficients ().cwiseQuotient (sigma.cwiseMax (1e-12));
+  const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
+  return checkFitPlausibility (std::cbrt (linear.determinant ()), icp.getFittedVertices (), icp.getVertexResiduals (),
+                               in_sigma, icp.getRegistrationReport ());
 }
 
 /** The scan landmarks of the file that the model also has; the others are named on stderr and skipped. */
@@ -111,6 +153,8 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
   icp.setShapePriorWeight (options.shape_prior);
   icp.setAreaWeighting (options.area_weighting);
   icp.setRobustLoss (robustLoss (options.loss), options.loss_scale);
+  icp.setTargetSmoothing (options.target_smoothing);
+  icp.setTargetUnit (LengthUnit::millimetre); // the scan is converted on loading
   if (options.reject_distance > 0.0) {
     auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
     rejector->setMaximumDistance (static_cast<float> (options.reject_distance));
@@ -212,7 +256,9 @@ settingsJson (const RegisterOptions& options)
           {"reject_median_factor", options.reject_median},
           {"reject_one_to_one", options.reject_one_to_one},
           {"reject_trimmed_ratio", options.reject_trimmed},
-          {"landmarks", options.landmarks}};
+          {"landmarks", options.landmarks},
+          {"units", options.units},
+          {"target_smoothing", options.target_smoothing}};
 }
 
 /** Vertex distances between the fit and the true mesh (model topology, scan frame), over every vertex and over
@@ -265,6 +311,7 @@ registerScanFile (const RegisterOptions& options)
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
   const auto scan = loadScan (options.scan);
   const MorphableModel::Ptr model = loadModel (options.model);
+  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model);
   Icp icp;
   configureIcp (icp, options, model);
   icp.setInputTarget (scan);
@@ -288,9 +335,23 @@ registerScanFile (const RegisterOptions& options)
   const double write_seconds = secondsSince (write_start);
   const Eigen::Matrix4d pose = icp.getFinalTransformation ().cast<double> ();
 
+  const FitPlausibility checks = checkFit (icp, *model);
   nlohmann::json report = {
+      {"status", checks.plausible ? "ok" : "failed"},
+      {"checks", {{"passed", checks.plausible}, {"failures", checks.failures}}},
       {"units", "mm"},
-      {"scan", {{"file", options.scan}, {"points", scan->size ()}}},
+      {"scan",
+       {{"file", options.scan},
+        {"points", scan->size ()},
+        {"units", toString (unit.unit)},
+        {"unit_detection", options.units == "auto" ? "auto" : "given"},
+        {"unit_reason", unit.reason},
+        {"scale_to_mm", millimetresPer (unit.unit)}}},
+      {"initialisation",
+       {{"method", icp_report.initialisation},
+        {"detail", icp_report.initialisation_detail},
+        {"confidence", icp_report.initialisation_confidence},
+        {"head_points", icp_report.head_points}}},
       {"model", {{"file", options.model}, {"vertices", model->numVertices ()}, {"regions", model->numRegions ()}}},
       {"settings", settingsJson (options)},
       {"similarity", similarityJson (pose)},
@@ -329,6 +390,12 @@ registerScanFile (const RegisterOptions& options)
             << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"
             << "wrote " << options.out << " (vertex colours: residual, 0-" << scale << " mm), " << report_path
             << (viewer ? ", " + options.screenshot : std::string ()) << '\n';
+  if (!checks.plausible) {
+    std::string reasons;
+    for (const std::string& failure : checks.failures)
+      reasons += (reasons.empty () ? "" : "; ") + failure;
+    throw FitCheckFailure (reasons + " (see " + report_path + ")");
+  }
   return report;
 }
 
@@ -360,6 +427,11 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command->add_option ("--landmark-weight", options.landmark_weight,
                        "one landmark counts as this many correspondences")
       ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_flag ("--target-smoothing,!--no-target-smoothing", options.target_smoothing,
+                     "fit to each scan point projected onto its neighbours' plane (default; off for sparse or curved "
+                     "real scans)");
+  command->add_option ("--units", options.units, "the scan's length unit: auto (from its size), mm, cm, m or in")
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))->capture_default_str ();
   command->add_flag ("--area-weighting", options.area_weighting,
                      "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
   command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")

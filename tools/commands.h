@@ -6,10 +6,12 @@ namespace morphreg
 {
 namespace tools
 {
-/** Exit codes: 0 success, 1 bad input (a file or its content), 2 bad arguments (CLI11), 3 internal error. */
+/** Exit codes: 0 success, 1 bad input (a file or its content), 2 bad arguments (CLI11), 3 internal error, 4 a fit
+ *  that failed its plausibility checks (register: outputs written, the report marked failed). */
 constexpr int kExitInputError = 1;
 constexpr int kExitBadArguments = 2;
 constexpr int kExitInternalError = 3;
+constexpr int kExitFitFailedChecks = 4;
 
 void registerSynthCommand (CLI::App& app);
 void registerDemoCommand (CLI::App& app);

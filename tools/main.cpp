@@ -1,5 +1,6 @@
 // The morphreg command line: subcommands are registered by the tools/command_*.cpp files.
 #include "commands.h"
+#include "pipeline.h"
 
 #include <morphreg/common/error.h>
 
@@ -20,6 +21,10 @@ main (int argc, char** argv)
   catch (const CLI::ParseError& e) {
     const int status = app.exit (e); // prints the message, or the help / version text (status 0)
     return status == 0 ? 0 : morphreg::tools::kExitBadArguments;
+  }
+  catch (const morphreg::tools::FitCheckFailure& e) {
+    std::cerr << "morphreg: the fit failed its checks: " << e.what () << '\n';
+    return morphreg::tools::kExitFitFailedChecks;
   }
   catch (const morphreg::Error& e) {
     std::cerr << "morphreg: error: " << e.what () << '\n';

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,16 @@ struct RegisterOptions
   bool reject_one_to_one = false;
   double reject_trimmed = 0.0;
   double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
+  std::string units = "auto";  ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
+  bool target_smoothing = true; ///< fit to the scan points projected onto their neighbourhood's plane
   bool quiet = false;
+};
+
+/** Thrown when a registration finished but failed its plausibility checks (exit code 4); the outputs are written. */
+class FitCheckFailure : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
 };
 
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */

@@ -26,6 +26,15 @@ enum class IcpTermination
   diverged                  ///< cost rising, coefficients far outside the prior or an unsolvable system: best state returned
 };
 
+/** \brief Why a run stopped as diverged (IcpTermination::diverged); the best state is returned in every case. */
+enum class IcpDivergence
+{
+  none,           ///< it did not diverge
+  cost_rose,      ///< the shape stage's cost stayed above its best (the usual end of a fit that has settled)
+  prior_exceeded, ///< a shape coefficient left the prior (setDivergenceGuard's limit)
+  unsolvable      ///< the normal equations could not be solved
+};
+
 /** \brief Lower-case name of \a termination (e.g. "transformation_converged"). */
 std::string
 toString (IcpTermination termination);
@@ -49,6 +58,7 @@ struct IcpReport
 {
   IcpTermination termination = IcpTermination::not_run;
   std::string message;              ///< human-readable detail (e.g. what diverged)
+  IcpDivergence divergence = IcpDivergence::none; ///< what diverged, with IcpTermination::diverged
   std::vector<IcpIteration> history;
   int similarity_iterations = 0;
   int shape_iterations = 0;

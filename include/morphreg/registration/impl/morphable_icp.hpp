@@ -882,6 +882,7 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       }
       else if (problem.shape && cost > 1.05 * best_cost && ++rising >= rising_iterations_) {
         diverged = true;
+        report_.divergence = IcpDivergence::cost_rose;
         report_.message = "the cost rose " + std::to_string (rising) + " times in a row above the best";
       }
       if (diverged)
@@ -890,6 +891,7 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       const Eigen::VectorXd before_coefficients = state.coefficients;
       if (!step (state, ev, problem, total_cost)) {
         diverged = true;
+        report_.divergence = IcpDivergence::unsolvable;
         report_.message = "the normal equations could not be solved";
         break;
       }
@@ -903,6 +905,7 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       if (problem.shape && max_sigma_ > 0.0 && p > 0 &&
           (state.coefficients.cwiseAbs ().array () > max_sigma_ * problem.sigma.array () + 1e-9).any ()) {
         diverged = true;
+        report_.divergence = IcpDivergence::prior_exceeded;
         report_.message = "a shape coefficient left the prior (more than " + std::to_string (max_sigma_) +
                           " standard deviations)";
         break;

@@ -1,0 +1,46 @@
+#pragma once
+/** \file fit_plausibility.h
+ *  \brief Whether a finished head fit is believable, so that a failed registration is never silent: its size, its
+ *  shape, how much of the model the scan supports, how close it lies to the scan, and how it ended.
+ */
+#include <morphreg/registration/registration_report.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief Limits of checkFitPlausibility (the fit in mm: the scan converted to mm, the model in mm). */
+struct FitPlausibilitySettings
+{
+  /** Similarity scale range. The model's components carry the population's size variation (adult head lengths vary
+   *  by about 4 % per standard deviation, so +-8 % covers 95 %); a scale beyond 0.75-1.33 is a head a quarter
+   *  smaller or a third larger than the model can be, i.e. a wrong unit or the model fitted to the wrong object. */
+  double min_scale = 0.75;
+  double max_scale = 1.33;
+  double min_correspondence_share = 0.2; ///< share of model vertices with an accepted correspondence
+  double max_sigma = 5.0;                ///< no shape coefficient beyond this many prior standard deviations
+  double min_thickness_ratio = 0.25;     ///< smallest principal spread of the fitted vertices over the largest
+  double max_median_residual = 5.0;      ///< mm: the median scan-to-model distance of the accepted correspondences
+};
+
+/** \brief The verdict: plausible, or one sentence with the numbers per failed check. */
+struct FitPlausibility
+{
+  bool plausible = true;
+  std::vector<std::string> failures;
+};
+
+/** \brief Checks a finished fit: \a scale (of the similarity), \a fitted_vertices (3 x N, mm), \a vertex_residuals
+ *  (per model vertex, NaN without a correspondence), \a coefficients_in_sigma (the shape coefficients divided by
+ *  their prior standard deviations) and \a report (the median residual; a divergence other than the cost rising
+ *  above its best, which is the normal end of a settled fit). Throws InvalidInputError for mismatched sizes.
+ */
+FitPlausibility
+checkFitPlausibility (double scale, const Eigen::Matrix3Xd& fitted_vertices, const Eigen::VectorXd& vertex_residuals,
+                      const Eigen::VectorXd& coefficients_in_sigma, const IcpReport& report,
+                      const FitPlausibilitySettings& settings = FitPlausibilitySettings ());
+
+} // namespace morphreg

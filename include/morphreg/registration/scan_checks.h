@@ -1,0 +1,19 @@
+#pragma once
+/** \file scan_checks.h
+ *  \brief Checks that a scan can be registered at all, before any fitting: enough finite points spread in 3D.
+ */
+#include <Eigen/Core>
+
+#include <string>
+
+namespace morphreg
+{
+/** \brief Throws InvalidInputError naming \a name (e.g. the file) when \a points (3 x N) cannot be registered to a
+ *  head model: fewer than 100 points, a non-finite coordinate, all points identical, collinear, or flat (the
+ *  smallest principal spread below 1e-3 of the largest: a head scan is three-dimensional). Each case has its own
+ *  message with the numbers.
+ */
+void
+requireRegistrableScan (const Eigen::Matrix3Xd& points, const std::string& name);
+
+} // namespace morphreg
