@@ -399,7 +399,7 @@ scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoin
            double near, double min_scale, double max_scale, Pose& pose)
 {
   const double scale = detail::similarityScale (pose.similarity);
-  if (!(scale >= min_scale && scale <= max_scale)) {
+  if (!pose.similarity.allFinite () || !(scale >= min_scale && scale <= max_scale)) {
     pose.score = truncation;
     pose.coverage = 0.0;
     return;

@@ -14,6 +14,13 @@ namespace detail
 {
 namespace
 {
+/** Whether \a points are finite as the float coordinates the k-d tree takes (a diverging pose overflows them). */
+bool
+representable (const Eigen::Matrix3Xd& points)
+{
+  return (points.array ().abs () < 1e30).all ();
+}
+
 /** The closest points through \a estimation (on the tree's target), which caches what its last call found. */
 Closest
 closestPoints (CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ>& estimation, const Eigen::Matrix3Xd& points)
@@ -110,6 +117,8 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
   nearest.setSearchMethodTarget (tree, true);
   for (int iteration = 0; iteration < iterations; ++iteration) {
     const Eigen::Matrix3Xd posed = transformed (pose, samples);
+    if (!representable (posed))
+      break;
     const Closest closest = closestPoints (nearest, posed);
     const double limit = trimmedLimit (closest.distance, inlier_fraction);
     Eigen::Matrix<double, 7, 7> normal_matrix = Eigen::Matrix<double, 7, 7>::Zero ();
@@ -132,7 +141,10 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
         angle > 0.0 ? Eigen::AngleAxisd (angle, step.head<3> () / angle).toRotationMatrix () : Eigen::Matrix3d::Identity ();
     update.topLeftCorner<3, 3> () = std::exp (step[6]) * rotation;
     update.topRightCorner<3, 1> () = centre + step.segment<3> (3) - update.topLeftCorner<3, 3> () * centre;
-    pose = update * pose;
+    const Eigen::Matrix4d updated = update * pose;
+    if (!representable (transformed (updated, samples)))
+      break;
+    pose = updated;
     if (step.norm () < 1e-6)
       break;
   }

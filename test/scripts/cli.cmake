@@ -90,11 +90,73 @@ morphreg_cli_expect_exit(RegisterWrongTruthIsNamed 1 "synth/head_000.ply: 9602 v
   register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --iterations 2 --quiet
   --truth ${cli_dir}/synth/head_000.ply --out ${cli_dir}/bad.ply)
 morphreg_cli_expect_exit(RegisterBadLossExits2 2 "--loss" register --scan a.pcd --model b.h5 --loss cauchy)
+
+# Scans that cannot be registered are rejected before fitting, naming the file and the problem.
+function(write_ascii_pcd path points)
+  list(LENGTH points count)
+  list(JOIN points "\n" body)
+  file(WRITE ${path} "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH ${count}\nHEIGHT 1\n"
+                     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS ${count}\nDATA ascii\n${body}\n")
+endfunction()
+set(few "")
+set(flat "")
+set(line "")
+set(same "")
+set(nan "")
+foreach(i RANGE 199)
+  math(EXPR a "${i} % 20 * 5")
+  math(EXPR b "${i} / 20 * 5")
+  math(EXPR c "${i} * 7 % 13")
+  math(EXPR d "2 * ${i}")
+  math(EXPR e "3 * ${i}")
+  if(i LESS 50)
+    list(APPEND few "${a} ${b} ${c}")
+  endif()
+  list(APPEND flat "${a} ${b} 0")
+  list(APPEND line "${i} ${d} ${e}")
+  list(APPEND same "1 2 3")
+  list(APPEND nan "nan nan nan")
+endforeach()
+foreach(kind few flat line same nan)
+  write_ascii_pcd(${cli_dir}/scan_${kind}.pcd "${${kind}}")
+endforeach()
+foreach(case "few;50 points, at least 100" "flat;the 200 points lie in a plane" "line;the 200 points are collinear"
+        "same;all 200 points are identical" "nan;the scan has no valid (finite) points")
+  list(GET case 0 kind)
+  list(GET case 1 text)
+  morphreg_cli_expect_exit(RegisterRejectsScan_${kind} 1 "scan_${kind}.pcd: ${text}"
+    register --scan ${cli_dir}/scan_${kind}.pcd --model ${cli_dir}/small_model.h5 --out ${cli_dir}/bad.ply)
+  set_tests_properties(CliTest.RegisterRejectsScan_${kind} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+endforeach()
+morphreg_cli_expect_exit(RegisterBadUnitExits2 2 "--units" register --scan a.pcd --model b.h5 --units furlong)
+# A fit that fails its checks exits 4, and its report is written and marked failed: a mm scan read as cm.
+add_test(NAME CliTest.RegisterFailedChecksExit4
+  COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|register|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--units|cm|--quiet|--out|${cli_dir}/failed.ply"
+          -DEXPECT_CODE=4 "-DEXPECT_TEXT=the fit failed its checks: the head's scale" -DREPORT=${cli_dir}/failed.json
+          -P ${cli_scripts}/expect_exit.cmake)
+set_tests_properties(CliTest.RegisterFailedChecksExit4 PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 morphreg_cli_expect_exit(RegisterWrongComponentCountExits1 1 "regions"
   register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --components 3 4 --out ${cli_dir}/bad.ply)
 set_tests_properties(CliTest.RegisterCorruptModelIsNamed CliTest.RegisterMissingScanIsNamed
   CliTest.RegisterUnknownLandmarkIsNamed CliTest.RegisterWrongTruthIsNamed CliTest.RegisterWrongComponentCountExits1
   PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model;cli_synth")
+
+# The real head-and-shoulders scan as a new user registers it (skipped without ../shared/data): ICT at 30
+# components, no landmarks, the README's real-scan options; exit 0 means the fit passed its checks.
+set(real_scan ${MORPHREG_SHARED_DATA_DIR}/real_head_scans/leeperrysmith_scan_82k_mm.ply)
+if(EXISTS ${real_scan} AND EXISTS ${MORPHREG_SHARED_DATA_DIR}/ict_facekit/ict_head_pca_basis.npy)
+  add_test(NAME CliTest.BuildIct30Model
+    COMMAND morphreg_cli build-model --from-ict ${MORPHREG_SHARED_DATA_DIR}/ict_facekit --samples 300 --components 30
+            --quiet --out ${cli_dir}/ict30.h5)
+  set_tests_properties(CliTest.BuildIct30Model PROPERTIES FIXTURES_SETUP cli_ict30)
+  add_test(NAME CliTest.RegisterRealScanWithoutLandmarks
+    COMMAND morphreg_cli register --scan ${real_scan} --model ${cli_dir}/ict30.h5 --components 30 --area-weighting
+            --shape-prior 1.5 --tangential-weight 0.1 --no-target-smoothing --quiet --out ${cli_dir}/real_fit.ply)
+  set_tests_properties(CliTest.RegisterRealScanWithoutLandmarks PROPERTIES FIXTURES_REQUIRED cli_ict30
+    PASS_REGULAR_EXPRESSION "registered .* iterations \\([a-z_]*converged")
+else()
+  message(STATUS "morphreg: ${real_scan} or ICT-FaceKit absent: the CLI's real-scan test is skipped")
+endif()
 
 add_test(NAME CliTest.DemoRunsWithoutScreenshot
   COMMAND morphreg_cli demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --no-screenshot
