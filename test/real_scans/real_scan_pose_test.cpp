@@ -2,6 +2,8 @@
 // every pose succeeds: register's checks pass and the face median is at most 0.85 mm).
 #include "real_scan_support.h"
 
+#include <morphreg/registration/fit_plausibility.h>
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -43,6 +45,14 @@ runPose (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Matrix4d& 
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   const auto& report = icp.getRegistrationReport ();
   const auto face = faceDistance (fitInScanFrame (icp, pose, unit_scale));
+  // register's checks, on the fit in mm (the fitted vertices and the similarity back from the scan's unit)
+  const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
+  const morphreg::MorphableModel& model = *icp.getModel ();
+  const morphreg::FitPlausibility checks = morphreg::checkFitPlausibility (
+      std::cbrt (linear.determinant ()) / unit_scale, icp.getFittedVertices () / unit_scale, icp.getVertexResiduals (),
+      icp.getShapeCoefficients ().cwiseQuotient (model.variances (icp.getComponentSelection ()).cwiseSqrt ()), report);
+  for (const std::string& failure : checks.failures)
+    ADD_FAILURE () << name << " pose " << k << ": " << failure;
   std::printf ("[ real scan ] %s pose %2d: %s in %zu iterations, %.1f s, unit %s, confidence %.2f, %d points on the "
                "head; face median %.3f mm\n",
                name, k, morphreg::toString (report.termination).c_str (), report.history.size (), seconds,
