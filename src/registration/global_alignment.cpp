@@ -361,16 +361,6 @@ angleBetween (const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
   return Eigen::AngleAxisd (Eigen::Matrix3d (a.transpose () * b)).angle ();
 }
 
-/** The similarity x -> scale R (x - from) + to. */
-Eigen::Matrix4d
-similarityAbout (double scale, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& from, const Eigen::Vector3d& to)
-{
-  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity ();
-  similarity.topLeftCorner<3, 3> () = scale * rotation;
-  similarity.topRightCorner<3, 1> () = to - scale * rotation * from;
-  return similarity;
-}
-
 /** A rotation search's fixed point: the model point \a model goes to the scan point \a scan at \a scale. */
 struct Anchor
 {
@@ -537,7 +527,7 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
       scores[r] = sum;
     }
     for (size_t r : bestDistinct (rotations, scores, settings.rotations_per_anchor))
-      poses.push_back ({similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan),
+      poses.push_back ({detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan),
                         scores[r] / weights.sum (), 0.0, static_cast<int> (a)});
   }
   // Only the best grid scores over all anchors go on (an anchor off the head scores badly for every rotation).

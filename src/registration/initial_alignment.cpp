@@ -24,6 +24,7 @@ using detail::PointTree;
 using detail::closestPoints;
 using detail::evenSamples;
 using detail::pointTree;
+using detail::similarityAbout;
 using detail::transformed;
 using detail::trimmedLimit;
 using detail::trimmedMean;
@@ -92,16 +93,6 @@ requirePoints (const Eigen::Matrix3Xd& points, Eigen::Index minimum, const std::
                              std::to_string (minimum) + " needed");
   if (!points.allFinite ())
     throw InvalidInputError (what + ": points are not finite");
-}
-
-/** The similarity scaling by \a scale and rotating by \a rotation about \a from, then moving \a from to \a to. */
-Eigen::Matrix4d
-similarityAbout (double scale, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& from, const Eigen::Vector3d& to)
-{
-  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity ();
-  similarity.topLeftCorner<3, 3> () = scale * rotation;
-  similarity.topRightCorner<3, 1> () = to - scale * rotation * from;
-  return similarity;
 }
 
 /** Robust centroids and the scale matching the trimmed RMS spreads of \a source and \a target. */

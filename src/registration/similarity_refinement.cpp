@@ -151,6 +151,15 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
   return pose;
 }
 
+Eigen::Matrix4d
+similarityAbout (double scale, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& from, const Eigen::Vector3d& to)
+{
+  Eigen::Matrix4d similarity = Eigen::Matrix4d::Identity ();
+  similarity.topLeftCorner<3, 3> () = scale * rotation;
+  similarity.topRightCorner<3, 1> () = to - scale * rotation * from;
+  return similarity;
+}
+
 double
 similarityScale (const Eigen::Matrix4d& transform)
 {

@@ -54,6 +54,10 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
                   const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
                   int iterations, double inlier_fraction);
 
+/** The similarity x -> scale R (x - from) + to. */
+Eigen::Matrix4d
+similarityAbout (double scale, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+
 /** The uniform scale of the similarity \a transform (cube root of its linear part's determinant). */
 double
 similarityScale (const Eigen::Matrix4d& transform);

@@ -2,8 +2,9 @@
 // The shared real head-and-shoulders scan (Lee Perry-Smith, ../shared/data/real_head_scans), the ICT-FaceKit
 // 7-region model with 30 components per region, random similarity poses and the scan's evaluation convention:
 // area samples of the scan mesh to the fitted surface, over the model's face triangles.
+#include "../icp_ict/ict_data.h"
+
 #include <morphreg/io/cloud_io.h>
-#include <morphreg/io/ict_facekit.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/model/ict_region_model.h>
@@ -23,14 +24,13 @@ namespace test
 inline std::string
 realScanPath (const std::string& file)
 {
-  return std::string (MORPHREG_SHARED_DATA_DIR) + "/real_head_scans/" + file;
+  return sharedDataPath ("real_head_scans/" + file);
 }
 
 inline bool
 realScanDataAvailable ()
 {
-  return std::filesystem::exists (realScanPath ("leeperrysmith_scan_82k_mm.ply")) &&
-         std::filesystem::exists (std::string (MORPHREG_SHARED_DATA_DIR) + "/ict_facekit/ict_head_pca_basis.npy");
+  return std::filesystem::exists (realScanPath ("leeperrysmith_scan_82k_mm.ply")) && ictAvailable ();
 }
 
 /** The 7-region ICT model with 30 components per region, built once per executable as the README's
@@ -39,10 +39,9 @@ inline const MorphableModel::ConstPtr&
 ictModel30 ()
 {
   static const MorphableModel::ConstPtr model = [] {
-    const MorphableModel::Ptr ict = loadIctFaceKit (std::string (MORPHREG_SHARED_DATA_DIR) + "/ict_facekit");
     ModelBuilderSettings settings;
     settings.max_components = 30;
-    return MorphableModel::ConstPtr (buildIctRegionModel (*ict, 300, 1, settings));
+    return MorphableModel::ConstPtr (buildIctRegionModel (*ictModel (), 300, 1, settings));
   }();
   return model;
 }
