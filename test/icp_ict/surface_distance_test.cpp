@@ -79,3 +79,32 @@ TEST (SurfaceDistanceTest, BadInputIsReported)
 }
 
 } // namespace
+
+namespace
+{
+TEST (SurfaceDistanceTest, StatisticsOverFlaggedFittedTriangles)
+{
+  const TriangleMesh target = morphreg::test::makeGrid (11, 2.0); // 20 x 20 mm at z = 0
+  TriangleMesh fitted = target;                                   // the left half 1 mm above, the right half 3 mm
+  for (Eigen::Index v = 0; v < fitted.vertices.cols (); ++v)
+    fitted.vertices (2, v) = fitted.vertices (0, v) <= 10.0 ? 1.0 : 3.0;
+  morphreg::SurfaceDistanceSettings settings;
+  settings.drop_boundary = false;
+  const auto all = morphreg::surfaceDistance (target, fitted, {}, settings);
+  ASSERT_EQ (all.fitted_triangles.size (), all.distances.size ());
+  std::vector<bool> left (static_cast<size_t> (fitted.triangles.cols ()));
+  for (Eigen::Index t = 0; t < fitted.triangles.cols (); ++t) {
+    double x = 0.0;
+    for (int k = 0; k < 3; ++k)
+      x = std::max (x, fitted.vertices (0, fitted.triangles (k, t)));
+    left[static_cast<size_t> (t)] = x <= 10.0;
+  }
+  const auto over_left = morphreg::surfaceDistanceOver (all, left);
+  EXPECT_GT (over_left.distances.size (), 0u);
+  EXPECT_LT (over_left.distances.size (), all.distances.size ());
+  EXPECT_NEAR (over_left.median, 1.0, 0.05) << "samples that land on the flat 1 mm half";
+  EXPECT_THROW (morphreg::surfaceDistanceOver (all, std::vector<bool> (3, true)), morphreg::InvalidInputError);
+  EXPECT_THROW (morphreg::surfaceDistanceOver (all, std::vector<bool> (left.size (), false)),
+                morphreg::InvalidInputError);
+}
+} // namespace
