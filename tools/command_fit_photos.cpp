@@ -20,6 +20,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace morphreg
 {
@@ -27,12 +28,17 @@ namespace tools
 {
 namespace
 {
+/** Coefficients beyond this many prior standard deviations are warned about (the report counts them). */
+constexpr double kCoefficientWarningSigma = 3.0;
+
 struct FitPhotosOptions
 {
   std::string profile, frontal, model, photo, truth, report;
   std::string out = "fitted.ply";
   std::string approach = "joint";
   double lambda1 = 1.0;
+  double lambda2 = 1.0;
+  std::vector<int> components{10};
   double frontal_weight = 4.0;
   double sagittal_weight = 1.0;
   double colour_max = 5.0;
@@ -95,23 +101,26 @@ truthErrors (const std::string& path, const TwoViewFit& fit, nlohmann::json& rep
 
 TwoViewFit
 fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model, const ProfileView& profile,
-          const FrontalView& frontal)
+          const std::optional<FrontalView>& frontal)
 {
   if (model->profileLine ().empty ())
     throw InvalidInputError (options.model + ": the model has no profile line; build it with `build-model --dir` on "
                              "the output of synth or demo (their population.json holds it)");
   TwoViewFitting fitting (model);
+  fitting.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
+                                                                  : model->firstComponents (options.components));
   fitting.setSmoothnessWeight (options.lambda1);
+  fitting.setShapePriorWeight (options.lambda2);
   fitting.setFrontalWeight (options.frontal_weight);
   fitting.setSagittalWeight (options.sagittal_weight);
   if (!options.quiet)
-    std::cerr << "fitting " << options.model << " to " << options.profile << " and " << options.frontal << " ("
-              << options.approach << ")\n";
+    std::cerr << "fitting " << options.model << " to " << options.profile
+              << (options.approach == "profile" ? "" : " and " + options.frontal) << " (" << options.approach << ")\n";
   if (options.approach == "profile")
     return fitting.fitProfile (profile);
   if (options.approach == "tps")
-    return fitting.fitTpsIcp (profile, frontal);
-  return fitting.fitJoint (profile, frontal);
+    return fitting.fitTpsIcp (profile, *frontal);
+  return fitting.fitJoint (profile, *frontal);
 }
 
 void
@@ -120,19 +129,41 @@ runFitPhotos (const FitPhotosOptions& options)
   const auto start = std::chrono::steady_clock::now ();
   const MorphableModel::ConstPtr model = loadModel (options.model);
   const ProfileView profile = loadProfileView (options.profile);
-  const FrontalView frontal = loadFrontalView (options.frontal);
+  if (options.frontal.empty () && options.approach != "profile")
+    throw InvalidInputError ("fit-photos --approach " + options.approach +
+                             " needs --frontal (the frontal landmarks); only --approach profile fits without them");
+  const std::optional<FrontalView> frontal =
+      options.frontal.empty () ? std::nullopt : std::optional<FrontalView> (loadFrontalView (options.frontal));
+  if (!options.photo.empty () && !frontal)
+    throw InvalidInputError ("fit-photos --photo needs --frontal: the frontal annotation places the photo");
   const TwoViewFit fit = fitViews (options, model, profile, frontal);
 
   nlohmann::json report = twoViewFitJson (fit);
   report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
   report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
+  report["warnings"] = nlohmann::json::array ();
+  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
+    report["warnings"].push_back ("a shape coefficient is beyond " + std::to_string (kCoefficientWarningSigma) +
+                                  " standard deviations");
   report["settings"] = {{"approach", options.approach},
+                        {"components", options.components},
                         {"lambda1", options.lambda1},
+                        {"lambda2", options.lambda2},
                         {"frontal_weight", options.frontal_weight},
                         {"sagittal_weight", options.sagittal_weight}};
-  std::cout << "fit (" << options.approach << "): " << fit.history.size () << " iterations, profile RMS "
-            << fit.final_residuals.profile_rms << " mm over " << fit.final_residuals.profile_correspondences
-            << " profile-line vertices, landmark RMS " << fit.final_residuals.landmark_rms << " mm\n";
+  std::cout << "fit (" << options.approach << (fit.returned == options.approach || fit.returned == "tps_icp"
+                                                     ? std::string ()
+                                                     : ", returned the " + fit.returned + " fit: no TPS-ICP round "
+                                                       "lowered the image error")
+            << "): " << fit.history.size () << " iterations, profile RMS " << fit.final_residuals.profile_rms
+            << " mm over " << fit.final_residuals.profile_correspondences << " profile-line vertices";
+  if (frontal)
+    std::cout << ", landmark RMS " << fit.final_residuals.landmark_rms << " mm";
+  std::cout << "; largest coefficient " << fit.maxCoefficientSigma () << " standard deviations\n";
+  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
+    std::cerr << "fit-photos: warning: a shape coefficient is " << fit.maxCoefficientSigma ()
+              << " standard deviations from the mean (beyond " << kCoefficientWarningSigma
+              << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
 
   std::string colouring = "none";
   if (!options.truth.empty ()) {
@@ -141,7 +172,8 @@ runFitPhotos (const FitPhotosOptions& options)
     colouring = "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
   }
   else if (!options.photo.empty ()) {
-    const VertexTexture texture = frontalTexture (fit.image_mesh, frontal.normalisation (), loadRgbImage (options.photo));
+    const VertexTexture texture =
+        frontalTexture (fit.image_mesh, frontal->normalisation (), loadRgbImage (options.photo));
     report["texture"] = {{"photo", options.photo}, {"visible_vertices", texture.visibleCount ()}};
     savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture.colours));
     colouring = "frontal photo (grey where unseen)";
@@ -165,7 +197,8 @@ registerFitPhotosCommand (CLI::App& app)
       app.add_subcommand ("fit-photos", "fit a head model to a profile silhouette and frontal landmarks (two photos)");
   command->add_option ("--profile", options->profile, "profile annotation (JSON: silhouette, nose tip, pixels)")
       ->required ();
-  command->add_option ("--frontal", options->frontal, "frontal annotation (JSON: named landmarks, pixels)")->required ();
+  command->add_option ("--frontal", options->frontal,
+                       "frontal annotation (JSON: named landmarks, pixels); needed by --approach joint and tps");
   command->add_option ("-m,--model", options->model, "model file with a profile line and landmarks (HDF5)")->required ();
   command->add_option ("--approach", options->approach,
                        "joint (one Gauss-Newton over both photos), tps (TPS-ICP) or profile (the silhouette alone)")
@@ -175,6 +208,12 @@ registerFitPhotosCommand (CLI::App& app)
                        "true head and pose (JSON of `synth --photos`): report the fit's error, colour by it");
   command->add_option ("--smoothness", options->lambda1, "lambda_1, the smoothness prior across regions (> 0)")
       ->check (CLI::PositiveNumber)->capture_default_str ();
+  command->add_option ("--shape-prior", options->lambda2,
+                       "lambda_2, the shape prior (coefficients in prior standard deviations, >= 0)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--components", options->components,
+                       "shape components per region: one count for all, or one per region")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
   command->add_option ("--frontal-weight", options->frontal_weight, "weight of each frontal landmark's rows (> 0)")
       ->check (CLI::PositiveNumber)->capture_default_str ();
   command->add_option ("--sagittal-weight", options->sagittal_weight,

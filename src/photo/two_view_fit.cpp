@@ -28,6 +28,12 @@ TwoViewFit::similarity () const
   return m;
 }
 
+double
+TwoViewFit::maxCoefficientSigma () const
+{
+  return coefficient_sigmas.size () > 0 ? coefficient_sigmas.cwiseAbs ().maxCoeff () : 0.0;
+}
+
 nlohmann::json
 twoViewFitJson (const TwoViewFit& fit)
 {
@@ -43,6 +49,10 @@ twoViewFitJson (const TwoViewFit& fit)
       {"translation", {fit.translation.x (), fit.translation.y (), fit.translation.z ()}},
       {"component_counts", fit.selection.counts ()},
       {"coefficients", std::vector<double> (fit.coefficients.data (), fit.coefficients.data () + fit.coefficients.size ())},
+      {"returned", fit.returned},
+      {"tps_rounds", fit.tps_rounds},
+      {"max_coefficient_sigma", fit.maxCoefficientSigma ()},
+      {"coefficients_beyond_3_sigma", (fit.coefficient_sigmas.array ().abs () > 3.0).count ()},
       {"final", iterationJson (fit.final_residuals)},
       {"history", history}};
 }

@@ -196,6 +196,7 @@ void
 storeState (const MorphableModel& model, const PoseShapeState& state, TwoViewFit& fit)
 {
   fit.coefficients = state.coefficients;
+  fit.coefficient_sigmas = state.coefficients.cwiseQuotient (model.variances (fit.selection).cwiseSqrt ());
   fit.scale = state.scale ();
   fit.rotation = state.rotation;
   fit.translation = state.translation;
@@ -323,6 +324,7 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
       break;
     best = state;
     best_error = error;
+    result.tps_rounds = round;
     result.history.push_back (iteration);
     if (round == kTpsIcpRounds)
       break;
@@ -336,6 +338,7 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
     }
   }
   result.final_residuals.stage = TwoViewStage::tps_icp;
+  result.returned = result.tps_rounds > 0 ? "tps_icp" : "profile";
   currentRows (two_view, silhouette, onProblem (best, two_view.shape), result.final_residuals);
   storeState (*model_, best, result);
   return result;
@@ -382,6 +385,7 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
   result.final_residuals.stage = result.history.empty () ? TwoViewStage::similarity : result.history.back ().stage;
   currentRows (problem, silhouette, state, result.final_residuals);
   result.selection = selection_;
+  result.returned = frontal ? "joint" : "profile";
   storeState (*model_, state, result);
   return result;
 }

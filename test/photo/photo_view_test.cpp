@@ -50,17 +50,36 @@ TEST (PhotoViewTest, NormalisationDividesByTheLongerSideCentresOnTheNoseAndPoint
   EXPECT_TRUE (wide.normalise (Eigen::Vector2d (600.0, 300.0)).isApprox (Eigen::Vector2d (0.5, -0.25)));
 }
 
+/** 12 silhouette points of a profile facing right: (400, 300), (405, 335), ... (455, 685), all left of x = 500. */
+std::vector<Eigen::Vector2d>
+rightFacingLine ()
+{
+  std::vector<Eigen::Vector2d> line;
+  for (int k = 0; k < 12; ++k)
+    line.emplace_back (400.0 + 5.0 * k, 300.0 + 35.0 * k);
+  return line;
+}
+
 TEST (PhotoViewTest, ProfileViewRejectsBadAnnotations)
 {
   const Eigen::Vector2d nose (500.0, 500.0);
-  const std::vector<Eigen::Vector2d> line = {{400.0, 300.0}, {500.0, 500.0}, {450.0, 700.0}};
+  const std::vector<Eigen::Vector2d> line = rightFacingLine ();
   expectError<InvalidInputError> ([&] { ProfileView (0, 1200, line, nose, "side.json"); },
                                   {"side.json", "image size 0 x 1200"});
   expectError<InvalidInputError> ([&] { ProfileView (1000, -5, line, nose); }, {"image size", "positive"});
   expectError<InvalidInputError> ([&] { ProfileView (1000, 1200, {}, nose, "side.json"); },
                                   {"side.json", "silhouette polyline has 0 points"});
   expectError<InvalidInputError> ([&] { ProfileView (1000, 1200, {nose}, nose); }, {"has 1 points"});
-  expectError<InvalidInputError> ([&] { ProfileView (1000, 1200, {nose, nose, nose}, nose); }, {"coincide"});
+  expectError<InvalidInputError> (
+      [&] { ProfileView (1000, 1200, std::vector<Eigen::Vector2d> (line.begin (), line.begin () + 9), nose); },
+      {"has 9 points", "at least 10"});
+  expectError<InvalidInputError> ([&] { ProfileView (1000, 1200, std::vector<Eigen::Vector2d> (12, nose), nose); },
+                                  {"coincide"});
+  std::vector<Eigen::Vector2d> mirrored = line;
+  for (Eigen::Vector2d& point : mirrored)
+    point.x () = 1000.0 - point.x ();
+  expectError<InvalidInputError> ([&] { ProfileView (1000, 1200, mirrored, nose, "left.json"); },
+                                  {"left.json", "the face looks left", "mirror the photo"});
   std::vector<Eigen::Vector2d> with_nan = line;
   with_nan[1].y () = kNaN;
   expectError<InvalidInputError> ([&] { ProfileView (1000, 1200, with_nan, nose); },
@@ -70,6 +89,7 @@ TEST (PhotoViewTest, ProfileViewRejectsBadAnnotations)
   const ProfileView view (1000, 1200, line, nose);
   // u towards the face (image right), v up, in units of the longer side.
   EXPECT_TRUE (view.normalisedSilhouette ().col (0).isApprox (Eigen::Vector2d (-100.0, 200.0) / 1200.0));
+  EXPECT_TRUE (view.normalisedSilhouette ().col (1).isApprox (Eigen::Vector2d (-95.0, 165.0) / 1200.0));
 }
 
 TEST (PhotoViewTest, FrontalViewRejectsBadAnnotations)
@@ -96,7 +116,9 @@ TEST (PhotoViewTest, FrontalViewRejectsBadAnnotations)
 TEST (PhotoViewTest, JsonFilesRoundTrip)
 {
   const morphreg::test::TempDirectory directory;
-  const ProfileView profile (1000, 1200, {{400.25, 300.5}, {500.0, 500.0}, {450.0, 700.0}}, {510.5, 498.0});
+  std::vector<Eigen::Vector2d> line = rightFacingLine ();
+  line.front () = {400.25, 300.5};
+  const ProfileView profile (1000, 1200, line, {510.5, 498.0});
   morphreg::saveProfileView (directory.file ("side.json"), profile);
   const ProfileView profile_read = morphreg::loadProfileView (directory.file ("side.json"));
   EXPECT_EQ (profile_read.normalisation ().width (), 1000);

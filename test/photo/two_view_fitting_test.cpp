@@ -350,7 +350,7 @@ TEST_F (PhotoFittingTest, SilhouetteFarFromTheModelIsReported)
   const SimulatedPhotos photos = photograph (unseenHead (0), 100);
   std::vector<Eigen::Vector2d> shifted = photos.profile.silhouette ();
   for (Eigen::Vector2d& point : shifted)
-    point.x () += 3000.0; // the silhouette moved far from its nose tip: nothing is near the model's profile
+    point.y () += 3000.0; // the silhouette moved far below its nose tip: nothing is near the model's profile
   const morphreg::ProfileView profile (1000, 1200, shifted, photos.profile.normalisation ().noseTip ());
   expectInvalid ([&] { fitting ().fitProfile (profile); }, "profile-line vertices lie within");
 }

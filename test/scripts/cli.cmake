@@ -220,6 +220,52 @@ set_tests_properties(CliTest.FitPhotosWrongViewIsNamed PROPERTIES FIXTURES_REQUI
 morphreg_cli_expect_exit(FitPhotosBadApproachExits2 2 "--approach" fit-photos --model ${cli_dir}/small_model.h5
   --profile ${cli_dir}/small/photo_0_profile.json --frontal ${cli_dir}/small/photo_0_frontal.json --approach x)
 
+# fit-photos with the user's components and prior; the profile fit needs no frontal photo, the others do.
+add_test(NAME CliTest.FitPhotosTakesComponentsAndShapePrior
+  COMMAND morphreg_cli fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
+          --frontal ${cli_dir}/small/photo_0_frontal.json --components 4 --shape-prior 2 --truth
+          ${cli_dir}/small/photo_0_truth.json --report ${cli_dir}/photos_prior.json --out ${cli_dir}/photos_prior.ply)
+set_tests_properties(CliTest.FitPhotosTakesComponentsAndShapePrior PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  PASS_REGULAR_EXPRESSION "largest coefficient [0-9.]+ standard deviations.*vertex RMS against the truth")
+add_test(NAME CliTest.FitPhotosProfileNeedsNoFrontal
+  COMMAND morphreg_cli fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
+          --approach profile --quiet --out ${cli_dir}/photos_profile.ply)
+set_tests_properties(CliTest.FitPhotosProfileNeedsNoFrontal PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  PASS_REGULAR_EXPRESSION "fit \\(profile\\): [0-9]+ iterations, profile RMS [0-9.]+ mm over [0-9]+ profile-line vertices;"
+  FAIL_REGULAR_EXPRESSION "landmark RMS")
+morphreg_cli_expect_exit(FitPhotosJointNeedsFrontal 1 "--approach joint needs --frontal"
+  fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json --out ${cli_dir}/bad.ply)
+# Bad annotations: a profile facing left, a silhouette of 9 points, frontal landmarks without the nose tip.
+set(silhouette "")
+foreach(k RANGE 11)
+  math(EXPR x "600 - 5 * ${k}")
+  math(EXPR y "300 + 35 * ${k}")
+  list(APPEND silhouette "[${x}, ${y}]")
+endforeach()
+list(JOIN silhouette ", " left_facing)
+list(SUBLIST silhouette 0 9 nine)
+list(JOIN nine ", " nine)
+set(profile_head "{\"view\": \"profile\", \"image\": {\"width\": 1000, \"height\": 1200}, \"units\": \"px\"")
+file(WRITE ${cli_dir}/profile_left.json "${profile_head}, \"nose_tip\": [500, 500], \"silhouette\": [${left_facing}]}")
+file(WRITE ${cli_dir}/profile_nine.json "${profile_head}, \"nose_tip\": [700, 500], \"silhouette\": [${nine}]}")
+file(WRITE ${cli_dir}/frontal_no_nose.json "{\"view\": \"frontal\", \"image\": {\"width\": 1000, \"height\": 1200}, "
+           "\"units\": \"px\", \"landmarks\": [{\"id\": \"chin\", \"position\": [500, 900]}, "
+           "{\"id\": \"left_eye_outer\", \"position\": [600, 400]}, "
+           "{\"id\": \"right_eye_outer\", \"position\": [400, 400]}]}")
+foreach(case "profile_left;the face looks left" "profile_nine;the silhouette polyline has 9 points")
+  list(GET case 0 name)
+  list(GET case 1 text)
+  morphreg_cli_expect_exit(FitPhotosRejects_${name} 1 "${name}.json: ${text}"
+    fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/${name}.json --approach profile
+    --out ${cli_dir}/bad.ply)
+endforeach()
+morphreg_cli_expect_exit(FitPhotosRejects_frontal_no_nose 1 "frontal_no_nose.json: the frontal landmarks have no nose_tip"
+  fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
+  --frontal ${cli_dir}/frontal_no_nose.json --out ${cli_dir}/bad.ply)
+set_tests_properties(CliTest.FitPhotosJointNeedsFrontal CliTest.FitPhotosRejects_profile_left
+  CliTest.FitPhotosRejects_profile_nine CliTest.FitPhotosRejects_frontal_no_nose
+  PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+
 # warp: one small head onto the next head's landmarks, with the error against that head (measured mean 3.58 mm).
 add_test(NAME CliTest.WarpHeadOntoAnotherHeadsLandmarks
   COMMAND morphreg_cli warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json

@@ -21,7 +21,8 @@ class ProfileView
 {
 public:
   /** \brief Throws InvalidInputError naming \a source for a non-positive image size, a non-finite nose tip or
-   *  silhouette point, or a silhouette of fewer than 2 distinct points.
+   *  silhouette point, a silhouette of fewer than kMinimumSilhouettePoints points or of coincident ones, or a face
+   *  looking left (the nose tip left of the silhouette's mean x).
    */
   ProfileView (int width, int height, std::vector<Eigen::Vector2d> silhouette, const Eigen::Vector2d& nose_tip,
                const std::string& source = "ProfileView");
@@ -43,7 +44,14 @@ public:
   Eigen::Matrix2Xd
   normalisedSilhouette () const;
 
+  /** \brief The fewest silhouette points a profile needs (a traced outline has many more). */
+  static constexpr std::size_t kMinimumSilhouettePoints = 10;
+
 private:
+  /** Throws unless the nose tip lies right of the silhouette's mean x (the face looks to +x). */
+  void
+  requireFacingRight (const Eigen::Vector2d& nose_tip, const std::string& source) const;
+
   PhotoNormalisation normalisation_;
   std::vector<Eigen::Vector2d> silhouette_;
 };

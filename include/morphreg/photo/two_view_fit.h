@@ -46,6 +46,15 @@ struct TwoViewFit
   TriangleMesh image_mesh;        ///< the fitted shape in the normalised photo frame
   std::vector<TwoViewIteration> history;
   TwoViewIteration final_residuals; ///< the residuals at the returned state
+  /** What the result is: "profile", "joint" or "tps_icp"; a TPS-ICP fit none of whose rounds lowered the image
+   *  error returns its starting profile fit, and says "profile" here. */
+  std::string returned;
+  int tps_rounds = 0;                ///< TPS-ICP rounds whose result was kept (0 for the other fits)
+  Eigen::VectorXd coefficient_sigmas; ///< the coefficients in prior standard deviations (stacked like them)
+
+  /** \brief The largest |coefficient| in prior standard deviations (0 without components). */
+  double
+  maxCoefficientSigma () const;
 
   /** \brief [s R | t] as a 4 x 4 matrix. */
   Eigen::Matrix4d
