@@ -33,4 +33,11 @@ Polyline2d::closestPoint (const Eigen::Vector2d& query) const
   }
   return best;
 }
+bool
+Polyline2d::isEnd (const Eigen::Vector2d& point) const
+{
+  constexpr double kTolerance = 1e-12;
+  return (point - points_.col (0)).norm () <= kTolerance ||
+         (point - points_.col (points_.cols () - 1)).norm () <= kTolerance;
+}
 } // namespace morphreg

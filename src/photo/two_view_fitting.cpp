@@ -16,6 +16,10 @@ namespace morphreg
 {
 namespace
 {
+/** Model mm: a profile-line vertex farther than this beyond either end of the silhouette has no correspondence (the
+ *  silhouette may show part of the profile: the end says nothing about where the outline goes on). */
+constexpr double kEndSlack = 5.0;
+
 /** At most this many rounds of TPS warp and 3D-3D fit in fitTpsIcp. */
 constexpr int kTpsIcpRounds = 10;
 
@@ -100,8 +104,8 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
     const Eigen::Vector2d projected (posed (2, k), posed (1, k));
     const Eigen::Vector2d closest = silhouette.closestPoint (projected);
     const double distance = (closest - projected).norm () * mm;
-    if (!(distance <= problem.max_distance))
-      continue;
+    if (!(distance <= problem.max_distance) || (distance > kEndSlack && silhouette.isEnd (closest)))
+      continue; // too far, or beyond the end of a silhouette that shows part of the profile
     rows.push_back ({k, Eigen::Vector3d (0.0, closest.y (), closest.x ()),
                      Eigen::Vector3d (problem.sagittal_weight, 1.0, 1.0)});
     profile_sum += distance * distance;
@@ -172,20 +176,63 @@ tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& i
   return rows;
 }
 
-/** The initial pose: no rotation, the scale that gives the model's profile line the silhouette's height, and the
- *  model's nose tip at the origin (the nose tip centres both photos).
- */
-PoseShapeState
-initialState (const MorphableModel& model, const TwoViewProblem& problem, const Eigen::Matrix2Xd& silhouette)
+/** The initial scale from the frontal landmarks: the least-squares ratio of their spread in the photo (normalised)
+ *  to the model's mean landmarks' in (X, Y). */
+double
+landmarkScale (const TwoViewProblem& problem)
+{
+  const auto count = static_cast<Eigen::Index> (problem.landmarks.size ());
+  Eigen::Matrix2Xd image (2, count), model (2, count);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    image.col (k) = problem.landmarks[static_cast<size_t> (k)];
+    model.col (k) = problem.shape.mean.col (problem.profile_count + k).head<2> ();
+  }
+  const Eigen::Vector2d image_centre = image.rowwise ().mean (), model_centre = model.rowwise ().mean ();
+  image.colwise () -= image_centre;
+  model.colwise () -= model_centre;
+  return (image.array () * model.array ()).sum () / model.squaredNorm ();
+}
+
+/** The initial scale from the silhouette alone: among scales from 0.5 to 2 times the one that gives the profile
+ *  line the silhouette's height, the one at which the profile-line vertices (nose tip on the photo's) lie closest to
+ *  the silhouette, each distance (model mm) truncated at the max correspondence distance; a silhouette that shows
+ *  part of the profile (the face, not the back of the head) then still finds its size. */
+double
+silhouetteScale (const TwoViewProblem& problem, const Eigen::Vector3d& nose, const Polyline2d& silhouette)
 {
   const Eigen::Matrix3Xd profile = problem.shape.mean.leftCols (problem.profile_count);
   const double model_height = profile.row (1).maxCoeff () - profile.row (1).minCoeff ();
-  const double image_height = silhouette.row (1).maxCoeff () - silhouette.row (1).minCoeff ();
+  const double image_height = silhouette.points ().row (1).maxCoeff () - silhouette.points ().row (1).minCoeff ();
   if (!(model_height > 0.0) || !(image_height > 0.0))
     throw InvalidInputError ("TwoViewFitting: the model's profile line or the silhouette has no height");
+  double best_scale = image_height / model_height, best_score = std::numeric_limits<double>::infinity ();
+  constexpr int kCandidates = 25;
+  for (int k = 0; k < kCandidates; ++k) {
+    const double scale = image_height / model_height * std::pow (2.0, (k - kCandidates / 2) / 12.0);
+    double score = 0.0;
+    for (Eigen::Index i = 0; i < profile.cols (); ++i) {
+      const Eigen::Vector2d projected (scale * (profile (2, i) - nose.z ()), scale * (profile (1, i) - nose.y ()));
+      score += std::min ((silhouette.closestPoint (projected) - projected).norm () / scale, problem.max_distance);
+    }
+    if (score < best_score) {
+      best_score = score;
+      best_scale = scale;
+    }
+  }
+  return best_scale;
+}
+
+/** The initial pose: no rotation, the model's nose tip at the origin (the nose tip centres both photos), and the
+ *  scale from the frontal landmarks when there are some (a partial silhouette says little about the head's size),
+ *  else from the silhouette (silhouetteScale). */
+PoseShapeState
+initialState (const MorphableModel& model, const TwoViewProblem& problem, const Polyline2d& silhouette)
+{
+  const Eigen::Vector3d nose = model.meanVertex (model.landmarkVertex ("nose_tip"));
   PoseShapeState state;
-  state.log_scale = std::log (image_height / model_height);
-  state.translation = -state.scale () * model.meanVertex (model.landmarkVertex ("nose_tip"));
+  state.log_scale =
+      std::log (problem.landmarks.size () >= 2 ? landmarkScale (problem) : silhouetteScale (problem, nose, silhouette));
+  state.translation = -state.scale () * nose;
   state.coefficients = Eigen::VectorXd::Zero (problem.shape.sigma.size ());
   state.vertices = problem.shape.mean;
   return state;
@@ -361,7 +408,7 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
                                max_distance_};
   const Eigen::Matrix2Xd silhouette_points = profile.normalisedSilhouette ();
   const Polyline2d silhouette (silhouette_points);
-  PoseShapeState state = initialState (*model_, problem, silhouette_points);
+  PoseShapeState state = initialState (*model_, problem, silhouette);
   TwoViewFit result;
   for (const TwoViewStage stage : {TwoViewStage::similarity, TwoViewStage::shape}) {
     const bool shape = stage == TwoViewStage::shape && selection_.total () > 0;

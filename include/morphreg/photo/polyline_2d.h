@@ -19,6 +19,11 @@ public:
   Eigen::Vector2d
   closestPoint (const Eigen::Vector2d& query) const;
 
+  /** \brief Whether \a point (a closestPoint result) is one of the polyline's two ends: a query beyond the traced
+   *  part of a silhouette lands there, and says nothing about where the outline goes. */
+  bool
+  isEnd (const Eigen::Vector2d& point) const;
+
   const Eigen::Matrix2Xd&
   points () const
   {
