@@ -44,9 +44,9 @@ faceMedian (const TriangleMesh& fitted, const TriangleMesh& source, const Landma
  *  median; \a bounds are the largest ratios to the mean head allowed (joint, TPS-ICP, profile). */
 void
 fitAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVertices& landmarks,
-             const std::array<double, 3>& bounds)
+             const std::array<double, 3>& bounds, const OutlinePhotoSettings& settings = OutlinePhotoSettings ())
 {
-  const auto photos = outlinePhotos (mesh, landmarks, OutlinePhotoSettings (), 3);
+  const auto photos = outlinePhotos (mesh, landmarks, settings, 3);
   const MorphableModel::ConstPtr& model = ictModel30 ();
   const TriangleMesh mean = model->generateMesh (Eigen::VectorXd::Zero (0), ComponentSelection (
                                                      std::vector<int> (static_cast<size_t> (model->numRegions ()), 0)));
@@ -97,6 +97,16 @@ TEST (RealPhotoTest, RealHeadScan)
   // fit meets the 0.85x; joint and TPS-ICP (target 0.7x) do not yet: the bounds guard what is reached.
   fitAndScore ("Lee Perry-Smith", leeHeadMesh (), LandmarkVertices (landmarks.begin (), landmarks.end ()),
                {0.9, 1.05, 0.85});
+  // Hair (12 mm on everything 60 mm above the nose tip) traced as the outline, and the same photo traced from the
+  // hairline down, as the README advises. Measured: with the hair 0.78x, 0.93x, 0.95x (the profile fit alone
+  // suffers); from the hairline 0.77x, 1.02x, 0.86x.
+  OutlinePhotoSettings hair;
+  hair.hair_thickness = 12.0;
+  fitAndScore ("Lee Perry-Smith with hair", leeHeadMesh (), LandmarkVertices (landmarks.begin (), landmarks.end ()),
+               {0.9, 1.05, 1.0}, hair);
+  hair.trace_from = hair.hair_from;
+  fitAndScore ("Lee Perry-Smith from the hairline", leeHeadMesh (),
+               LandmarkVertices (landmarks.begin (), landmarks.end ()), {0.9, 1.05, 0.9}, hair);
 }
 
 } // namespace

@@ -28,6 +28,7 @@ struct OutlinePhotoSettings
   double hair_thickness = 0.0;   ///< mm added outwards to the outline above hair_from
   double hair_from = 60.0;       ///< mm above the nose tip
   int point_spacing = 4;         ///< px between kept outline points
+  double trace_from = 1e9;       ///< mm above the nose tip where the person starts tracing (the hairline: below hair)
 };
 
 /** A binary image of \a mesh's orthographic projection onto (\a u_axis, Y), x = u, y = down, 1 px = 1 /
@@ -146,6 +147,8 @@ outlinePhotos (const TriangleMesh& mesh, const LandmarkVertices& landmarks, cons
   std::vector<Eigen::Vector2d> silhouette;
   for (size_t k = 0; k <= lowest; k += static_cast<size_t> (settings.point_spacing)) {
     Eigen::Vector2d mm = side.toMillimetres (loop[k].cast<double> () + Eigen::Vector2d::Constant (0.5));
+    if (mm.y () > nose.y () + settings.trace_from)
+      continue;
     if (mm.y () > nose.y () + settings.hair_from && settings.hair_thickness > 0.0) {
       const Eigen::Vector2d centre (nose.z () - 90.0, nose.y () + settings.hair_from - 40.0);
       mm += settings.hair_thickness * (mm - centre).normalized ();
