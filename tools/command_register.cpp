@@ -19,7 +19,6 @@
 #include <morphreg/visualization/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
-#include <pcl/filters/filter.h>
 #include <pcl/registration/correspondence_rejection_distance.h>
 #include <pcl/registration/correspondence_rejection_median_distance.h>
 #include <pcl/registration/correspondence_rejection_one_to_one.h>
@@ -27,6 +26,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -66,18 +66,28 @@ robustLoss (const std::string& name)
   return name == "none" ? RobustLoss::none : name == "huber" ? RobustLoss::huber : RobustLoss::tukey;
 }
 
-/** The scan as points with normals, without invalid (NaN) points. */
+/** \a scan without its missing points (PCL marks them NaN). An infinite coordinate is no such mark but a broken
+ *  file: those points stay for requireRegistrableScan to reject. */
+void
+dropMissingPoints (pcl::PointCloud<pcl::PointNormal>& scan)
+{
+  const auto missing = [] (const pcl::PointNormal& p) {
+    return std::isnan (p.x) || std::isnan (p.y) || std::isnan (p.z);
+  };
+  scan.erase (std::remove_if (scan.begin (), scan.end (), missing), scan.end ());
+}
+
+/** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
 pcl::PointCloud<pcl::PointNormal>::Ptr
 loadScan (const std::string& path)
 {
   auto scan = loadCloud<pcl::PointNormal> (path);
-  scan->is_dense = false;
-  pcl::Indices kept;
-  pcl::removeNaNFromPointCloud (*scan, *scan, kept);
+  dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (scan->getMatrixXfMap (3, sizeof (pcl::PointNormal) / sizeof (float), 0).cast<double> (),
                           path);
+  scan->is_dense = true;
   return scan;
 }
 
@@ -96,13 +106,13 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
   }
   else {
     unit.unit = parseLengthUnit (options.units);
-    unit.reason = "given (--units " + options.units + ")";
+    unit.reason = "given: --units " + options.units;
   }
   const auto to_mm = static_cast<float> (millimetresPer (unit.unit));
   if (to_mm != 1.0f) {
     for (auto& point : scan)
       point.getVector3fMap () *= to_mm;
-    std::cout << "units: the scan is in " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
+    std::cout << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   }
   return unit;
 }
@@ -456,7 +466,7 @@ registerRegisterCommand (CLI::App& app)
 {
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
-  command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj), mm")->required ();
+  command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj); its unit: see --units")->required ();
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
       ->capture_default_str ();
@@ -469,6 +479,10 @@ registerRegisterCommand (CLI::App& app)
       ->check (CLI::NonNegativeNumber);
   addRegistrationOptions (command, *options);
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
+  command->footer ("The scan is checked before fitting (at least 100 finite points spread in 3D; else exit 1) and "
+                   "the fit after it (scale, coverage, coefficients, shape, distance to the scan, divergence): a "
+                   "fit that fails its checks exits 4, with the fitted mesh and the report written and the "
+                   "report's status \"failed\".");
   command->callback ([options] () { runRegister (*options); });
 }
 

@@ -14,6 +14,9 @@ main (int argc, char** argv)
   CLI::App app{"morphreg: morphable-model registration and thin plate spline warping for PCL"};
   app.set_version_flag ("--version", std::string ("morphreg ") + MORPHREG_VERSION);
   app.require_subcommand (1);
+  app.footer ("Exit codes: 0 success, 1 bad input (a file or its content), 2 bad arguments, 3 internal error, "
+              "4 the fit failed its checks (register: the fitted mesh and the report are written, the report's "
+              "status is \"failed\").");
   morphreg::tools::registerCommands (app);
   try {
     app.parse (argc, argv);

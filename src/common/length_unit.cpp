@@ -1,17 +1,27 @@
+#include "number_text.h"
+
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <sstream>
 #include <vector>
 
 namespace morphreg
 {
 namespace
 {
+using detail::numberText;
+
 constexpr LengthUnit kUnits[] = {LengthUnit::millimetre, LengthUnit::centimetre, LengthUnit::metre, LengthUnit::inch};
+
+/** A head with some neck or shoulders over the model's RMS radius: the size a scan is expected to have. */
+constexpr double kExpectedSizeRatio = 1.4;
+/** Decades added to the inch's distance: metric scans are far more common, and cm and inches are only 2.54 apart. */
+constexpr double kInchHandicap = 0.15;
+/** Scans outside this size against the model in their best unit do not look like a head in any unit. */
+constexpr double kMinHeadRatio = 0.3;
+constexpr double kMaxHeadRatio = 10.0;
 
 /** RMS distance from the centroid of the 90 % of \a points nearest to their coordinate-wise median. */
 double
@@ -35,6 +45,38 @@ robustRadius (const Eigen::Matrix3Xd& points)
     kept.col (static_cast<Eigen::Index> (k)) = points.col (by_distance[k].second);
   const Eigen::Vector3d centroid = kept.rowwise ().mean ();
   return std::sqrt ((kept.colwise () - centroid).colwise ().squaredNorm ().mean ());
+}
+
+/** How far (decades, with the inch's handicap) reading the scan in \a unit puts it from the expected head size;
+ *  \a size_ratio is the scan's size over the model's in the scan's own numbers. */
+double
+distanceFromHeadSize (double size_ratio, LengthUnit unit)
+{
+  return std::abs (std::log10 (size_ratio * millimetresPer (unit) / kExpectedSizeRatio)) +
+         (unit == LengthUnit::inch ? kInchHandicap : 0.0);
+}
+
+/** The unit whose reading puts the scan closest to the expected head size. */
+LengthUnit
+closestUnit (double size_ratio)
+{
+  LengthUnit best = LengthUnit::millimetre;
+  for (LengthUnit unit : kUnits)
+    if (distanceFromHeadSize (size_ratio, unit) < distanceFromHeadSize (size_ratio, best))
+      best = unit;
+  return best;
+}
+
+/** The guess's one sentence: the scan's size, the model's, and what the chosen \a unit makes of it. */
+std::string
+explainGuess (double radius, double model_radius_mm, LengthUnit unit, double relative, bool head_sized)
+{
+  const std::string sizes = "the scan's RMS radius is " + numberText (radius) + " against the model's " +
+                            numberText (model_radius_mm) + " mm: ";
+  if (!head_sized)
+    return sizes + "it is not head-sized in any unit, so it is taken as mm";
+  return sizes + "taken as " + toString (unit) + " (x" + numberText (millimetresPer (unit), 6) + " to mm), it is " +
+         numberText (relative) + " times the model";
 }
 } // namespace
 
@@ -86,31 +128,17 @@ guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm)
     throw InvalidInputError ("guessLengthUnit: need at least 4 finite points, got " + std::to_string (points.cols ()) +
                              (points.allFinite () ? "" : " with non-finite coordinates"));
   if (!(model_radius_mm > 0.0) || !std::isfinite (model_radius_mm))
-    throw InvalidInputError ("guessLengthUnit: the model radius must be positive and finite");
+    throw InvalidInputError ("guessLengthUnit: the model radius must be positive and finite, got " +
+                             std::to_string (model_radius_mm));
   const double radius = robustRadius (points);
   LengthUnitGuess guess;
   guess.size_ratio = radius / model_radius_mm;
-  double best = std::numeric_limits<double>::infinity ();
-  for (LengthUnit unit : kUnits) {
-    const double distance = std::abs (std::log10 (guess.size_ratio * millimetresPer (unit))) +
-                            (unit == LengthUnit::inch ? 0.15 : 0.0);
-    if (distance < best) {
-      best = distance;
-      guess.unit = unit;
-    }
-  }
+  guess.unit = closestUnit (guess.size_ratio);
   const double relative = guess.size_ratio * millimetresPer (guess.unit);
-  std::ostringstream reason;
-  reason.precision (3);
-  reason << "the scan's RMS radius is " << radius << " against the model's " << model_radius_mm << " mm: ";
-  if (!(relative >= 0.3 && relative <= 10.0)) {
+  const bool head_sized = relative >= kMinHeadRatio && relative <= kMaxHeadRatio;
+  guess.reason = explainGuess (radius, model_radius_mm, guess.unit, relative, head_sized);
+  if (!head_sized)
     guess.unit = LengthUnit::millimetre;
-    reason << "it is not head-sized in any unit, so it is taken as mm";
-  }
-  else
-    reason << "in " << toString (guess.unit) << " (x" << millimetresPer (guess.unit) << ") it is " << relative
-           << " times the model";
-  guess.reason = reason.str ();
   return guess;
 }
 

@@ -1,23 +1,17 @@
+#include "../common/number_text.h"
+
 #include <morphreg/common/error.h>
 #include <morphreg/registration/fit_plausibility.h>
 
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
-#include <sstream>
 
 namespace morphreg
 {
 namespace
 {
-std::string
-number (double value)
-{
-  std::ostringstream text;
-  text.precision (3);
-  text << value;
-  return text.str ();
-}
+using detail::numberText;
 
 /** Smallest over largest principal spread of \a points. */
 double
@@ -45,24 +39,24 @@ checkFitPlausibility (double scale, const Eigen::Matrix3Xd& fitted_vertices, con
     result.failures.push_back (why);
   };
   if (!(scale >= settings.min_scale && scale <= settings.max_scale))
-    fail ("the head's scale " + number (scale) + " is outside what the model's population allows (" +
-          number (settings.min_scale) + "-" + number (settings.max_scale) + "): a wrong unit or not a head");
+    fail ("the head's scale " + numberText (scale) + " is outside what the model's population allows (" +
+          numberText (settings.min_scale) + "-" + numberText (settings.max_scale) + "): a wrong unit or not a head");
   const double share = static_cast<double> (vertex_residuals.array ().isFinite ().count ()) /
                        static_cast<double> (vertex_residuals.size ());
   if (share < settings.min_correspondence_share)
-    fail ("only " + number (100.0 * share) + " % of the model has correspondences on the scan (at least " +
-          number (100.0 * settings.min_correspondence_share) + " % needed)");
+    fail ("only " + numberText (100.0 * share) + " % of the model has correspondences on the scan (at least " +
+          numberText (100.0 * settings.min_correspondence_share) + " % needed)");
   const double largest = coefficients_in_sigma.size () > 0 ? coefficients_in_sigma.cwiseAbs ().maxCoeff () : 0.0;
   if (largest > settings.max_sigma)
-    fail ("a shape coefficient is " + number (largest) + " standard deviations from the mean (at most " +
-          number (settings.max_sigma) + ")");
+    fail ("a shape coefficient is " + numberText (largest) + " standard deviations from the mean (at most " +
+          numberText (settings.max_sigma) + ")");
   const double thickness = thicknessRatio (fitted_vertices);
   if (thickness < settings.min_thickness_ratio)
-    fail ("the fitted head is collapsed or flat (thinnest over widest extent " + number (thickness) + ", at least " +
-          number (settings.min_thickness_ratio) + ")");
+    fail ("the fitted head is collapsed or flat (thinnest over widest extent " + numberText (thickness) +
+          ", at least " + numberText (settings.min_thickness_ratio) + ")");
   if (!(report.fitness_median <= settings.max_median_residual))
-    fail ("the fit lies " + number (report.fitness_median) + " mm from the scan (median; at most " +
-          number (settings.max_median_residual) + " mm): the model was not fitted onto the head");
+    fail ("the fit lies " + numberText (report.fitness_median) + " mm from the scan (median; at most " +
+          numberText (settings.max_median_residual) + " mm): the model was not fitted onto the head");
   if (report.divergence == IcpDivergence::prior_exceeded || report.divergence == IcpDivergence::unsolvable)
     fail ("the fit diverged: " + report.message);
   return result;

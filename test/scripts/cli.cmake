@@ -103,6 +103,7 @@ set(flat "")
 set(line "")
 set(same "")
 set(nan "")
+set(inf "")
 foreach(i RANGE 199)
   math(EXPR a "${i} % 20 * 5")
   math(EXPR b "${i} / 20 * 5")
@@ -116,12 +117,18 @@ foreach(i RANGE 199)
   list(APPEND line "${i} ${d} ${e}")
   list(APPEND same "1 2 3")
   list(APPEND nan "nan nan nan")
+  if(i EQUAL 17)
+    list(APPEND inf "inf 0 1")
+  else()
+    list(APPEND inf "${a} ${b} ${c}")
+  endif()
 endforeach()
-foreach(kind few flat line same nan)
+foreach(kind few flat line same nan inf)
   write_ascii_pcd(${cli_dir}/scan_${kind}.pcd "${${kind}}")
 endforeach()
 foreach(case "few;50 points, at least 100" "flat;the 200 points lie in a plane" "line;the 200 points are collinear"
-        "same;all 200 points are identical" "nan;the scan has no valid (finite) points")
+        "same;all 200 points are identical" "nan;the scan has no valid (finite) points"
+        "inf;point 17 is not finite (inf, 0, 1)")
   list(GET case 0 kind)
   list(GET case 1 text)
   morphreg_cli_expect_exit(RegisterRejectsScan_${kind} 1 "scan_${kind}.pcd: ${text}"
@@ -129,6 +136,18 @@ foreach(case "few;50 points, at least 100" "flat;the 200 points lie in a plane" 
   set_tests_properties(CliTest.RegisterRejectsScan_${kind} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 endforeach()
 morphreg_cli_expect_exit(RegisterBadUnitExits2 2 "--units" register --scan a.pcd --model b.h5 --units furlong)
+# The scan's unit: given (no rescaling, the report says "given"), or detected (a scan in metres, rescaled to mm).
+add_test(NAME CliTest.RegisterGivenUnitIsReported
+  COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|register|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--units|mm|--quiet|--out|${cli_dir}/units_mm.ply"
+          -DREPORT=${cli_dir}/units_mm.json -DUNITS=mm -DDETECTION=given -P ${cli_scripts}/check_register_units.cmake)
+set_tests_properties(CliTest.RegisterGivenUnitIsReported PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+set(scan_in_metres ${MORPHREG_SHARED_DATA_DIR}/mne_fsaverage_head/fsaverage_head.ply) # MNE's scalp, in metres
+if(EXISTS ${scan_in_metres})
+  add_test(NAME CliTest.RegisterDetectsAScanInMetres
+    COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|register|--scan|${scan_in_metres}|--model|${cli_dir}/small_model.h5|--quiet|--out|${cli_dir}/units_m.ply"
+            -DREPORT=${cli_dir}/units_m.json -DUNITS=m -DDETECTION=auto -P ${cli_scripts}/check_register_units.cmake)
+  set_tests_properties(CliTest.RegisterDetectsAScanInMetres PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+endif()
 # A fit that fails its checks exits 4, and its report is written and marked failed: a mm scan read as cm.
 add_test(NAME CliTest.RegisterFailedChecksExit4
   COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|register|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--units|cm|--quiet|--out|${cli_dir}/failed.ply"

@@ -38,13 +38,23 @@ struct LengthUnitGuess
 };
 
 /** \brief Guesses the unit of \a points (3 x N) from their size against a head model's, \a model_radius_mm (the RMS
- *  distance of the model mean's vertices from their centroid). The size is the RMS distance from the centroid of
- *  the 90 % of points nearest to the coordinate-wise median; in each unit it is compared with the model's, and the
- *  unit making the scan closest to the model's size (in log scale) wins, inches paying a 0.15 decade handicap (cm
- *  and inches differ by only 2.54; metric scans are far more common). A head alone is about 1x the model, a head
- *  with shoulders 1.5-2x, a face 0.5x: each lands on its true metric unit; a head with shoulders in inches is taken
- *  for cm (give the unit). A scan that is not within 0.3-10x the model in any unit is taken as mm, and the reason
- *  says so. Throws InvalidInputError for fewer than 4 or non-finite points, or a non-positive model radius.
+ *  distance of the model mean's vertices from their centroid, mm).
+ *
+ *  The scan's size is the RMS distance from their centroid of the 90 % of points nearest to the coordinate-wise
+ *  median (a few far outliers do not count); r = size / model_radius_mm. Read in unit u, the scan is
+ *  r * millimetresPer (u) times the model's size; the unit whose reading is closest in log10 to 1.4 wins (a head with
+ *  some neck or shoulders is about 1.4 times the model's RMS radius), inches paying 0.15 decades more (metric scans
+ *  are far more common, and cm and inches are only 2.54 apart). If even the best unit puts the scan outside 0.3-10
+ *  times the model, it is taken as mm and the reason says it is not head-sized in any unit.
+ *
+ *  Sizes recognised (the scan over the model in its true unit): mm 0.44-10, cm 0.74-4.4, inches 0.3-1.88, m 0.3-10.
+ *  Heads alone (0.7-1.1) and heads with neck and shoulders (about 1.5, e.g. the real 82k-point scan 1.55) are
+ *  recognised in every unit; a wider head-and-shoulders scan (over 1.88) in inches is taken for cm, and a face alone
+ *  (about 0.5) is recognised in mm and m but taken for inches in cm: give the unit in those cases.
+ *
+ *  \return the unit, r and one sentence with the numbers, e.g. "the scan's RMS radius is 0.128 against the model's
+ *  104 mm: taken as m (x1000 to mm), it is 1.23 times the model".
+ *  Throws InvalidInputError for fewer than 4 or non-finite points, or a non-positive model radius.
  */
 LengthUnitGuess
 guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm);

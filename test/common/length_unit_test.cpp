@@ -1,0 +1,167 @@
+// guessLengthUnit on head-sized point sets in every unit, the sizes each unit is recognised over, and the unit
+// symbols; the scan checks and the fit's plausibility checks are in test/icp/scan_checks_test.cpp.
+#include <morphreg/common/error.h>
+#include <morphreg/common/length_unit.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+using morphreg::LengthUnit;
+
+constexpr LengthUnit kUnits[] = {LengthUnit::millimetre, LengthUnit::centimetre, LengthUnit::metre, LengthUnit::inch};
+
+/** \a count points spread evenly over an ellipsoid of radii 80 (x, ear to ear), 100 (y, up) and 90 mm (z, front):
+ *  a bald head's size. */
+Eigen::Matrix3Xd
+ellipsoidHead (int count)
+{
+  Eigen::Matrix3Xd points (3, count);
+  const double golden_angle = M_PI * (3.0 - std::sqrt (5.0));
+  for (int i = 0; i < count; ++i) {
+    const double y = 1.0 - 2.0 * (i + 0.5) / count;
+    const double ring = std::sqrt (1.0 - y * y);
+    points.col (i) = Eigen::Vector3d (80.0 * ring * std::cos (golden_angle * i), 100.0 * y,
+                                      90.0 * ring * std::sin (golden_angle * i));
+  }
+  return points;
+}
+
+/** The head on a wider slab of shoulders below it (the top of a 400 x 120 mm slab, 100 mm under the chin), as a
+ *  head-and-shoulders scan sees it. */
+Eigen::Matrix3Xd
+headAndShoulders ()
+{
+  const Eigen::Matrix3Xd head = ellipsoidHead (3000);
+  std::vector<Eigen::Vector3d> shoulders;
+  for (double x = -200.0; x <= 200.0; x += 5.0)
+    for (double z = -60.0; z <= 60.0; z += 5.0)
+      shoulders.emplace_back (x, -200.0 - 0.002 * x * x, z);
+  Eigen::Matrix3Xd points (3, head.cols () + static_cast<Eigen::Index> (shoulders.size ()));
+  points << head, Eigen::Map<const Eigen::Matrix3Xd> (shoulders.front ().data (), 3,
+                                                      static_cast<Eigen::Index> (shoulders.size ()));
+  return points;
+}
+
+/** The RMS distance of the ellipsoid head from its centre: the model mean's radius in these tests. */
+double
+modelRadius ()
+{
+  return std::sqrt (ellipsoidHead (3000).colwise ().squaredNorm ().mean ());
+}
+
+TEST (UnitGuessTest, HeadAloneIsRecognisedInEveryUnit)
+{
+  const Eigen::Matrix3Xd head = ellipsoidHead (3000);
+  for (const LengthUnit unit : kUnits) {
+    const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (head / morphreg::millimetresPer (unit),
+                                                                       modelRadius ());
+    EXPECT_EQ (guess.unit, unit) << guess.reason;
+    EXPECT_NEAR (guess.size_ratio * morphreg::millimetresPer (unit), 0.95, 0.1) << guess.reason;
+  }
+}
+
+TEST (UnitGuessTest, HeadWithShouldersIsRecognisedInEveryUnit)
+{
+  const Eigen::Matrix3Xd scan = headAndShoulders ();
+  for (const LengthUnit unit : kUnits) {
+    const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (scan / morphreg::millimetresPer (unit),
+                                                                       modelRadius ());
+    EXPECT_EQ (guess.unit, unit) << guess.reason;
+    EXPECT_NEAR (guess.size_ratio * morphreg::millimetresPer (unit), 1.5, 0.2) << guess.reason;
+  }
+}
+
+TEST (UnitGuessTest, FarOutliersDoNotChangeTheGuess)
+{
+  Eigen::Matrix3Xd scan = ellipsoidHead (3000) / 1000.0; // metres
+  for (Eigen::Index i = 0; i < scan.cols (); i += 40)      // 2.5 % of the points 50 m away
+    scan.col (i) = Eigen::Vector3d (50.0, -30.0, 20.0);
+  const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (scan, modelRadius ());
+  EXPECT_EQ (guess.unit, LengthUnit::metre) << guess.reason;
+  EXPECT_NEAR (guess.size_ratio * 1000.0, 0.95, 0.1) << guess.reason;
+}
+
+TEST (UnitGuessTest, EachUnitIsRecognisedOverItsDocumentedSizes)
+{
+  // length_unit.h: the sizes (scan over model, in the scan's true unit) each unit is recognised over.
+  const std::vector<std::pair<LengthUnit, std::pair<double, double>>> ranges = {
+      {LengthUnit::millimetre, {0.45, 9.9}},
+      {LengthUnit::centimetre, {0.75, 4.4}},
+      {LengthUnit::metre, {0.31, 9.9}},
+      {LengthUnit::inch, {0.31, 1.87}}};
+  const Eigen::Matrix3Xd head = ellipsoidHead (1000);
+  const double head_radius = morphreg::guessLengthUnit (head, 1.0).size_ratio; // its robust radius, mm
+  for (const auto& [unit, range] : ranges)
+    for (int step = 0; step <= 20; ++step) {
+      const double size = range.first * std::pow (range.second / range.first, step / 20.0);
+      const morphreg::LengthUnitGuess guess =
+          morphreg::guessLengthUnit (head / morphreg::millimetresPer (unit), head_radius / size);
+      EXPECT_EQ (guess.unit, unit) << "size " << size << ": " << guess.reason;
+    }
+  // Beyond them: a face alone (half the model) in cm reads as inches, a scan 20 times the model as nothing.
+  EXPECT_EQ (morphreg::guessLengthUnit (head / 10.0, head_radius / 0.5).unit, LengthUnit::inch);
+  const morphreg::LengthUnitGuess huge = morphreg::guessLengthUnit (head, head_radius / 20.0);
+  EXPECT_EQ (huge.unit, LengthUnit::millimetre);
+  EXPECT_NE (huge.reason.find ("not head-sized in any unit"), std::string::npos) << huge.reason;
+}
+
+TEST (UnitGuessTest, ReasonGivesTheSizesAndTheUnit)
+{
+  const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (headAndShoulders () / 1000.0, modelRadius ());
+  ASSERT_EQ (guess.unit, LengthUnit::metre);
+  EXPECT_NE (guess.reason.find ("the scan's RMS radius is 0.1"), std::string::npos) << guess.reason;
+  EXPECT_NE (guess.reason.find ("against the model's 90."), std::string::npos) << guess.reason;
+  EXPECT_NE (guess.reason.find ("taken as m (x1000 to mm), it is 1."), std::string::npos) << guess.reason;
+}
+
+TEST (UnitGuessTest, BadInputIsReported)
+{
+  const auto message = [] (const Eigen::Matrix3Xd& points, double model_radius) -> std::string {
+    try {
+      morphreg::guessLengthUnit (points, model_radius);
+    }
+    catch (const morphreg::InvalidInputError& e) {
+      return e.what ();
+    }
+    return "";
+  };
+  EXPECT_NE (message (ellipsoidHead (3), 90.0).find ("at least 4 finite points, got 3"), std::string::npos);
+  Eigen::Matrix3Xd broken = ellipsoidHead (100);
+  broken (1, 50) = std::nan ("");
+  EXPECT_NE (message (broken, 90.0).find ("non-finite"), std::string::npos);
+  EXPECT_NE (message (ellipsoidHead (100), 0.0).find ("model radius must be positive"), std::string::npos);
+  EXPECT_NE (message (ellipsoidHead (100), std::nan ("")).find ("model radius"), std::string::npos);
+}
+
+TEST (LengthUnitSymbolTest, SymbolsRoundTripAndFactorsAreMillimetres)
+{
+  const std::vector<std::pair<std::string, double>> expected = {{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0},
+                                                                {"in", 25.4}};
+  for (const auto& [symbol, millimetres] : expected) {
+    const LengthUnit unit = morphreg::parseLengthUnit (symbol);
+    EXPECT_EQ (morphreg::toString (unit), symbol);
+    EXPECT_EQ (morphreg::millimetresPer (unit), millimetres);
+  }
+}
+
+TEST (LengthUnitSymbolTest, UnknownSymbolsNameTheTextAndTheChoices)
+{
+  for (const std::string bad : {"inch", "MM", "", "furlong"}) {
+    try {
+      morphreg::parseLengthUnit (bad);
+      ADD_FAILURE () << "'" << bad << "' was accepted";
+    }
+    catch (const morphreg::InvalidInputError& e) {
+      const std::string text = e.what ();
+      EXPECT_NE (text.find ("'" + bad + "'"), std::string::npos) << text;
+      EXPECT_NE (text.find ("mm, cm, m or in"), std::string::npos) << text;
+    }
+  }
+}
+
+} // namespace
