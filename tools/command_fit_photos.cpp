@@ -36,11 +36,13 @@ struct FitPhotosOptions
   std::string profile, frontal, model, photo, truth, report;
   std::string out = "fitted.ply";
   std::string approach = "joint";
-  double lambda1 = 1.0;
-  double lambda2 = 1.0;
-  std::vector<int> components{10};
-  double frontal_weight = 4.0;
-  double sagittal_weight = 1.0;
+  double lambda1 = TwoViewFitting::kDefaultSmoothnessWeight;
+  double lambda2 = TwoViewFitting::kDefaultShapePriorWeight;
+  std::vector<int> components{TwoViewFitting::kDefaultComponents};
+  double coefficient_limit = TwoViewFitting::kDefaultCoefficientLimit;
+  double frontal_weight = TwoViewFitting::kDefaultFrontalWeight;
+  double contour_weight = 0.0;
+  double sagittal_weight = TwoViewFitting::kDefaultSagittalWeight;
   double colour_max = 5.0;
   bool quiet = false;
 };
@@ -111,7 +113,9 @@ fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model
                                                                   : model->firstComponents (options.components));
   fitting.setSmoothnessWeight (options.lambda1);
   fitting.setShapePriorWeight (options.lambda2);
+  fitting.setCoefficientLimit (options.coefficient_limit);
   fitting.setFrontalWeight (options.frontal_weight);
+  fitting.setContourLandmarkWeight (options.contour_weight);
   fitting.setSagittalWeight (options.sagittal_weight);
   if (!options.quiet)
     std::cerr << "fitting " << options.model << " to " << options.profile
@@ -145,11 +149,21 @@ runFitPhotos (const FitPhotosOptions& options)
   if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
     report["warnings"].push_back ("a shape coefficient is beyond " + std::to_string (kCoefficientWarningSigma) +
                                   " standard deviations");
+  if (!fit.ignored_landmarks.empty ()) {
+    std::string ids;
+    for (const std::string& id : fit.ignored_landmarks)
+      ids += (ids.empty () ? "" : ", ") + id;
+    report["warnings"].push_back ("outline landmarks left out: " + ids);
+    std::cerr << "fit-photos: warning: " << options.frontal << ": the outline landmarks " << ids
+              << " mark no fixed point of the face and are left out (--contour-weight to use them)\n";
+  }
   report["settings"] = {{"approach", options.approach},
                         {"components", options.components},
                         {"lambda1", options.lambda1},
                         {"lambda2", options.lambda2},
+                        {"coefficient_limit_sigma", options.coefficient_limit},
                         {"frontal_weight", options.frontal_weight},
+                        {"contour_weight", options.contour_weight},
                         {"sagittal_weight", options.sagittal_weight}};
   std::cout << "fit (" << options.approach << (fit.returned == options.approach || fit.returned == "tps_icp"
                                                      ? std::string ()
@@ -214,8 +228,14 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--components", options->components,
                        "shape components per region: one count for all, or one per region")
       ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command->add_option ("--coefficient-limit", options->coefficient_limit,
+                       "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
+      ->check (CLI::PositiveNumber)->capture_default_str ();
   command->add_option ("--frontal-weight", options->frontal_weight, "weight of each frontal landmark's rows (> 0)")
       ->check (CLI::PositiveNumber)->capture_default_str ();
+  command->add_option ("--contour-weight", options->contour_weight,
+                       "weight of the frontal outline landmarks (jaw, chin, neck, head contour; 0 leaves them out)")
+      ->check (CLI::NonNegativeNumber)->capture_default_str ();
   command->add_option ("--sagittal-weight", options->sagittal_weight,
                        "weight of the rows that keep the profile in the plane X = 0 (0 for a turned or tilted head)")
       ->check (CLI::NonNegativeNumber)->capture_default_str ();

@@ -64,6 +64,14 @@ frontalLandmarkIds ()
   return std::vector<std::string> (ids.begin (), ids.begin () + 40);
 }
 
+bool
+isFrontalContourLandmarkId (const std::string& id)
+{
+  const auto& ids = knownLandmarkIds ();
+  const auto contour_begin = ids.begin () + 28, contour_end = ids.begin () + 40; // LANDMARKS.md 29-40
+  return id == "chin" || std::find (contour_begin, contour_end, id) != contour_end;
+}
+
 LandmarkVertices
 frontalLandmarks (const LandmarkVertices& landmarks)
 {

@@ -29,10 +29,12 @@ objective (const ShapeProblem& problem, const PoseShapeState& state, const std::
 } // namespace
 
 ShapeProblem::ShapeProblem (const MorphableModel& model, const ComponentSelection& selection,
-                            std::vector<int> constrained, double lambda1, double lambda2, ShapePrior kind)
+                            std::vector<int> constrained, double lambda1, double lambda2, ShapePrior kind,
+                            double limit)
   : vertices (std::move (constrained)),
     prior (shapePriorMatrix (model, selection, lambda1, lambda2, kind)),
-    sigma (model.variances (selection).cwiseSqrt ())
+    sigma (model.variances (selection).cwiseSqrt ()),
+    coefficient_limit (limit)
 {
   mean.resize (3, static_cast<Eigen::Index> (vertices.size ()));
   for (size_t k = 0; k < vertices.size (); ++k) {
@@ -100,6 +102,10 @@ poseShapeStep (const ShapeProblem& problem, PoseShapeState& state, const std::ve
     updateSimilarity (d.head<7> (), candidate.log_scale, candidate.rotation, candidate.translation);
     if (shape) {
       candidate.coefficients += d.tail (p);
+      if (std::isfinite (problem.coefficient_limit)) {
+        const Eigen::VectorXd bound = problem.coefficient_limit * problem.sigma;
+        candidate.coefficients = candidate.coefficients.cwiseMin (bound).cwiseMax (-bound);
+      }
       candidate.vertices = problem.vertexPositions (candidate.coefficients);
     }
     if (objective (problem, candidate, rows, inverse_scale2, shape) <= current) {

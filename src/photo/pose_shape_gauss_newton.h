@@ -15,7 +15,8 @@ namespace detail
 struct ShapeProblem
 {
   ShapeProblem (const MorphableModel& model, const ComponentSelection& selection, std::vector<int> vertices,
-                double lambda1, double lambda2, ShapePrior prior);
+                double lambda1, double lambda2, ShapePrior prior,
+                double coefficient_limit);
 
   /** The constrained vertices (3 x K, model frame) for \a coefficients. */
   Eigen::Matrix3Xd
@@ -26,6 +27,7 @@ struct ShapeProblem
   std::vector<Eigen::Matrix3Xd> shape_rows; ///< M_i of each constrained vertex (3 x P)
   Eigen::MatrixXd prior;                    ///< lambda_1^2 Gamma^T Gamma + lambda_2^2 Lambda^2
   Eigen::VectorXd sigma;                    ///< prior standard deviations of the coefficients
+  double coefficient_limit; ///< |c_i| <= coefficient_limit sigma_i after each step (infinity: no limit)
 };
 
 /** The unknowns X = s R v + t, with the constrained vertices v of the current shape (model frame). */
@@ -57,8 +59,8 @@ struct WeightedRow
 constexpr double kPoseShapeMotionEpsilon = 1e-6;
 
 /** One Gauss-Newton update of \a state on fixed \a rows (squared residuals weighted by 1 / s^2 of \a state, so in
- *  model mm^2), with the shape prior and coefficients when \a shape, and backtracking on that cost. False if the
- *  normal equations cannot be solved.
+ *  model mm^2), with the shape prior and coefficients when \a shape (projected onto the coefficient limit's box), and
+ *  backtracking on that cost. False if the normal equations cannot be solved.
  */
 bool
 poseShapeStep (const ShapeProblem& problem, PoseShapeState& state, const std::vector<WeightedRow>& rows, bool shape);

@@ -3,6 +3,7 @@
 
 #include <morphreg/io/json_file.h>
 
+#include <cmath>
 
 namespace morphreg
 {
@@ -34,6 +35,19 @@ TwoViewFit::maxCoefficientSigma () const
   return coefficient_sigmas.size () > 0 ? coefficient_sigmas.cwiseAbs ().maxCoeff () : 0.0;
 }
 
+double
+TwoViewFit::shapeDistance () const
+{
+  return coefficient_sigmas.norm ();
+}
+
+bool
+isPlausibleShape (const Eigen::VectorXd& standardised)
+{
+  const double p = static_cast<double> (standardised.size ());
+  return standardised.squaredNorm () <= p + 3.0 * std::sqrt (2.0 * p);
+}
+
 nlohmann::json
 twoViewFitJson (const TwoViewFit& fit)
 {
@@ -53,6 +67,9 @@ twoViewFitJson (const TwoViewFit& fit)
       {"tps_rounds", fit.tps_rounds},
       {"max_coefficient_sigma", fit.maxCoefficientSigma ()},
       {"coefficients_beyond_3_sigma", (fit.coefficient_sigmas.array ().abs () > 3.0).count ()},
+      {"shape_distance_sigma", fit.shapeDistance ()},
+      {"plausible_shape", isPlausibleShape (fit.coefficient_sigmas)},
+      {"ignored_landmarks", fit.ignored_landmarks},
       {"final", iterationJson (fit.final_residuals)},
       {"history", history}};
 }

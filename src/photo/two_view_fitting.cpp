@@ -1,6 +1,7 @@
 #include "pose_shape_gauss_newton.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/common/landmarks.h>
 #include <morphreg/photo/polyline_2d.h>
 #include <morphreg/photo/two_view_fitting.h>
 #include <morphreg/registration/thin_plate_spline.h>
@@ -27,11 +28,20 @@ using detail::PoseShapeState;
 using detail::ShapeProblem;
 using detail::WeightedRow;
 
-/** The frontal landmarks' model vertices and normalised (X, Y) positions. */
+/** The frontal landmarks used: model vertices, normalised (X, Y) positions and row weights; and the contour landmarks
+ *  left out (weight 0). */
 struct FrontalTargets
 {
   std::vector<int> vertices;
   std::vector<Eigen::Vector2d> points;
+  std::vector<double> weights;
+  std::vector<std::string> ignored;
+
+  double
+  totalWeight () const
+  {
+    return std::accumulate (weights.begin (), weights.end (), 0.0);
+  }
 };
 
 /** The rows of a two-view fit: the profile-line vertices (the first profile_count of shape.vertices), then the
@@ -42,7 +52,7 @@ struct TwoViewProblem
   ShapeProblem shape;
   Eigen::Index profile_count;
   std::vector<Eigen::Vector2d> landmarks; ///< normalised (X, Y) of shape.vertices[profile_count + k]
-  double frontal_weight;
+  std::vector<double> landmark_weights;    ///< the row weight of each landmark
   double sagittal_weight;
   double max_distance;
 };
@@ -63,20 +73,31 @@ requireSpreadLandmarks (const std::vector<Eigen::Vector2d>& points)
     throw InvalidInputError ("TwoViewFitting: the frontal landmarks are collinear (they fix no pose)");
 }
 
-/** The frontal landmarks, validated against \a model: every id a model landmark, at least 3, spread out. */
+/** The frontal landmarks, validated against \a model: every id a model landmark; weighted \a weight, or
+ *  \a contour_weight for outline points (isFrontalContourLandmarkId; left out when it is 0); at least 3 used, spread
+ *  out. */
 FrontalTargets
-frontalTargets (const MorphableModel& model, const FrontalView& frontal)
+frontalTargets (const MorphableModel& model, const FrontalView& frontal, double weight, double contour_weight)
 {
   FrontalTargets targets;
   for (const auto& landmark : frontal.normalisedLandmarks ()) {
     if (!model.landmarks ().count (landmark.first))
       throw InvalidInputError ("TwoViewFitting: frontal landmark '" + landmark.first + "' is not a model landmark");
+    const bool contour = isFrontalContourLandmarkId (landmark.first);
+    if (contour && contour_weight == 0.0) {
+      targets.ignored.push_back (landmark.first);
+      continue;
+    }
     targets.vertices.push_back (model.landmarkVertex (landmark.first));
     targets.points.push_back (landmark.second);
+    targets.weights.push_back (contour ? contour_weight : weight);
   }
   if (targets.points.size () < 3)
     throw InvalidInputError ("TwoViewFitting: " + std::to_string (targets.points.size ()) +
-                             " frontal landmarks; at least 3 are needed");
+                             " frontal landmarks used; at least 3 are needed" +
+                             (targets.ignored.empty () ? std::string ()
+                                                       : " (outline landmarks such as '" + targets.ignored.front () +
+                                                             "' are left out: setContourLandmarkWeight)"));
   requireSpreadLandmarks (targets.points);
   return targets;
 }
@@ -89,6 +110,22 @@ onProblem (PoseShapeState state, const ShapeProblem& problem)
   return state;
 }
 
+/** Whether the projected profile-line vertex \a k (columns of \a profile) is hidden from its silhouette point
+ *  \a closest by the profile line itself: another vertex of the line lies clearly nearer to that point (within 3/4 of
+ *  its distance; on an outline the vertex nearest to its silhouette point is itself). The silhouette shows only the
+ *  outline, so vertices inside a notch (the lips' inner edges, the mouth's cleft) or behind another part of the line
+ *  have no silhouette point.
+ */
+bool
+hiddenFromSilhouette (const Eigen::Matrix2Xd& profile, Eigen::Index k, const Eigen::Vector2d& closest)
+{
+  const double limit = 0.5625 * (profile.col (k) - closest).squaredNorm ();
+  for (Eigen::Index j = 0; j < profile.cols (); ++j)
+    if (j != k && (profile.col (j) - closest).squaredNorm () < limit)
+      return true;
+  return false;
+}
+
 /** The rows at \a state: profile correspondences (closest silhouette point within the distance), then the frontal
  *  landmarks; fills \a residuals with their in-image RMS distances in model mm.
  */
@@ -98,14 +135,18 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
 {
   const Eigen::Matrix3Xd posed = state.posed ();
   const double mm = 1.0 / state.scale ();
+  Eigen::Matrix2Xd profile (2, problem.profile_count);
+  profile.row (0) = posed.row (2).head (problem.profile_count);
+  profile.row (1) = posed.row (1).head (problem.profile_count);
   std::vector<WeightedRow> rows;
   double profile_sum = 0.0;
   for (Eigen::Index k = 0; k < problem.profile_count; ++k) {
-    const Eigen::Vector2d projected (posed (2, k), posed (1, k));
+    const Eigen::Vector2d projected = profile.col (k);
     const Eigen::Vector2d closest = silhouette.closestPoint (projected);
     const double distance = (closest - projected).norm () * mm;
-    if (!(distance <= problem.max_distance) || (distance > kEndSlack && silhouette.isEnd (closest)))
-      continue; // too far, or beyond the end of a silhouette that shows part of the profile
+    if (!(distance <= problem.max_distance) || (distance > kEndSlack && silhouette.isEnd (closest)) ||
+        hiddenFromSilhouette (profile, k, closest))
+      continue; // too far, beyond the end of a silhouette that shows part of the profile, or not on the outline
     rows.push_back ({k, Eigen::Vector3d (0.0, closest.y (), closest.x ()),
                      Eigen::Vector3d (problem.sagittal_weight, 1.0, 1.0)});
     profile_sum += distance * distance;
@@ -116,8 +157,8 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
   for (size_t l = 0; l < problem.landmarks.size (); ++l) {
     const Eigen::Index slot = problem.profile_count + static_cast<Eigen::Index> (l);
     const Eigen::Vector2d& marked = problem.landmarks[l];
-    rows.push_back ({slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0),
-                     Eigen::Vector3d (problem.frontal_weight, problem.frontal_weight, 0.0)});
+    const double weight = problem.landmark_weights[l];
+    rows.push_back ({slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0), Eigen::Vector3d (weight, weight, 0.0)});
     landmark_sum += (marked - posed.col (slot).head<2> ()).squaredNorm () * mm * mm;
   }
   residuals.landmark_rms =
@@ -125,11 +166,12 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
   return rows;
 }
 
-/** The joint fit's data cost per row (model mm^2) of \a residuals: profile and \a weight times landmark squares. */
+/** The joint fit's data cost per row (model mm^2) of \a residuals: profile squares and the landmark squares with
+ *  their total weight \a landmark_weight. */
 double
-jointCost (const TwoViewIteration& residuals, size_t landmarks, double weight)
+jointCost (const TwoViewIteration& residuals, double landmark_weight)
 {
-  const double profile = residuals.profile_correspondences, marked = weight * static_cast<double> (landmarks);
+  const double profile = residuals.profile_correspondences, marked = landmark_weight;
   return (residuals.profile_rms * residuals.profile_rms * profile +
           residuals.landmark_rms * residuals.landmark_rms * marked) /
          (profile + marked);
@@ -138,20 +180,23 @@ jointCost (const TwoViewIteration& residuals, size_t landmarks, double weight)
 /** The rows of one TPS-ICP round, for every model vertex (\a state holds them all): the posed model warped by a 3D
  *  thin plate spline (in mm) that moves each frontal landmark vertex to its mark (X, Y) at its current depth (the mean
  *  mark of landmarks sharing a vertex) and each other profile-line vertex with a correspondence in \a image_rows to
- *  its silhouette point (Z, Y) at its current X; the landmark rows get \a frontal_weight.
+ *  its silhouette point (Z, Y) at its current X; the landmark rows keep their weights.
  */
 std::vector<WeightedRow>
 tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& image_rows,
-               const PoseShapeState& state, double frontal_weight)
+               const PoseShapeState& state)
 {
   const double s = state.scale ();
   const Eigen::Matrix3Xd posed = state.posed ();
   std::map<int, Eigen::Vector3d> marked; // landmark vertex -> sum of its marks (X, Y) and their count
   std::map<int, Eigen::Vector3d> anchors; // vertex -> its target
+  std::map<int, double> weights;          // landmark vertex -> its row weight
   for (const WeightedRow& row : image_rows) {
     const int vertex = two_view.shape.vertices[row.slot];
-    if (row.slot >= two_view.profile_count)
+    if (row.slot >= two_view.profile_count) {
       marked.emplace (vertex, Eigen::Vector3d::Zero ()).first->second += Eigen::Vector3d (row.target.x (), row.target.y (), 1.0);
+      weights[vertex] = std::max (weights[vertex], row.weight.x ());
+    }
     else
       anchors[vertex] = Eigen::Vector3d (posed (0, vertex), row.target.y (), row.target.z ());
   }
@@ -172,7 +217,7 @@ tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& i
   for (Eigen::Index i = 0; i < warped.cols (); ++i)
     rows.push_back ({i, warped.col (i), Eigen::Vector3d::Ones ()});
   for (const auto& entry : marked)
-    rows.push_back ({entry.first, anchors.at (entry.first), Eigen::Vector3d::Constant (frontal_weight)});
+    rows.push_back ({entry.first, anchors.at (entry.first), Eigen::Vector3d::Constant (weights.at (entry.first))});
   return rows;
 }
 
@@ -271,7 +316,7 @@ TwoViewFitting::TwoViewFitting (MorphableModel::ConstPtr model) : model_ (std::m
     throw InvalidInputError ("TwoViewFitting: the model has no profile line (MorphableModel::setProfileLine)");
   if (!model_->landmarks ().count ("nose_tip"))
     throw InvalidInputError ("TwoViewFitting: the model has no nose_tip landmark (it centres the photos)");
-  selection_ = model_->firstComponents (10);
+  selection_ = model_->firstComponents (kDefaultComponents);
 }
 
 void
@@ -295,9 +340,24 @@ TwoViewFitting::setShapePriorWeight (double lambda2, ShapePrior prior)
 }
 
 void
+TwoViewFitting::setCoefficientLimit (double sigmas)
+{
+  if (!(sigmas > 0.0)) // NaN included; infinity is no limit
+    throw InvalidInputError ("TwoViewFitting: the coefficient limit must be > 0 standard deviations (infinity for "
+                             "none), got " + std::to_string (sigmas));
+  coefficient_limit_ = sigmas;
+}
+
+void
 TwoViewFitting::setFrontalWeight (double weight)
 {
   frontal_weight_ = checkedSetting (weight, false, "the frontal weight");
+}
+
+void
+TwoViewFitting::setContourLandmarkWeight (double weight)
+{
+  contour_weight_ = checkedSetting (weight, true, "the contour landmark weight");
 }
 
 void
@@ -336,21 +396,30 @@ TwoViewFitting::fitJoint (const ProfileView& profile, const FrontalView& frontal
   return fit (profile, &frontal);
 }
 
+ShapeProblem
+TwoViewFitting::shapeProblem (std::vector<int> vertices) const
+{
+  return ShapeProblem (*model_, selection_, std::move (vertices), lambda1_, lambda2_, prior_, coefficient_limit_);
+}
+
 TwoViewFit
 TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const
 {
-  const FrontalTargets targets = frontalTargets (*model_, frontal);
+  const FrontalTargets targets = frontalTargets (*model_, frontal, frontal_weight_, contour_weight_);
   TwoViewFit result = fitProfile (profile);
+  result.ignored_landmarks = targets.ignored;
   // The error that decides when to stop: the image residuals of the joint fit's rows.
   std::vector<int> two_view_vertices = model_->profileLine ();
   two_view_vertices.insert (two_view_vertices.end (), targets.vertices.begin (), targets.vertices.end ());
-  const TwoViewProblem two_view{
-      ShapeProblem (*model_, selection_, two_view_vertices, lambda1_, lambda2_, prior_),
-      static_cast<Eigen::Index> (model_->profileLine ().size ()), targets.points, frontal_weight_, sagittal_weight_,
-      max_distance_};
+  const TwoViewProblem two_view{shapeProblem (two_view_vertices),
+                                static_cast<Eigen::Index> (model_->profileLine ().size ()),
+                                targets.points,
+                                targets.weights,
+                                sagittal_weight_,
+                                max_distance_};
   std::vector<int> all (static_cast<size_t> (model_->numVertices ()));
   std::iota (all.begin (), all.end (), 0);
-  const ShapeProblem whole (*model_, selection_, all, lambda1_, lambda2_, prior_);
+  const ShapeProblem whole = shapeProblem (all);
   const Polyline2d silhouette (profile.normalisedSilhouette ());
 
   PoseShapeState state;
@@ -366,16 +435,16 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
     iteration.stage = TwoViewStage::tps_icp;
     const std::vector<WeightedRow> image_rows =
         currentRows (two_view, silhouette, onProblem (state, two_view.shape), iteration);
-    const double error = jointCost (iteration, targets.points.size (), frontal_weight_);
-    if (!(error < best_error))
-      break;
+    const double error = jointCost (iteration, targets.totalWeight ());
+    if (!(error < best_error) || !isPlausibleShape (state.coefficients.cwiseQuotient (whole.sigma)))
+      break; // no better in the photos, or a head the model's population does not hold
     best = state;
     best_error = error;
     result.tps_rounds = round;
     result.history.push_back (iteration);
     if (round == kTpsIcpRounds)
       break;
-    const std::vector<WeightedRow> rows = tpsTargetRows (two_view, image_rows, state, frontal_weight_);
+    const std::vector<WeightedRow> rows = tpsTargetRows (two_view, image_rows, state);
     for (int it = 0; it < shape_iterations_; ++it) {
       const Eigen::Matrix3Xd before = state.posed ();
       if (!detail::poseShapeStep (whole, state, rows, selection_.total () > 0))
@@ -397,13 +466,13 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
   std::vector<int> vertices = model_->profileLine ();
   FrontalTargets targets;
   if (frontal) {
-    targets = frontalTargets (*model_, *frontal);
+    targets = frontalTargets (*model_, *frontal, frontal_weight_, contour_weight_);
     vertices.insert (vertices.end (), targets.vertices.begin (), targets.vertices.end ());
   }
-  const TwoViewProblem problem{ShapeProblem (*model_, selection_, vertices, lambda1_, lambda2_, prior_),
+  const TwoViewProblem problem{shapeProblem (vertices),
                                static_cast<Eigen::Index> (model_->profileLine ().size ()),
                                targets.points,
-                               frontal_weight_,
+                               targets.weights,
                                sagittal_weight_,
                                max_distance_};
   const Eigen::Matrix2Xd silhouette_points = profile.normalisedSilhouette ();
@@ -433,6 +502,7 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
   currentRows (problem, silhouette, state, result.final_residuals);
   result.selection = selection_;
   result.returned = frontal ? "joint" : "profile";
+  result.ignored_landmarks = targets.ignored;
   storeState (*model_, state, result);
   return result;
 }

@@ -101,10 +101,14 @@ expectPose (const TwoViewFit& fit, const SimulatedPhotos& photos)
 class PhotoFittingTest : public ::testing::Test
 {
 public:
+  /** The default fitting, except that the outline landmarks (jaw, chin, neck, head contour) count like the others:
+   *  the simulator projects fixed vertices for them, which a real photo's outline is not. */
   static TwoViewFitting
   fitting ()
   {
-    return TwoViewFitting (morphreg::test::photoTestModel ().model);
+    TwoViewFitting fitting (morphreg::test::photoTestModel ().model);
+    fitting.setContourLandmarkWeight (TwoViewFitting::kDefaultFrontalWeight);
+    return fitting;
   }
 
   /** A copy of the test model whose landmarks or profile line can be changed. */
@@ -345,6 +349,96 @@ TEST_F (PhotoFittingTest, FrontalLandmarksMustBeModelLandmarksAndSpreadOut)
   expectInvalid ([&] { fitting ().fitTpsIcp (photos.profile, frontal (collinear)); }, "collinear");
 }
 
+TEST_F (PhotoFittingTest, OutlineLandmarksAreLeftOutByDefaultAndListed)
+{
+  const SimulatedPhotos photos = photograph (unseenHead (0), 100);
+  TwoViewFitting defaults (morphreg::test::photoTestModel ().model);
+  const TwoViewFit fit = defaults.fitJoint (photos.profile, photos.frontal);
+  std::vector<std::string> expected;
+  for (const auto& landmark : photos.frontal.landmarks ())
+    if (morphreg::isFrontalContourLandmarkId (landmark.first))
+      expected.push_back (landmark.first);
+  ASSERT_FALSE (expected.empty ());
+  EXPECT_EQ (fit.ignored_landmarks, expected);
+  EXPECT_TRUE (fitting ().fitJoint (photos.profile, photos.frontal).ignored_landmarks.empty ());
+  EXPECT_EQ (defaults.fitTpsIcp (photos.profile, photos.frontal).ignored_landmarks, expected);
+  EXPECT_EQ (twoViewFitJson (fit).at ("ignored_landmarks").get<std::vector<std::string>> (), expected);
+  EXPECT_TRUE (morphreg::isFrontalContourLandmarkId ("chin"));
+  EXPECT_TRUE (morphreg::isFrontalContourLandmarkId ("left_head_contour"));
+  EXPECT_FALSE (morphreg::isFrontalContourLandmarkId ("nose_tip"));
+  EXPECT_FALSE (morphreg::isFrontalContourLandmarkId ("left_tragus"));
+
+  // Outline landmarks alone (plus the nose tip) leave fewer than 3 to fit: the error says why.
+  const morphreg::LandmarkPixels& marked = photos.frontal.landmarks ();
+  const morphreg::LandmarkPixels outline = {
+      {"nose_tip", marked.at ("nose_tip")}, {"right_jaw", marked.at ("right_jaw")}, {"left_jaw", marked.at ("left_jaw")}};
+  expectInvalid ([&] { defaults.fitJoint (photos.profile, morphreg::FrontalView (1000, 1200, outline)); },
+                 "outline landmarks such as 'left_jaw'");
+}
+
+TEST_F (PhotoFittingTest, CoefficientsStayWithinTheLimit)
+{
+  const SimulatedPhotos photos = photograph (unseenHead (1), 101);
+  for (const double limit : {0.5, 1.0}) {
+    TwoViewFitting limited = fitting ();
+    limited.setCoefficientLimit (limit);
+    for (const TwoViewFit& fit : {limited.fitJoint (photos.profile, photos.frontal),
+                                  limited.fitTpsIcp (photos.profile, photos.frontal)}) {
+      EXPECT_LE (fit.maxCoefficientSigma (), limit + 1e-9) << fit.returned;
+      EXPECT_GT (fit.maxCoefficientSigma (), 0.5 * limit) << fit.returned << ": the limit should be reached here";
+    }
+  }
+  TwoViewFitting unlimited = fitting ();
+  unlimited.setCoefficientLimit (std::numeric_limits<double>::infinity ());
+  EXPECT_GT (unlimited.fitJoint (photos.profile, photos.frontal).maxCoefficientSigma (), 1.0);
+}
+
+TEST (PlausibleShapeTest, ChiSquareBoundOnTheStandardisedCoefficients)
+{
+  // p = 8: the bound on the squared norm is 8 + 3 * 4 = 20.
+  EXPECT_TRUE (morphreg::isPlausibleShape (Eigen::VectorXd::Zero (8)));
+  EXPECT_TRUE (morphreg::isPlausibleShape (Eigen::VectorXd::Constant (8, std::sqrt (19.9 / 8.0))));
+  EXPECT_FALSE (morphreg::isPlausibleShape (Eigen::VectorXd::Constant (8, std::sqrt (20.1 / 8.0))));
+  TwoViewFit fit;
+  fit.coefficient_sigmas = Eigen::Vector2d (3.0, 4.0);
+  EXPECT_DOUBLE_EQ (fit.shapeDistance (), 5.0);
+}
+
+TEST_F (PhotoFittingTest, ProfileVerticesHiddenInsideTheOutlineGetNoCorrespondence)
+{
+  // Vertices 6-15 mm behind the face's profile (in the profile view), at the mouth's height, added to the
+  // profile line (like ICT's inner lips): they lie inside the outline, so the silhouette must give them nothing.
+  const SimulatedPhotos photos = photograph (unseenHead (0), 100);
+  const MorphableModel::ConstPtr& model = morphreg::test::photoTestModel ().model;
+  MorphableModel::Ptr notched = modelCopy ();
+  std::vector<int> line = model->profileLine ();
+  const Eigen::Vector3d tip = model->meanVertex (model->landmarkVertex ("nose_tip"));
+  const auto profileFront = [&] (double y) { // the profile line's front (largest z) within 2 mm of height y
+    double front = -1e9;
+    for (const int v : model->profileLine ())
+      if (std::abs (model->meanVertex (v).y () - y) < 2.0)
+        front = std::max (front, model->meanVertex (v).z ());
+    return front;
+  };
+  int hidden = 0;
+  for (int v = 0; v < model->numVertices () && hidden < 30; ++v) {
+    const Eigen::Vector3d p = model->meanVertex (v);
+    const double depth = p.y () < tip.y () - 15.0 && p.y () > tip.y () - 35.0 ? profileFront (p.y ()) - p.z () : 0.0;
+    if (depth > 6.0 && depth < 15.0 && std::find (line.begin (), line.end (), v) == line.end ()) {
+      line.push_back (v);
+      ++hidden;
+    }
+  }
+  ASSERT_EQ (hidden, 30);
+  notched->setProfileLine (line);
+  TwoViewFitting with_hidden (notched);
+  with_hidden.setContourLandmarkWeight (TwoViewFitting::kDefaultFrontalWeight);
+  const TwoViewFit plain = fitting ().fitProfile (photos.profile), notched_fit = with_hidden.fitProfile (photos.profile);
+  // Within the correspondence distance every one of them would pull without the outline rule; a few of the 30
+  // slip through (beside the mouth, where the line's own vertices are sparse: 3 on this head).
+  EXPECT_LE (notched_fit.final_residuals.profile_correspondences, plain.final_residuals.profile_correspondences + 3);
+}
+
 TEST_F (PhotoFittingTest, SilhouetteFarFromTheModelIsReported)
 {
   const SimulatedPhotos photos = photograph (unseenHead (0), 100);
@@ -366,6 +460,9 @@ TEST_F (PhotoFittingTest, SettingsAreValidated)
   expectInvalid ([&] { f.setMaxCorrespondenceDistance (0.0); }, "max correspondence distance");
   expectInvalid ([&] { f.setIterations (-1, 5); }, "iteration budgets");
   expectInvalid ([&] { f.setComponentSelection (morphreg::ComponentSelection ({1, 2})); }, "TwoViewFitting");
+  expectInvalid ([&] { f.setCoefficientLimit (0.0); }, "coefficient limit");
+  expectInvalid ([&] { f.setCoefficientLimit (std::nan ("")); }, "coefficient limit");
+  expectInvalid ([&] { f.setContourLandmarkWeight (-1.0); }, "contour landmark weight");
   f.setSagittalWeight (0.0);
   const SimulatedPhotos photos = photograph (unseenHead (0), 100);
   expectInvalid ([&] { f.fitProfile (photos.profile); }, "sagittal weight is 0");

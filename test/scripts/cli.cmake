@@ -252,6 +252,25 @@ add_test(NAME CliTest.FitPhotosProfileNeedsNoFrontal
 set_tests_properties(CliTest.FitPhotosProfileNeedsNoFrontal PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
   PASS_REGULAR_EXPRESSION "fit \\(profile\\): [0-9]+ iterations, profile RMS [0-9.]+ mm over [0-9]+ profile-line vertices;"
   FAIL_REGULAR_EXPRESSION "landmark RMS")
+# The synthetic frontal photos mark the jaw, chin, neck and head contour: left out (with a warning) unless
+# --contour-weight gives them a weight; the coefficient limit must be > 0.
+add_test(NAME CliTest.FitPhotosLeavesOutOutlineLandmarks
+  COMMAND morphreg_cli fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
+          --frontal ${cli_dir}/small/photo_0_frontal.json --report ${cli_dir}/photos_outline.json
+          --out ${cli_dir}/photos_outline.ply)
+set_tests_properties(CliTest.FitPhotosLeavesOutOutlineLandmarks PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  PASS_REGULAR_EXPRESSION "photo_0_frontal.json: the outline landmarks .*chin.* are left out")
+add_test(NAME CliTest.FitPhotosContourWeightUsesOutlineLandmarks
+  COMMAND morphreg_cli fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
+          --frontal ${cli_dir}/small/photo_0_frontal.json --contour-weight 1 --coefficient-limit 2
+          --report ${cli_dir}/photos_contour.json --out ${cli_dir}/photos_contour.ply)
+set_tests_properties(CliTest.FitPhotosContourWeightUsesOutlineLandmarks PROPERTIES
+  FIXTURES_REQUIRED "cli_small;cli_model" PASS_REGULAR_EXPRESSION "wrote .*photos_contour.ply"
+  FAIL_REGULAR_EXPRESSION "left out;largest coefficient [2-9]\\.[0-9]*[1-9]")
+morphreg_cli_expect_exit(FitPhotosCoefficientLimitMustBePositive 2 "--coefficient-limit"
+  fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
+  --frontal ${cli_dir}/small/photo_0_frontal.json --coefficient-limit 0 --out ${cli_dir}/bad.ply)
+set_tests_properties(CliTest.FitPhotosCoefficientLimitMustBePositive PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 morphreg_cli_expect_exit(FitPhotosJointNeedsFrontal 1 "--approach joint needs --frontal"
   fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json --out ${cli_dir}/bad.ply)
 # Bad annotations: a profile facing left, a silhouette of 9 points, frontal landmarks without the nose tip.

@@ -32,6 +32,13 @@ using LandmarkVertices = std::map<std::string, int>;
 std::vector<std::string>
 frontalLandmarkIds ();
 
+/** \brief Whether \a id is a point of a frontal photo's outline rather than a fixed point of the face: the jaw, chin,
+ *  neck and head-contour ids (LANDMARKS.md 29-40) and the menton `chin`. Where the outline runs over the head depends
+ *  on the head's shape and pose, so no one vertex of a model marks it.
+ */
+bool
+isFrontalContourLandmarkId (const std::string& id);
+
 /** \brief The entries of \a landmarks whose id is one of frontalLandmarkIds(). */
 LandmarkVertices
 frontalLandmarks (const LandmarkVertices& landmarks);

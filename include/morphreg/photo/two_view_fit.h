@@ -52,14 +52,28 @@ struct TwoViewFit
   int tps_rounds = 0;                ///< TPS-ICP rounds whose result was kept (0 for the other fits)
   Eigen::VectorXd coefficient_sigmas; ///< the coefficients in prior standard deviations (stacked like them)
 
+  std::vector<std::string> ignored_landmarks; ///< frontal outline landmarks left out (TwoViewFitting::setContourLandmarkWeight)
+
   /** \brief The largest |coefficient| in prior standard deviations (0 without components). */
   double
   maxCoefficientSigma () const;
+
+  /** \brief The shape's Mahalanobis distance from the mean head: the norm of the coefficients in prior standard
+   *  deviations. */
+  double
+  shapeDistance () const;
 
   /** \brief [s R | t] as a 4 x 4 matrix. */
   Eigen::Matrix4d
   similarity () const;
 };
+
+/** \brief Whether coefficients \a standardised (in prior standard deviations) describe a head the model's population
+ *  holds: their squared norm at most p + 3 sqrt(2 p) for p coefficients, the chi-square mean plus three standard
+ *  deviations (about 99.7 % of the model's own heads lie within it).
+ */
+bool
+isPlausibleShape (const Eigen::VectorXd& standardised);
 
 /** \brief \a fit's similarity, coefficients, final residuals and iteration history as JSON (not the meshes). */
 nlohmann::json

@@ -12,6 +12,11 @@
 
 namespace morphreg
 {
+namespace detail
+{
+struct ShapeProblem;
+}
+
 /** \brief Fits X = s R (mu + M m) + t to two photos in the normalised photo frame (PhotoNormalisation): the frontal
  *  photo is the projection along Z onto (X, Y), the profile photo the projection along X onto (Z, Y) with the face
  *  looking to +Z, i.e. to the right of the image. Model axes as the built-in heads: +Y up, +Z out of the face, +X
@@ -40,7 +45,15 @@ public:
   using Ptr = std::shared_ptr<TwoViewFitting>;
   using ConstPtr = std::shared_ptr<const TwoViewFitting>;
 
-  /** \brief Selects 10 components per region. Throws InvalidInputError for a null model, one without a profile
+  /** Components fitted per region unless setComponentSelection says otherwise. */
+  static constexpr int kDefaultComponents = 20;
+  static constexpr double kDefaultSmoothnessWeight = 0.5;
+  static constexpr double kDefaultShapePriorWeight = 0.3;
+  static constexpr double kDefaultCoefficientLimit = 3.0;
+  static constexpr double kDefaultFrontalWeight = 1.0;
+  static constexpr double kDefaultSagittalWeight = 1.0;
+
+  /** \brief Selects kDefaultComponents per region (or all a region has). Throws InvalidInputError for a null model, one without a profile
    *  line (MorphableModel::setProfileLine) or without a nose_tip landmark.
    */
   explicit TwoViewFitting (MorphableModel::ConstPtr model);
@@ -49,20 +62,38 @@ public:
   void
   setComponentSelection (const ComponentSelection& selection);
 
-  /** \brief lambda_1, the weight of the smoothness prior across overlapping regions: finite and > 0 (default 1). */
+  /** \brief lambda_1, the weight of the smoothness prior across overlapping regions: finite and > 0
+   *  (kDefaultSmoothnessWeight). */
   void
   setSmoothnessWeight (double lambda1);
 
-  /** \brief lambda_2 and the kind of Lambda (>= 0; default 1 with inverse standard deviations). */
+  /** \brief lambda_2 and the kind of Lambda (>= 0; kDefaultShapePriorWeight with inverse standard deviations). */
   void
   setShapePriorWeight (double lambda2, ShapePrior prior = ShapePrior::inverse_std_dev);
 
-  /** \brief Weight of each frontal landmark's two rows relative to one profile correspondence (> 0, default 4). */
+  /** \brief After every step each shape coefficient is clamped to +-\a sigmas prior standard deviations, so a fit
+   *  never leaves the model's range however the photos pull (> 0, or infinity for no limit;
+   *  kDefaultCoefficientLimit).
+   */
+  void
+  setCoefficientLimit (double sigmas);
+
+  /** \brief Weight of each frontal landmark's two rows relative to one profile correspondence (> 0,
+   *  kDefaultFrontalWeight). */
   void
   setFrontalWeight (double weight);
 
+  /** \brief Weight of the frontal landmarks that are points of the photo's outline (isFrontalContourLandmarkId:
+   *  jaw, chin, neck, head contour) rather than fixed points of the face (>= 0; default 0: they are left out and
+   *  listed in TwoViewFit::ignored_landmarks). The outline crosses the face where its surface turns away from the
+   *  camera, which moves with the head's shape and pose, so pinning it to one model vertex pulls the fit (measured on
+   *  photos of MediaPipe's face: the chin's mark lay 4 mm below ICT's chin vertex).
+   */
+  void
+  setContourLandmarkWeight (double weight);
+
   /** \brief Weight of the profile rows that pull X to the sagittal plane (>= 0, default 1 as in METHOD; the
-   *  profile fit and TPS-ICP need > 0: nothing else fixes X there). They assume the head in the photos is turned
+   *  profile fit and TPS-ICP need > 0: nothing else fixes X there; kDefaultSagittalWeight). They assume the head in the photos is turned
    *  and tilted by nothing, only nodding (a rotation about X keeps the plane X = 0): for a turned or tilted head,
    *  set 0 for fitJoint and let the frontal landmarks fix X (measured on 3 synthetic heads turned and tilted by
    *  3 degrees: vertex RMS 1.25 mm with 0, 4.80 mm with 1).
@@ -96,24 +127,31 @@ public:
   /** \brief Approach 2 (TPS-ICP): the profile fit, then rounds of: warp the posed model by a 3D thin plate spline
    *  that moves the frontal landmark vertices to their marked (X, Y) at their current depth, and fit the model to the
    *  warped mesh (every vertex a row, the landmark vertices weighted by setFrontalWeight), for up to 10 rounds while
-   *  the joint fit's image residuals (profile and landmarks together) decrease; returns the best round. The history
-   *  holds the profile fit's iterations, then one entry per round. Throws as fitProfile and fitJoint.
+   *  the joint fit's image residuals (profile and landmarks together) decrease and the head stays plausible
+   *  (isPlausibleShape); returns the best round. The history holds the profile fit's iterations, then one entry per
+   *  round. Throws as fitProfile and fitJoint.
    */
   TwoViewFit
   fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const;
 
 private:
+  /** The least-squares problem over \a vertices with this fitting's components and priors. */
+  detail::ShapeProblem
+  shapeProblem (std::vector<int> vertices) const;
+
   /** Both fits: without \a frontal the profile alone. */
   TwoViewFit
   fit (const ProfileView& profile, const FrontalView* frontal) const;
 
   MorphableModel::ConstPtr model_;
   ComponentSelection selection_;
-  double lambda1_ = 1.0;
-  double lambda2_ = 1.0;
+  double lambda1_ = kDefaultSmoothnessWeight;
+  double lambda2_ = kDefaultShapePriorWeight;
   ShapePrior prior_ = ShapePrior::inverse_std_dev;
-  double frontal_weight_ = 4.0;
-  double sagittal_weight_ = 1.0;
+  double coefficient_limit_ = kDefaultCoefficientLimit;
+  double frontal_weight_ = kDefaultFrontalWeight;
+  double contour_weight_ = 0.0;
+  double sagittal_weight_ = kDefaultSagittalWeight;
   double max_distance_ = 20.0;
   int similarity_iterations_ = 20;
   int shape_iterations_ = 30;
