@@ -26,6 +26,28 @@ objective (const ShapeProblem& problem, const PoseShapeState& state, const std::
     sum += state.coefficients.dot (problem.prior * state.coefficients);
   return sum;
 }
+/** Removes from the normal equations (\a hessian, \a descent = J^T r - prior m) every coefficient that sits at the
+ *  coefficient limit and that the descent direction pushes further out: its step is 0, so the projection onto the
+ *  limit cannot undo the rest of the step (an active-set Gauss-Newton step).
+ */
+void
+holdCoefficientsAtTheLimit (const ShapeProblem& problem, const Eigen::VectorXd& coefficients, Eigen::MatrixXd& hessian,
+                            Eigen::VectorXd& descent)
+{
+  if (!std::isfinite (problem.coefficient_limit))
+    return;
+  for (Eigen::Index i = 0; i < coefficients.size (); ++i) {
+    const double bound = problem.coefficient_limit * problem.sigma[i];
+    const Eigen::Index k = 7 + i;
+    if (std::abs (coefficients[i]) >= (1.0 - 1e-9) * bound && descent[k] * coefficients[i] > 0.0) {
+      const double diagonal = hessian (k, k);
+      hessian.row (k).setZero ();
+      hessian.col (k).setZero ();
+      hessian (k, k) = diagonal > 0.0 ? diagonal : 1.0;
+      descent[k] = 0.0;
+    }
+  }
+}
 } // namespace
 
 ShapeProblem::ShapeProblem (const MorphableModel& model, const ComponentSelection& selection,
@@ -88,6 +110,8 @@ poseShapeStep (const ShapeProblem& problem, PoseShapeState& state, const std::ve
     hessian.bottomRightCorner (p, p) += problem.prior;
     gradient.tail (p) -= problem.prior * state.coefficients;
   }
+  if (shape)
+    holdCoefficientsAtTheLimit (problem, state.coefficients, hessian, gradient);
   hessian.diagonal ().array () += 1e-12 * std::max (1.0, hessian.diagonal ().maxCoeff ());
   const Eigen::LDLT<Eigen::MatrixXd> solver (hessian);
   Eigen::VectorXd delta = solver.solve (gradient);
