@@ -180,7 +180,9 @@ jointCost (const TwoViewIteration& residuals, double landmark_weight)
 /** The rows of one TPS-ICP round, for every model vertex (\a state holds them all): the posed model warped by a 3D
  *  thin plate spline (in mm) that moves each frontal landmark vertex to its mark (X, Y) at its current depth (the mean
  *  mark of landmarks sharing a vertex) and each other profile-line vertex with a correspondence in \a image_rows to
- *  its silhouette point (Z, Y) at its current X; the landmark rows keep their weights.
+ *  its silhouette point (Z, Y) at its current X. The warped vertices guide the parts the photos do not show and share
+ *  the image rows' total weight; the landmark targets and the profile rows themselves keep their weights, so the fit
+ *  stays on the silhouette where the warp's smooth interpolation cannot follow it.
  */
 std::vector<WeightedRow>
 tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& image_rows,
@@ -213,11 +215,18 @@ tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& i
   Eigen::Matrix3Xd warped = posed / s;
   tps.transformPositions (warped);
   warped *= s;
+  // The warped vertices share the weight of the image rows they come from, so the priors weigh as in the joint fit
+  // (at weight 1 each the mesh would outweigh them a hundredfold and the fit would follow the warp's extrapolation).
+  const Eigen::Vector3d share = Eigen::Vector3d::Constant (static_cast<double> (image_rows.size ()) /
+                                                           static_cast<double> (warped.cols ()));
   std::vector<WeightedRow> rows;
   for (Eigen::Index i = 0; i < warped.cols (); ++i)
-    rows.push_back ({i, warped.col (i), Eigen::Vector3d::Ones ()});
+    rows.push_back ({i, warped.col (i), share});
   for (const auto& entry : marked)
     rows.push_back ({entry.first, anchors.at (entry.first), Eigen::Vector3d::Constant (weights.at (entry.first))});
+  for (const WeightedRow& row : image_rows)
+    if (row.slot < two_view.profile_count)
+      rows.push_back ({two_view.shape.vertices[row.slot], row.target, row.weight});
   return rows;
 }
 

@@ -50,7 +50,7 @@ public:
   static constexpr double kDefaultSmoothnessWeight = 0.5;
   static constexpr double kDefaultShapePriorWeight = 0.3;
   static constexpr double kDefaultCoefficientLimit = 3.0;
-  static constexpr double kDefaultFrontalWeight = 1.0;
+  static constexpr double kDefaultFrontalWeight = 0.5;
   static constexpr double kDefaultSagittalWeight = 1.0;
 
   /** \brief Selects kDefaultComponents per region (or all a region has). Throws InvalidInputError for a null model, one without a profile
@@ -126,7 +126,8 @@ public:
 
   /** \brief Approach 2 (TPS-ICP): the profile fit, then rounds of: warp the posed model by a 3D thin plate spline
    *  that moves the frontal landmark vertices to their marked (X, Y) at their current depth, and fit the model to the
-   *  warped mesh (every vertex a row, the landmark vertices weighted by setFrontalWeight), for up to 10 rounds while
+   *  warped mesh (every vertex a row, together weighing as much as the image rows) and to the profile rows and the
+   *  landmark targets at their own weights, for up to 10 rounds while
    *  the joint fit's image residuals (profile and landmarks together) decrease and the head stays plausible
    *  (isPlausibleShape); returns the best round. The history holds the profile fit's iterations, then one entry per
    *  round. Throws as fitProfile and fitJoint.
