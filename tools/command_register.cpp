@@ -466,14 +466,14 @@ registerRegisterCommand (CLI::App& app)
 {
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
-  command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj); its unit: see --units")->required ();
+  command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units")->required ();
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot, "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
   command->add_option ("-l,--landmarks", options->landmarks,
-                       "landmarks on the scan (.pp .json .csv) to start from (Umeyama on >= 3)");
+                       "landmarks on the scan (.pp .json .csv .pts) to start from (Umeyama on >= 3)");
   command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");
   command->add_option ("--colour-max", options->colour_max, "residual colour scale maximum (mm, 0 = 95th percentile)")
       ->check (CLI::NonNegativeNumber);

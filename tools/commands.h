@@ -20,6 +20,7 @@ void registerWarpCommand (CLI::App& app);
 void registerBuildModelCommand (CLI::App& app);
 void registerRegisterCommand (CLI::App& app);
 void registerFitPhotosCommand (CLI::App& app);
+void registerModelInfoCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -29,6 +30,7 @@ registerCommands (CLI::App& app)
   registerBuildModelCommand (app);
   registerRegisterCommand (app);
   registerFitPhotosCommand (app);
+  registerModelInfoCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
   registerWarpCommand (app);

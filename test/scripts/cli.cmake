@@ -20,7 +20,7 @@ endfunction()
 
 add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
 set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
-foreach(command synth build-model register fit-photos warp render demo)
+foreach(command synth build-model register fit-photos warp render demo model-info)
   add_test(NAME CliTest.Help.${command} COMMAND morphreg_cli ${command} --help)
   set_tests_properties(CliTest.Help.${command} PROPERTIES PASS_REGULAR_EXPRESSION "Usage: .*${command}")
 endforeach()
@@ -59,6 +59,15 @@ morphreg_cli_expect_exit(BuildModelOneMeshFails 1 "at least two meshes" build-mo
 set_tests_properties(CliTest.BuildModelMismatchedMeshIsNamed CliTest.BuildModelCorruptRegionsIsNamed
   CliTest.BuildModelWrongRegionCountIsNamed CliTest.BuildModelOneMeshFails PROPERTIES
   FIXTURES_REQUIRED "cli_small;cli_synth")
+
+# model-info: the small model's regions, components and landmarks, as text and as JSON.
+add_test(NAME CliTest.ModelInfoPrintsRegionsAndLandmarks COMMAND morphreg_cli model-info --model ${cli_dir}/small_model.h5)
+set_tests_properties(CliTest.ModelInfoPrintsRegionsAndLandmarks PROPERTIES FIXTURES_REQUIRED cli_model
+  PASS_REGULAR_EXPRESSION "3458 vertices, [0-9]+ triangles, units mm\nregions \\(7\\):\n  eyes: [0-9]+ vertices, 8 components.*global PCA: 8 components.*landmarks \\(45\\):.* nose_tip=[0-9]+")
+add_test(NAME CliTest.ModelInfoPrintsJson COMMAND morphreg_cli model-info --model ${cli_dir}/small_model.h5 --json)
+set_tests_properties(CliTest.ModelInfoPrintsJson PROPERTIES FIXTURES_REQUIRED cli_model
+  PASS_REGULAR_EXPRESSION "\"components\": 8,.*\"nose_tip\": [0-9]+.*\"vertices\": 3458")
+morphreg_cli_expect_exit(ModelInfoCorruptModelIsNamed 1 "corrupt_model.h5" model-info --model ${cli_dir}/corrupt_model.h5)
 
 add_test(NAME CliTest.RegisterSynthScanMatchesTruth
   COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
