@@ -1,3 +1,5 @@
+#include "text_fields.h"
+
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/landmark_io.h>
@@ -43,14 +45,7 @@ axisList (int dim)
   return list;
 }
 
-std::string
-trim (const std::string& text)
-{
-  const auto first = text.find_first_not_of (" \t\r\n");
-  if (first == std::string::npos)
-    return "";
-  return text.substr (first, text.find_last_not_of (" \t\r\n") - first + 1);
-}
+using text::trim;
 
 std::string
 toLower (std::string text)
@@ -302,18 +297,6 @@ readJson (const std::string& path)
   return entries;
 }
 
-std::vector<std::string>
-splitFields (const std::string& line)
-{
-  std::vector<std::string> fields;
-  std::istringstream stream (line);
-  for (std::string field; std::getline (stream, field, ',');)
-    fields.push_back (trim (field));
-  if (!line.empty () && line.back () == ',')
-    fields.emplace_back ();
-  return fields;
-}
-
 template <int Dim>
 std::vector<Entry<Dim>>
 readCsv (const std::string& path)
@@ -331,7 +314,7 @@ readCsv (const std::string& path)
     if (line.empty () || line.front () == '#')
       continue;
     const std::string where = path + ":" + std::to_string (line_number);
-    std::vector<std::string> fields = splitFields (line);
+    std::vector<std::string> fields = text::splitCsvFields (line);
     if (!header_seen) {
       for (auto& field : fields)
         field = toLower (field);
