@@ -21,6 +21,7 @@ void registerBuildModelCommand (CLI::App& app);
 void registerRegisterCommand (CLI::App& app);
 void registerFitPhotosCommand (CLI::App& app);
 void registerModelInfoCommand (CLI::App& app);
+void registerMergeSummariesCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -30,6 +31,7 @@ registerCommands (CLI::App& app)
   registerBuildModelCommand (app);
   registerRegisterCommand (app);
   registerFitPhotosCommand (app);
+  registerMergeSummariesCommand (app);
   registerModelInfoCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
