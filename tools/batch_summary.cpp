@@ -31,6 +31,32 @@ valueAt (const nlohmann::json& json, const std::string& pointer, T fallback)
     return value.is_string () ? value.get<T> () : fallback;
 }
 
+/** Where a summary's fields are in a JSON document (JSON pointers). */
+struct FieldPointers
+{
+  const char *status, *rms, *iterations, *seconds, *fit_seconds, *reason;
+};
+
+/** In a register report (or the failure record of a scan that threw). */
+const FieldPointers kReportFields = {"/status",          "/residuals_mm/scan_to_model/rms", "/iterations/total",
+                                     "/timings_s/total", "/timings_s/fit",                  "/failure"};
+/** In a row of summary.json. */
+const FieldPointers kSummaryFields = {"/status", "/rms_mm", "/iterations", "/seconds", "/fit_seconds", "/reason"};
+
+/** The status, RMS, iterations, timings and reason of a summary row, from \a json (missing fields: unknown). */
+ScanSummary
+rowFrom (const nlohmann::json& json, const FieldPointers& at)
+{
+  ScanSummary row;
+  row.status = valueAt<std::string> (json, at.status, "failed");
+  row.rms = valueAt (json, at.rms, row.rms);
+  row.iterations = valueAt (json, at.iterations, row.iterations);
+  row.seconds = valueAt (json, at.seconds, row.seconds);
+  row.fit_seconds = valueAt (json, at.fit_seconds, row.fit_seconds);
+  row.reason = valueAt<std::string> (json, at.reason, "");
+  return row;
+}
+
 /** A number for JSON: null when not known. */
 nlohmann::json
 known (double value)
@@ -94,15 +120,9 @@ summaryJson (const std::vector<ScanSummary>& rows, const std::string& shard)
 ScanSummary
 summaryFromReport (const std::string& id, const std::string& scan, const nlohmann::json& report)
 {
-  ScanSummary row;
+  ScanSummary row = rowFrom (report, kReportFields);
   row.id = id;
   row.scan = scan;
-  row.status = valueAt<std::string> (report, "/status", "failed");
-  row.rms = valueAt (report, "/residuals_mm/scan_to_model/rms", row.rms);
-  row.iterations = valueAt (report, "/iterations/total", row.iterations);
-  row.seconds = valueAt (report, "/timings_s/total", row.seconds);
-  row.fit_seconds = valueAt (report, "/timings_s/fit", row.fit_seconds);
-  row.reason = valueAt<std::string> (report, "/failure", "");
   if (row.reason.empty () && report.contains ("checks"))
     for (const auto& failure : report["checks"].value ("failures", nlohmann::json::array ()))
       row.reason += (row.reason.empty () ? "" : "; ") + failure.get<std::string> ();
@@ -137,15 +157,9 @@ readSummary (const std::string& path, std::string* shard)
   for (const nlohmann::json& item : document["scans"]) {
     if (!item.is_object () || !item.contains ("id") || !item["id"].is_string ())
       throw FormatError (path + ": scans[" + std::to_string (rows.size ()) + "] has no string \"id\"");
-    ScanSummary row;
+    ScanSummary row = rowFrom (item, kSummaryFields);
     row.id = item["id"].get<std::string> ();
     row.scan = valueAt<std::string> (item, "/scan", "");
-    row.status = valueAt<std::string> (item, "/status", "failed");
-    row.rms = valueAt (item, "/rms_mm", row.rms);
-    row.iterations = valueAt (item, "/iterations", row.iterations);
-    row.seconds = valueAt (item, "/seconds", row.seconds);
-    row.fit_seconds = valueAt (item, "/fit_seconds", row.fit_seconds);
-    row.reason = valueAt<std::string> (item, "/reason", "");
     rows.push_back (row);
   }
   return rows;

@@ -1,10 +1,12 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/scan_manifest.h>
 
+#include "support/expect_error.h"
 #include "support/temp_directory.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -20,17 +22,11 @@ writeText (const std::string& path, const std::string& text)
   std::ofstream (path) << text;
 }
 
-/** Expects loading \a path to throw FormatError with a message containing \a fragment. */
+/** Expects loading \a path to throw IoError (or FormatError) with a message containing \a fragment. */
 void
-expectManifestError (const std::string& path, const std::string& fragment)
+expectListError (const std::string& path, const std::string& fragment)
 {
-  try {
-    morphreg::loadScanList (path);
-    FAIL () << "no error for " << path;
-  }
-  catch (const morphreg::IoError& e) {
-    EXPECT_NE (std::string (e.what ()).find (fragment), std::string::npos) << e.what ();
-  }
+  morphreg::test::expectErrorContaining<morphreg::IoError> ([&] { morphreg::loadScanList (path); }, fragment);
 }
 } // namespace
 
@@ -53,17 +49,17 @@ TEST (ScanManifestTest, ReadsRowsWithOptionalLandmarksAndIds)
 TEST (ScanManifestTest, BadManifestsAreNamedWithTheLine)
 {
   TempDirectory dir;
-  writeText (dir.file ("dup.csv"), "a.ply\nother/a.ply\n");
-  expectManifestError (dir.file ("dup.csv"), "dup.csv:2: duplicate scan id 'a' (first at " + dir.file ("dup.csv:1"));
-  writeText (dir.file ("fields.csv"), "a.ply,a.json,a,extra\n");
-  expectManifestError (dir.file ("fields.csv"), "fields.csv:1: 4 fields, expected scan[,landmarks[,id]]");
-  writeText (dir.file ("empty_scan.csv"), "scan,landmarks,id\n,a.json,a\n");
-  expectManifestError (dir.file ("empty_scan.csv"), "empty_scan.csv:2: the scan path is empty");
-  writeText (dir.file ("slash.csv"), "a.ply,,x/y\n");
-  expectManifestError (dir.file ("slash.csv"), "slash.csv:1: id 'x/y' must be a plain file name");
-  writeText (dir.file ("none.csv"), "scan,landmarks,id\n# nothing\n");
-  expectManifestError (dir.file ("none.csv"), "none.csv: no scans listed");
-  expectManifestError (dir.file ("missing.csv"), "missing.csv: no such file");
+  const std::vector<std::array<std::string, 3>> cases = {
+      {"dup.csv", "a.ply\nother/a.ply\n", "dup.csv:2: duplicate scan id 'a' (first at " + dir.file ("dup.csv:1")},
+      {"fields.csv", "a.ply,a.json,a,extra\n", "fields.csv:1: 4 fields, expected scan[,landmarks[,id]]"},
+      {"empty_scan.csv", "scan,landmarks,id\n,a.json,a\n", "empty_scan.csv:2: the scan path is empty"},
+      {"slash.csv", "a.ply,,x/y\n", "slash.csv:1: id 'x/y' must be a plain file name"},
+      {"none.csv", "scan,landmarks,id\n# nothing\n", "none.csv: no scans listed"}};
+  for (const auto& [name, text, fragment] : cases) {
+    writeText (dir.file (name), text);
+    expectListError (dir.file (name), fragment);
+  }
+  expectListError (dir.file ("missing.csv"), "missing.csv: no such file");
 }
 
 TEST (ScanManifestTest, ListsAFolderOfScansWithTheirLandmarks)
@@ -80,9 +76,9 @@ TEST (ScanManifestTest, ListsAFolderOfScansWithTheirLandmarks)
   EXPECT_EQ (scans[2].landmarks, "");
   writeText (dir.file ("clash/a.ply"), "x");
   writeText (dir.file ("clash/a.pcd"), "x");
-  expectManifestError (dir.file ("clash"), "duplicate scan id 'a'");
+  expectListError (dir.file ("clash"), "duplicate scan id 'a'");
   writeText (dir.file ("empty/readme.txt"), "x");
-  expectManifestError (dir.file ("empty"), "no scans in the folder");
+  expectListError (dir.file ("empty"), "no scans in the folder");
 }
 
 TEST (ScanManifestTest, ShardsTakeEveryScanExactlyOnce)

@@ -4,6 +4,7 @@
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 
+#include "support/expect_error.h"
 #include "support/temp_directory.h"
 #include "support/test_meshes.h"
 
@@ -11,6 +12,7 @@
 
 #include <fstream>
 
+using morphreg::test::expectErrorContaining;
 using morphreg::test::TempDirectory;
 
 namespace
@@ -31,19 +33,6 @@ ptsText (int count, int dim, int declared = 68)
   return text + "}\n";
 }
 
-/** Expects \a call to throw E with a message containing \a fragment. */
-template <typename E, typename F>
-void
-expectError (F call, const std::string& fragment)
-{
-  try {
-    call ();
-    FAIL () << "no error; expected one containing " << fragment;
-  }
-  catch (const E& e) {
-    EXPECT_NE (std::string (e.what ()).find (fragment), std::string::npos) << e.what ();
-  }
-}
 } // namespace
 
 TEST (UserFormatsTest, ReadsIbugPtsAsIbug68Ids)
@@ -66,14 +55,18 @@ TEST (UserFormatsTest, BadPtsFilesAreNamedWithTheLine)
     writeText (dir.file (name), text);
     return [path = dir.file (name)] { morphreg::loadLandmarks (path); };
   };
-  expectError<morphreg::FormatError> (load ("short.pts", ptsText (67, 3)), "short.pts: 67 points, but n_points is 68");
-  expectError<morphreg::FormatError> (load ("n49.pts", ptsText (49, 3, 49)), "n49.pts: n_points is 49; iBUG-68");
-  expectError<morphreg::FormatError> (load ("flat.pts", ptsText (68, 2)), "flat.pts:4: expected 3 coordinates");
+  expectErrorContaining<morphreg::FormatError> (load ("short.pts", ptsText (67, 3)),
+                                                "short.pts: 67 points, but n_points is 68");
+  expectErrorContaining<morphreg::FormatError> (load ("n49.pts", ptsText (49, 3, 49)),
+                                                "n49.pts: n_points is 49; iBUG-68");
+  expectErrorContaining<morphreg::FormatError> (load ("flat.pts", ptsText (68, 2)),
+                                                "flat.pts:4: expected 3 coordinates");
   std::string text = ptsText (68, 3);
   text.replace (text.find ("\n5 10 15"), 8, "\n5 ten 15");
-  expectError<morphreg::FormatError> (load ("word.pts", text), "word.pts:9: coordinate y 'ten'");
-  expectError<morphreg::FormatError> (load ("open.pts", "n_points: 68\n{\n1 2 3\n"), "not enclosed");
-  expectError<morphreg::FormatError> (load ("header.pts", "points 68\n{\n}\n"), "header.pts:1: expected 'version:'");
+  expectErrorContaining<morphreg::FormatError> (load ("word.pts", text), "word.pts:9: coordinate y 'ten'");
+  expectErrorContaining<morphreg::FormatError> (load ("open.pts", "n_points: 68\n{\n1 2 3\n"), "not enclosed");
+  expectErrorContaining<morphreg::FormatError> (load ("header.pts", "points 68\n{\n}\n"),
+                                                "header.pts:1: expected 'version:'");
 }
 
 TEST (UserFormatsTest, Ibug68IdsAreAcceptedInEveryFormat)
@@ -86,7 +79,7 @@ TEST (UserFormatsTest, Ibug68IdsAreAcceptedInEveryFormat)
     EXPECT_EQ (morphreg::loadLandmarks (dir.file (name)), marked) << name;
   }
   writeText (dir.file ("range.csv"), "id,x,y,z\nibug68_68,1,2,3\n");
-  expectError<morphreg::InvalidInputError> ([&] { morphreg::loadLandmarks (dir.file ("range.csv")); },
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { morphreg::loadLandmarks (dir.file ("range.csv")); },
                                             "unknown landmark id 'ibug68_68'");
 }
 
@@ -102,12 +95,13 @@ TEST (UserFormatsTest, ReadsScalismoLandmarkJsonWithBaselIds)
   EXPECT_EQ (landmarks.at ("ibug68_30"), Eigen::Vector3d (0, 0, 1));
 
   writeText (dir.file ("two.json"), R"([{"id": "center.nose.tip", "coordinates": [1, 2]}])");
-  expectError<morphreg::FormatError> ([&] { morphreg::loadLandmarks (dir.file ("two.json")); },
+  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadLandmarks (dir.file ("two.json")); },
                                       "two.json: [0] ('center.nose.tip'): \"coordinates\" must be an array of 3");
   writeText (dir.file ("noid.json"), R"([{"coordinates": [1, 2, 3]}])");
-  expectError<morphreg::FormatError> ([&] { morphreg::loadLandmarks (dir.file ("noid.json")); }, "noid.json: [0]");
+  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadLandmarks (dir.file ("noid.json")); },
+                                                "noid.json: [0]");
   writeText (dir.file ("unmapped.json"), R"([{"id": "left.ear.helix.top", "coordinates": [1, 2, 3]}])");
-  expectError<morphreg::InvalidInputError> ([&] { morphreg::loadLandmarks (dir.file ("unmapped.json")); },
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { morphreg::loadLandmarks (dir.file ("unmapped.json")); },
                                             "unknown landmark id 'left.ear.helix.top'");
   // A model file's metadata keeps ids without a project equivalent.
   EXPECT_EQ (morphreg::parseScalismoLandmarks (R"([{"id": "left.ear.helix.top", "coordinates": [1, 2, 3]}])", "m")
@@ -155,12 +149,13 @@ TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
     writeText (dir.file (name), text);
     return [path = dir.file (name)] { morphreg::loadCloud<pcl::PointXYZ> (path); };
   };
-  expectError<morphreg::FormatError> (load ("coff.off", "COFF\n3 1 0\n"), "coff.off: not an ASCII OFF file");
-  expectError<morphreg::FormatError> (load ("corner.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+  expectErrorContaining<morphreg::FormatError> (load ("coff.off", "COFF\n3 1 0\n"), "coff.off: not an ASCII OFF file");
+  expectErrorContaining<morphreg::FormatError> (load ("corner.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
                                       "corner.off:6: face 0 corner 7 is not a whole number in [0, 3)");
-  expectError<morphreg::FormatError> (load ("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
+  expectErrorContaining<morphreg::FormatError> (load ("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
                                       "nan.off:4: vertex 1 coordinate y 'nan' is not a finite number");
-  expectError<morphreg::FormatError> (load ("cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
+  expectErrorContaining<morphreg::FormatError> (load ("cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
                                       "cut.off:4: vertex 2 coordinate x '' is not a finite number");
-  expectError<morphreg::FormatError> (load ("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"), "no polygons");
+  expectErrorContaining<morphreg::FormatError> (load ("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
+                                                "no polygons");
 }

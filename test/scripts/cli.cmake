@@ -178,7 +178,7 @@ file(WRITE ${cli_dir}/batch.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd,batch
            "batch_scans/scan_1.pcd\nbatch_scans/scan_2.pcd,,third\nbatch_scans/scan_3.pcd\n")
 file(WRITE ${cli_dir}/batch_failing.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\nno_such_scan.pcd\nbatch_scans/scan_1.pcd\n")
 file(WRITE ${cli_dir}/batch_duplicate.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd\n\nbatch_scans/scan_1.pcd,,scan_0\n")
-foreach(case resume-after-kill shards-equal-one-run)
+foreach(case resume-after-kill interrupt shards-equal-one-run)
   add_test(NAME CliTest.Batch_${case}
     COMMAND ${cli_scripts}/batch.sh $<TARGET_FILE:morphreg_cli> ${cli_dir}/small_model.h5 ${cli_dir}/batch.csv
             ${cli_dir}/batch_${case} ${case})

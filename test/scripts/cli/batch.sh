@@ -2,6 +2,8 @@
 # Batch registration end to end: batch.sh <morphreg> <model.h5> <manifest.csv> <work dir> <case>
 #   resume-after-kill     a run killed (SIGKILL) after its first finished scan, then rerun: no finished scan is
 #                         redone or lost, every scan ends complete, no partial file is left
+#   interrupt             Ctrl-C (SIGINT) after the first finished scan: the scan in progress finishes, exit 130,
+#                         the summary lists the others as pending, no partial file is left
 #   shards-equal-one-run  shards 0/2 and 1/2 merged by merge-summaries give one run's summary (timings aside)
 set -u
 morphreg=$1 model=$2 manifest=$3 work=$4 case=$5
@@ -30,6 +32,21 @@ resume-after-kill)
   md5sum --quiet -c "$work/before.md5" || fail "a finished scan's outputs were rewritten"
   [ "$(reports "$work/out" | wc -l)" -eq "$scans" ] || fail "not every scan has its report"
   [ "$(grep -c ',ok,' "$work/out/summary.csv")" -eq "$scans" ] || fail "not every scan is ok in the summary"
+  ! ls -A "$work/out" | grep -q '^\.partial\.' || fail "partial files are left"
+  ;;
+interrupt)
+  "$morphreg" register --scans "$manifest" --model "$model" --out-dir "$work/out" --jobs 1 -q > "$work/first.log" 2>&1 &
+  pid=$!
+  for _ in $(seq 600); do [ -n "$(reports "$work/out" 2>/dev/null)" ] && break; sleep 0.05; done
+  kill -INT $pid
+  wait $pid
+  code=$?
+  cat "$work/first.log"
+  [ $code -eq 130 ] || fail "Ctrl-C: exit code $code, expected 130"
+  grep -q "interrupted; the finished scans' outputs are complete" "$work/first.log" || fail "no interruption message"
+  grep -q ',pending,' "$work/out/summary.csv" || fail "the summary lists no pending scan"
+  [ "$(grep -c ',ok,' "$work/out/summary.csv")" -eq "$(reports "$work/out" | wc -l)" ] ||
+    fail "the summary's ok scans are not those with a report"
   ! ls -A "$work/out" | grep -q '^\.partial\.' || fail "partial files are left"
   ;;
 shards-equal-one-run)
