@@ -64,6 +64,6 @@ for name, label in (("batch_jobs1", "register --scans --jobs 1"), ("batch", "reg
     seconds, ok, outside, rss, outside_run, jobs = batch(name)
     rate = scans / seconds * 60
     print("%s: %.1f s, %.1f scans/min = %.2fx the loop, %d ok, peak memory %.0f MB, time outside the fit %.1f %% "
-          "per scan, %.1f %% of the run's %d job-seconds"
+          "per scan, %.1f %% of wall time x %d jobs"
           % (label, seconds, rate, rate / loop_rate, ok, rss / 1024, 100 * outside, 100 * outside_run, jobs))
 PY
