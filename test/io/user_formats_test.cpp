@@ -140,6 +140,9 @@ TEST (UserFormatsTest, ReadsStlAndOffScansAndMeshes)
   const auto scan = morphreg::loadCloud<pcl::PointXYZ> (dir.file ("cube.stl"));
   EXPECT_EQ (scan->size (), 8u) << "VTK's STL reader merges the shared corners";
   EXPECT_EQ (morphreg::loadPolygonMesh (dir.file ("cube.stl")).polygons.size (), 12u);
+  writeText (dir.file ("cut.stl"), "solid cut\nfacet normal 0 0 0\nouter loop\nvertex 1 2\n");
+  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadCloud<pcl::PointXYZ> (dir.file ("cut.stl")); },
+                                                "cut.stl: not a readable stl mesh");
 }
 
 TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
