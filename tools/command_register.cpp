@@ -7,6 +7,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
@@ -94,7 +95,7 @@ loadScan (const std::string& path)
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model)
+                          const MorphableModel& model, std::ostream& out)
 {
   LengthUnitGuess unit;
   if (options.units == "auto") {
@@ -112,7 +113,7 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
   if (to_mm != 1.0f) {
     for (auto& point : scan)
       point.getVector3fMap () *= to_mm;
-    std::cout << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
+    out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   }
   return unit;
 }
@@ -128,9 +129,9 @@ checkFit (Icp& icp, const MorphableModel& model)
                                in_sigma, icp.getRegistrationReport ());
 }
 
-/** The scan landmarks of the file that the model also has; the others are named on stderr and skipped. */
+/** The scan landmarks of the file that the model also has; the others are named on \a warnings and skipped. */
 LandmarkPositions
-modelLandmarks (const RegisterOptions& options, const MorphableModel& model)
+modelLandmarks (const RegisterOptions& options, const MorphableModel& model, std::ostream& warnings)
 {
   LandmarkPositions landmarks = loadLandmarks (options.landmarks);
   std::string skipped;
@@ -142,7 +143,7 @@ modelLandmarks (const RegisterOptions& options, const MorphableModel& model)
       it = landmarks.erase (it);
     }
   if (!skipped.empty () && !options.quiet)
-    std::cerr << options.landmarks << ": the model has no landmark" << skipped << "; using the other "
+    warnings << options.landmarks << ": the model has no landmark" << skipped << "; using the other "
               << landmarks.size () << '\n';
   if (landmarks.empty ())
     throw InvalidInputError (options.landmarks + ": none of its landmarks is on the model " + options.model);
@@ -150,7 +151,7 @@ modelLandmarks (const RegisterOptions& options, const MorphableModel& model)
 }
 
 void
-configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Ptr& model)
+configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Ptr& model, std::ostream& warnings)
 {
   icp.setModel (model);
   icp.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
@@ -183,7 +184,7 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
     icp.addCorrespondenceRejector (rejector);
   }
   if (!options.landmarks.empty ())
-    icp.setTargetLandmarks (modelLandmarks (options, *model), options.landmark_weight);
+    icp.setTargetLandmarks (modelLandmarks (options, *model, warnings), options.landmark_weight);
 }
 
 /** Prints one progress line per iteration: the kept correspondences and their RMS distance. */
@@ -274,7 +275,8 @@ settingsJson (const RegisterOptions& options)
 /** Vertex distances between the fit and the true mesh (model topology, scan frame), over every vertex and over
  *  the vertices the scan covers (those with a residual); printed and reported. */
 nlohmann::json
-truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const Eigen::VectorXd& residuals)
+truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const Eigen::VectorXd& residuals,
+             std::ostream& out)
 {
   const TriangleMesh truth = loadTriangleMesh (options.truth);
   requireSameTopology (fitted, truth, options.truth);
@@ -283,7 +285,7 @@ truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const E
   nlohmann::json report = distanceStatistics (errors);
   report["covered_by_scan"] = distanceStatistics (covered);
   report["file"] = options.truth;
-  std::cout << "vertex RMS against the truth " << options.truth << ": " << std::fixed << std::setprecision (3)
+  out << "vertex RMS against the truth " << options.truth << ": " << std::fixed << std::setprecision (3)
             << report["rms"].get<double> () << " mm (mean " << report["mean"].get<double> () << ", max "
             << report["max"].get<double> () << "); over the " << report["covered_by_scan"]["count"]
             << " vertices the scan covers: RMS " << report["covered_by_scan"]["rms"].get<double> () << " mm\n"
@@ -305,11 +307,21 @@ saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options, con
 }
 
 void
-runRegister (const RegisterOptions& options)
+runRegister (const RegisterOptions& options, const BatchOptions& batch)
 {
-  registerScanFile (options);
+  if (options.scans.empty ())
+    registerScanFile (options);
+  else
+    registerScanBatch (options, batch);
 }
 } // namespace
+
+std::string
+reportPath (const RegisterOptions& options)
+{
+  return options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string ()
+                                 : options.report;
+}
 
 nlohmann::json
 registerScanFile (const RegisterOptions& options)
@@ -319,13 +331,21 @@ registerScanFile (const RegisterOptions& options)
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const auto scan = loadScan (options.scan);
   const MorphableModel::Ptr model = loadModel (options.model);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model);
+  return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
+}
+
+nlohmann::json
+registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
+              double model_seconds, std::ostream& out, std::ostream& warnings)
+{
+  const auto start = Clock::now ();
+  const auto scan = loadScan (options.scan);
+  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
   Icp icp;
-  configureIcp (icp, options, model);
+  configureIcp (icp, options, model, warnings);
   icp.setInputTarget (scan);
-  const double load_seconds = secondsSince (start);
+  const double load_seconds = model_seconds + secondsSince (start);
 
   const auto fit_start = Clock::now ();
   const Progress progress ("registering " + options.scan, options.iterations, options.quiet);
@@ -341,7 +361,8 @@ registerScanFile (const RegisterOptions& options)
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
-  savePolygonMesh (options.out, toPolygonMesh (fitted, residualColours (residuals, scale)));
+  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
+  writeAtomically (options.out, [&] (const std::string& partial) { savePolygonMesh (partial, coloured); });
   const double write_seconds = secondsSince (write_start);
   const Eigen::Matrix4d pose = icp.getFinalTransformation ().cast<double> ();
 
@@ -379,7 +400,7 @@ registerScanFile (const RegisterOptions& options)
       {"termination", {{"reason", toString (icp_report.termination)}, {"message", icp_report.message}}},
       {"fitted_mesh", options.out}};
   if (!options.truth.empty ())
-    report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals);
+    report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
   double screenshot_seconds = 0.0;
   if (viewer) {
     const auto shot_start = Clock::now ();
@@ -391,11 +412,11 @@ registerScanFile (const RegisterOptions& options)
                          {"fit", fit_seconds},
                          {"write_mesh", write_seconds},
                          {"screenshot", screenshot_seconds},
-                         {"total", secondsSince (start)}};
-  const std::string report_path =
-      options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string () : options.report;
-  writeJsonFile (report_path, report);
-  std::cout << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
+                         {"total", model_seconds + secondsSince (start)}};
+  const std::string report_path = reportPath (options);
+  // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
+  writeAtomically (report_path, [&] (const std::string& partial) { writeJsonFile (partial, report); });
+  out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
             << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS "
             << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"
             << "wrote " << options.out << " (vertex colours: residual, 0-" << scale << " mm), " << report_path
@@ -466,14 +487,14 @@ registerRegisterCommand (CLI::App& app)
 {
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
-  command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj); its unit: see --units")->required ();
+  auto* scan = command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot, "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
   command->add_option ("-l,--landmarks", options->landmarks,
-                       "landmarks on the scan (.pp .json .csv) to start from (Umeyama on >= 3)");
+                       "landmarks on the scan (.pp .json .csv .pts) to start from (Umeyama on >= 3)");
   command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");
   command->add_option ("--colour-max", options->colour_max, "residual colour scale maximum (mm, 0 = 95th percentile)")
       ->check (CLI::NonNegativeNumber);
@@ -483,7 +504,13 @@ registerRegisterCommand (CLI::App& app)
                    "the fit after it (scale, coverage, coefficients, shape, distance to the scan, divergence): a "
                    "fit that fails its checks exits 4, with the fitted mesh and the report written and the "
                    "report's status \"failed\".");
-  command->callback ([options] () { runRegister (*options); });
+  auto batch = std::make_shared<BatchOptions> ();
+  addBatchOptions (command, *options, *batch)->excludes (scan);
+  command->callback ([options, batch, command, scan] () {
+    if (options->scans.empty () && scan->count () == 0)
+      throw CLI::RequiredError ("--scan or --scans");
+    runRegister (*options, *batch);
+  });
 }
 
 } // namespace tools

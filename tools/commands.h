@@ -20,6 +20,8 @@ void registerWarpCommand (CLI::App& app);
 void registerBuildModelCommand (CLI::App& app);
 void registerRegisterCommand (CLI::App& app);
 void registerFitPhotosCommand (CLI::App& app);
+void registerModelInfoCommand (CLI::App& app);
+void registerMergeSummariesCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -29,6 +31,8 @@ registerCommands (CLI::App& app)
   registerBuildModelCommand (app);
   registerRegisterCommand (app);
   registerFitPhotosCommand (app);
+  registerMergeSummariesCommand (app);
+  registerModelInfoCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
   registerWarpCommand (app);

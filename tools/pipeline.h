@@ -1,18 +1,22 @@
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
 #include <morphreg/model/model_builder.h>
+#include <morphreg/model/morphable_model.h>
 
 #include <nlohmann/json.hpp>
 
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace morphreg
 {
+class RegistrationVisualizer;
+
 namespace tools
 {
 /** Inputs and settings of `morphreg build-model`. */
@@ -42,6 +46,7 @@ addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings);
 struct RegisterOptions
 {
   std::string scan, model, out = "fitted.ply";
+  std::string scans;      ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
   std::string report;     ///< empty: next to out, with .json
   std::string screenshot; ///< empty: none
   int width = 1280, height = 960;
@@ -77,6 +82,39 @@ public:
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */
 nlohmann::json
 registerScanFile (const RegisterOptions& options);
+
+/** registerScanFile() with the model already loaded (\a model_seconds it took, counted in the report's load time)
+ *  and the viewer already open (nullptr: no screenshot); progress and results go to \a out, warnings (landmarks
+ *  the model lacks) to \a warnings. The fitted mesh and then the report are written atomically, so a report on
+ *  disk means complete outputs. Throws FitCheckFailure after writing them if the fit failed its checks.
+ */
+nlohmann::json
+registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
+              double model_seconds, std::ostream& out, std::ostream& warnings);
+
+/** The report file of a registration: --report, else the --out path with .json. */
+std::string
+reportPath (const RegisterOptions& options);
+
+/** Settings of `register --scans` beyond the single-scan ones. */
+struct BatchOptions
+{
+  std::string out_dir;       ///< per-scan outputs <id>.ply and <id>.json, and the summary
+  int jobs = 0;              ///< scans registered at once; 0: every core
+  std::string shard;         ///< "I/N", "auto" (Slurm job array) or empty (every scan)
+  bool retry_failed = false; ///< register again the scans whose last attempt failed
+};
+
+/** Adds --scans, --out-dir, --jobs, --shard and --retry-failed to \a command; returns the --scans option. */
+CLI::Option*
+addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batch);
+
+/** Registers every scan of options.scans (its shard) to the model, loaded once, writing per-scan outputs and
+ *  the summary into batch.out_dir; see `morphreg register --help`. Throws FitCheckFailure naming the summary if
+ *  any scan failed.
+ */
+void
+registerScanBatch (const RegisterOptions& options, const BatchOptions& batch);
 
 /** Adds the screenshot size and the MorphableICP settings (iterations, distances, components, loss, rejectors)
  *  to \a command. */

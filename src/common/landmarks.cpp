@@ -2,6 +2,7 @@
 #include <morphreg/common/landmarks.h>
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 
 namespace morphreg
@@ -29,6 +30,15 @@ makeKnownLandmarkIds ()
   ids.insert (ids.end (), rest.begin (), rest.end ());
   return ids;
 }
+
+/** BFM-2017 landmark ids (metadata/landmarks/json) with a project equivalent. */
+const std::map<std::string, std::string> kBfmLandmarkIds = {
+    {"center.nose.tip", "nose_tip"},           {"center.chin.tip", "chin"},
+    {"left.eye.corner_outer", "left_eye_outer"}, {"left.eye.corner_inner", "left_eye_inner"},
+    {"right.eye.corner_outer", "right_eye_outer"}, {"right.eye.corner_inner", "right_eye_inner"},
+    {"left.lips.corner", "left_mouth_corner"}, {"right.lips.corner", "right_mouth_corner"},
+    {"left.nose.wing.tip", "left_nose_wing"},  {"right.nose.wing.tip", "right_nose_wing"},
+    {"center.lips.upper.outer", "upper_lip_center"}, {"center.lips.lower.outer", "lower_lip_center"}};
 } // namespace
 
 const std::vector<std::string>&
@@ -38,11 +48,40 @@ knownLandmarkIds ()
   return ids;
 }
 
+std::string
+ibug68LandmarkId (int number)
+{
+  if (number < 0 || number >= 68)
+    throw InvalidInputError ("iBUG-68 point number " + std::to_string (number) + " is outside 0-67");
+  return (number < 10 ? "ibug68_0" : "ibug68_") + std::to_string (number);
+}
+
+const std::vector<std::string>&
+ibug68LandmarkIds ()
+{
+  static const std::vector<std::string> ids = [] {
+    std::vector<std::string> all;
+    for (int k = 0; k < 68; ++k)
+      all.push_back (ibug68LandmarkId (k));
+    return all;
+  }();
+  return ids;
+}
+
 bool
 isKnownLandmarkId (const std::string& id)
 {
-  const auto& ids = knownLandmarkIds ();
-  return std::find (ids.begin (), ids.end (), id) != ids.end ();
+  for (const auto* ids : {&knownLandmarkIds (), &ibug68LandmarkIds ()})
+    if (std::find (ids->begin (), ids->end (), id) != ids->end ())
+      return true;
+  return false;
+}
+
+std::string
+fromBfmLandmarkId (const std::string& id)
+{
+  const auto it = kBfmLandmarkIds.find (id);
+  return it == kBfmLandmarkIds.end () ? id : it->second;
 }
 
 void
@@ -54,6 +93,7 @@ requireKnownLandmarkId (const std::string& id, const std::string& source)
   msg << source << ": unknown landmark id '" << id << "'; known ids are:";
   for (const auto& known : knownLandmarkIds ())
     msg << ' ' << known;
+  msg << " and the iBUG-68 points ibug68_00 .. ibug68_67";
   throw InvalidInputError (msg.str ());
 }
 

@@ -59,7 +59,7 @@ readLandmarks (const std::string& path, Eigen::Index num_vertices)
   }
   LandmarkVertices landmarks;
   for (size_t k = 0; k < ibug.size (); ++k)
-    landmarks[(k < 10 ? "ibug68_0" : "ibug68_") + std::to_string (k)] = ibug[k];
+    landmarks[ibug68LandmarkId (static_cast<int> (k))] = ibug[k];
   for (const auto& [id, number] : kIbugLandmarks)
     landmarks[id] = ibug[number];
   for (const auto& [id, vertex] : kGeometricLandmarks)

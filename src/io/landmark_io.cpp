@@ -1,3 +1,5 @@
+#include "text_fields.h"
+
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/landmark_io.h>
@@ -43,14 +45,7 @@ axisList (int dim)
   return list;
 }
 
-std::string
-trim (const std::string& text)
-{
-  const auto first = text.find_first_not_of (" \t\r\n");
-  if (first == std::string::npos)
-    return "";
-  return text.substr (first, text.find_last_not_of (" \t\r\n") - first + 1);
-}
+using text::trim;
 
 std::string
 toLower (std::string text)
@@ -136,6 +131,66 @@ readPickedPoints (const std::string& path)
   return entries;
 }
 
+std::vector<std::string>
+splitWhitespace (const std::string& line)
+{
+  std::vector<std::string> fields;
+  std::istringstream stream (line);
+  for (std::string field; stream >> field;)
+    fields.push_back (field);
+  return fields;
+}
+
+/** \brief An iBUG .pts file: "version: 1", "n_points: 68", then the 68 points between braces, one per line (x y,
+ *  or x y z for 3D points). Point k is "ibug68_k" (0-based, two digits).
+ */
+template <int Dim>
+std::vector<Entry<Dim>>
+readPts (const std::string& path)
+{
+  std::istringstream stream (readWholeFile (path));
+  long long declared = -1;
+  bool open = false, closed = false;
+  std::vector<Entry<Dim>> entries;
+  int line_number = 0;
+  for (std::string line; std::getline (stream, line);) {
+    ++line_number;
+    line = trim (line);
+    const std::string where = path + ":" + std::to_string (line_number);
+    if (line.empty () || closed)
+      continue;
+    if (!open && line.rfind ("n_points:", 0) == 0)
+      declared = static_cast<long long> (parseNumber (line.substr (9), where, "n_points"));
+    else if (!open && line == "{")
+      open = true;
+    else if (!open && line.rfind ("version:", 0) != 0)
+      throw FormatError (where + ": expected 'version:', 'n_points:' or '{' in the header, found '" + line + "'");
+    else if (open && line == "}")
+      closed = true;
+    else if (open) {
+      const std::vector<std::string> fields = splitWhitespace (line);
+      if (fields.size () != Dim)
+        throw FormatError (where + ": expected " + std::to_string (Dim) + " coordinates (" + axisList (Dim) +
+                           "), found " + std::to_string (fields.size ()));
+      if (entries.size () == 68)
+        throw FormatError (where + ": more than 68 points (iBUG-68 has 68)");
+      Entry<Dim> entry{ibug68LandmarkId (static_cast<int> (entries.size ())), Point<Dim>::Zero (), where};
+      for (int axis = 0; axis < Dim; ++axis)
+        entry.position[axis] = parseNumber (fields[axis], where, std::string ("coordinate ") + kAxisNames[axis]);
+      entries.push_back (entry);
+    }
+  }
+  if (declared != 68)
+    throw FormatError (path + ": " + (declared < 0 ? std::string ("no 'n_points:' line")
+                                                   : "n_points is " + std::to_string (declared)) +
+                       "; iBUG-68 files have 68 points");
+  if (!closed)
+    throw FormatError (path + ": the points are not enclosed in '{' ... '}'");
+  if (entries.size () != 68)
+    throw FormatError (path + ": " + std::to_string (entries.size ()) + " points, but n_points is 68");
+  return entries;
+}
+
 /** \brief Millimetres per unit for 3D files; pixel files must say "px". */
 template <int Dim>
 double
@@ -182,19 +237,49 @@ readJsonLandmark (const nlohmann::json& item, const std::string& where, double s
   return entry;
 }
 
+/** \brief The scalismo / Basel Face Model layout: [{"id": ..., "coordinates": [x, y, z]}, ...] in mm, ids
+ *  translated by fromBfmLandmarkId(); other members of an entry (e.g. "uncertainty") are ignored.
+ */
+std::vector<Entry<3>>
+readScalismoEntries (const nlohmann::json& document, const std::string& source)
+{
+  std::vector<Entry<3>> entries;
+  for (std::size_t i = 0; i < document.size (); ++i) {
+    const nlohmann::json& item = document[i];
+    const std::string where = source + ": [" + std::to_string (i) + "]";
+    if (!item.is_object () || !item.contains ("id") || !item["id"].is_string ())
+      throw FormatError (where + ": expected an object {\"id\": \"...\", \"coordinates\": [x, y, z]}");
+    const std::string id = item["id"].get<std::string> ();
+    if (!item.contains ("coordinates") || !item["coordinates"].is_array () || item["coordinates"].size () != 3)
+      throw FormatError (where + " ('" + id + "'): \"coordinates\" must be an array of 3 numbers [x,y,z]");
+    entries.push_back (
+        readJsonLandmark<3> ({{"id", fromBfmLandmarkId (id)}, {"position", item["coordinates"]}}, where, 1.0));
+  }
+  return entries;
+}
+
+nlohmann::json
+parseJsonText (const std::string& text, const std::string& source)
+{
+  try {
+    return nlohmann::json::parse (text);
+  }
+  catch (const nlohmann::json::parse_error& e) {
+    throw FormatError (source + ": malformed JSON (" + e.what () + ")");
+  }
+}
+
 template <int Dim>
 std::vector<Entry<Dim>>
 readJson (const std::string& path)
 {
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse (readWholeFile (path));
-  }
-  catch (const nlohmann::json::parse_error& e) {
-    throw FormatError (path + ": malformed JSON (" + e.what () + ")");
-  }
+  const nlohmann::json document = parseJsonText (readWholeFile (path), path);
+  if constexpr (Dim == 3)
+    if (document.is_array ())
+      return readScalismoEntries (document, path);
   if (!document.is_object ())
-    throw FormatError (path + ": the top level must be an object with a \"landmarks\" array");
+    throw FormatError (path + ": the top level must be an object with a \"landmarks\" array" +
+                       (Dim == 3 ? " or a scalismo array [{\"id\": ..., \"coordinates\": [...]}]" : ""));
   std::string units = Dim == 3 ? "mm" : "px";
   if (const auto it = document.find ("units"); it != document.end ()) {
     if (!it->is_string ())
@@ -210,18 +295,6 @@ readJson (const std::string& path)
     entries.push_back (
         readJsonLandmark<Dim> ((*landmarks)[i], path + ": landmarks[" + std::to_string (i) + "]", scale));
   return entries;
-}
-
-std::vector<std::string>
-splitFields (const std::string& line)
-{
-  std::vector<std::string> fields;
-  std::istringstream stream (line);
-  for (std::string field; std::getline (stream, field, ',');)
-    fields.push_back (trim (field));
-  if (!line.empty () && line.back () == ',')
-    fields.emplace_back ();
-  return fields;
 }
 
 template <int Dim>
@@ -241,7 +314,7 @@ readCsv (const std::string& path)
     if (line.empty () || line.front () == '#')
       continue;
     const std::string where = path + ":" + std::to_string (line_number);
-    std::vector<std::string> fields = splitFields (line);
+    std::vector<std::string> fields = text::splitCsvFields (line);
     if (!header_seen) {
       for (auto& field : fields)
         field = toLower (field);
@@ -292,12 +365,14 @@ template <int Dim>
 NamedPoints<Dim>
 load (const std::string& path, bool known_ids_only = true)
 {
-  requireExtension (path, Dim == 3 ? ".pp .json .csv" : ".json .csv",
+  requireExtension (path, Dim == 3 ? ".pp .json .csv .pts" : ".json .csv .pts",
                     Dim == 3 ? "landmark" : "pixel landmark (PickedPoints files are 3D only)");
   requireReadableFile (path);
   const std::string ext = fileExtension (path);
   if (ext == ".json")
     return collect<Dim> (readJson<Dim> (path), path, known_ids_only);
+  if (ext == ".pts")
+    return collect<Dim> (readPts<Dim> (path), path, known_ids_only);
   if (ext == ".csv")
     return collect<Dim> (readCsv<Dim> (path), path, known_ids_only);
   if constexpr (Dim == 3)
@@ -349,9 +424,10 @@ orderedForWriting (const NamedPoints<Dim>& points, const std::string& path)
       throw InvalidInputError (path + ": landmark '" + id + "' has a non-finite position");
   }
   std::vector<std::pair<std::string, Point<Dim>>> ordered;
-  for (const auto& id : knownLandmarkIds ())
-    if (const auto it = points.find (id); it != points.end ())
-      ordered.emplace_back (*it);
+  for (const auto* ids : {&knownLandmarkIds (), &ibug68LandmarkIds ()})
+    for (const auto& id : *ids)
+      if (const auto it = points.find (id); it != points.end ())
+        ordered.emplace_back (*it);
   return ordered;
 }
 
@@ -437,6 +513,15 @@ LandmarkPositions
 loadNamedPoints (const std::string& path)
 {
   return load<3> (path, false);
+}
+
+LandmarkPositions
+parseScalismoLandmarks (const std::string& text, const std::string& source)
+{
+  const nlohmann::json document = parseJsonText (text, source);
+  if (!document.is_array ())
+    throw FormatError (source + ": expected a scalismo landmark array [{\"id\": ..., \"coordinates\": [...]}]");
+  return collect<3> (readScalismoEntries (document, source), source, false);
 }
 
 LandmarkPixels

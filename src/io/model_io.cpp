@@ -1,5 +1,6 @@
 #include "hdf5_file.h"
 
+#include <morphreg/io/landmark_io.h>
 #include <morphreg/io/model_io.h>
 
 #include <nlohmann/json.hpp>
@@ -216,6 +217,27 @@ readMorphreg (const hdf5::Reader& file)
   }
 }
 
+/** The landmarks of a Basel Face Model 2017 file (metadata/landmarks/json, scalismo's layout, positions on the mean)
+ *  as the nearest mean vertices; none if the file has no such dataset.
+ */
+LandmarkVertices
+readBfmLandmarks (const hdf5::Reader& file, const Eigen::VectorXd& mean)
+{
+  const std::string name = "metadata/landmarks/json";
+  if (!file.exists (name))
+    return {};
+  const LandmarkPositions positions =
+      parseScalismoLandmarks (file.readString (name), file.path () + ": dataset '" + name + "'");
+  const Eigen::Map<const Eigen::Matrix3Xd> vertices (mean.data (), 3, mean.size () / 3);
+  LandmarkVertices landmarks;
+  for (const auto& [id, position] : positions) {
+    Eigen::Index nearest = 0;
+    (vertices.colwise () - position).colwise ().squaredNorm ().minCoeff (&nearest);
+    landmarks[id] = static_cast<int> (nearest);
+  }
+  return landmarks;
+}
+
 std::vector<double>
 rowMajor (const Eigen::MatrixXd& matrix)
 {
@@ -309,10 +331,12 @@ loadStatismoModel (const std::string& path, const std::string& prefix)
 {
   const hdf5::Reader file (path);
   StatismoPart part = readStatismo (file, prefix);
+  const LandmarkVertices landmarks = readBfmLandmarks (file, part.mean);
   try {
     auto model = MorphableModel::fromGlobalPca (std::move (part.triangles), std::move (part.mean),
                                                 std::move (part.basis), std::move (part.variances));
     model->setNoiseVariance (part.noise_variance);
+    model->setLandmarks (landmarks);
     model->setMetadata ({{"source", path}, {"format", "statismo"}});
     return model;
   }

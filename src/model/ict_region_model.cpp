@@ -10,7 +10,7 @@ ibugVertices (const MorphableModel& ict, int first, int last)
 {
   std::vector<int> vertices;
   for (int k = first; k <= last; ++k)
-    vertices.push_back (ict.landmarkVertex ((k < 10 ? "ibug68_0" : "ibug68_") + std::to_string (k)));
+    vertices.push_back (ict.landmarkVertex (ibug68LandmarkId (k)));
   return vertices;
 }
 

@@ -174,6 +174,16 @@ TEST (ModelIoTest, LoadsBaselFaceModel2017PrefixLayout)
   expectMatchesExpected (*morphreg::loadStatismoModel (fixture ().file ("bfm2017_style.h5"), "shape"));
 }
 
+TEST (ModelIoTest, TakesTheLandmarksOfABaselFaceModel2017File)
+{
+  REQUIRE_FIXTURE ();
+  const auto model = morphreg::loadModel (fixture ().file ("bfm2017_style.h5"));
+  const morphreg::LandmarkVertices expected = {{"nose_tip", 6}, {"left.ear.helix.top", 1}};
+  EXPECT_EQ (model->landmarks (), expected) << "BFM ids translated where the project has one, nearest mean vertex";
+  expectLoadFails ("bfm2017_bad_landmarks.h5",
+                   "dataset 'metadata/landmarks/json': [0] ('center.nose.tip'): \"coordinates\" must be an array");
+}
+
 TEST (ModelIoTest, NormalisesTheScaledBasisOfStatismoVersion08)
 {
   REQUIRE_FIXTURE ();

@@ -76,7 +76,16 @@ def bad_cell(a):
 
 def write(directory):
     expected = write_model(os.path.join(directory, "statismo_v09.h5"))
-    write_model(os.path.join(directory, "bfm2017_style.h5"), prefix="shape", version_at_root=True)
+    bfm = write_model(os.path.join(directory, "bfm2017_style.h5"), prefix="shape", version_at_root=True)
+    # BFM-2017 keeps scalismo landmark JSON (positions near the mean) in metadata/landmarks/json.
+    mean = np.array(bfm["mean"]).reshape(-1, 3)
+    landmarks = [{"id": "center.nose.tip", "coordinates": (mean[6] + 0.1).tolist(), "uncertainty": {}},
+                 {"id": "left.ear.helix.top", "coordinates": mean[1].tolist()}]
+    with h5py.File(os.path.join(directory, "bfm2017_style.h5"), "r+") as f:
+        f.create_dataset("metadata/landmarks/json", data=json.dumps(landmarks))
+    write_model(os.path.join(directory, "bfm2017_bad_landmarks.h5"), prefix="shape", version_at_root=True)
+    with h5py.File(os.path.join(directory, "bfm2017_bad_landmarks.h5"), "r+") as f:
+        f.create_dataset("metadata/landmarks/json", data=json.dumps([{"id": "center.nose.tip", "coordinates": [1]}]))
     write_model(os.path.join(directory, "statismo_v08.h5"), minor=8, scaled=True)
     write_model(os.path.join(directory, "scaled_labelled_v09.h5"), minor=9, scaled=True)
     write_model(os.path.join(directory, "missing_variance.h5"), edit=set_item("model/pcaVariance", lambda a: None))

@@ -20,7 +20,7 @@ endfunction()
 
 add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
 set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
-foreach(command synth build-model register fit-photos warp render demo)
+foreach(command synth build-model register fit-photos warp render demo model-info merge-summaries)
   add_test(NAME CliTest.Help.${command} COMMAND morphreg_cli ${command} --help)
   set_tests_properties(CliTest.Help.${command} PROPERTIES PASS_REGULAR_EXPRESSION "Usage: .*${command}")
 endforeach()
@@ -59,6 +59,15 @@ morphreg_cli_expect_exit(BuildModelOneMeshFails 1 "at least two meshes" build-mo
 set_tests_properties(CliTest.BuildModelMismatchedMeshIsNamed CliTest.BuildModelCorruptRegionsIsNamed
   CliTest.BuildModelWrongRegionCountIsNamed CliTest.BuildModelOneMeshFails PROPERTIES
   FIXTURES_REQUIRED "cli_small;cli_synth")
+
+# model-info: the small model's regions, components and landmarks, as text and as JSON.
+add_test(NAME CliTest.ModelInfoPrintsRegionsAndLandmarks COMMAND morphreg_cli model-info --model ${cli_dir}/small_model.h5)
+set_tests_properties(CliTest.ModelInfoPrintsRegionsAndLandmarks PROPERTIES FIXTURES_REQUIRED cli_model
+  PASS_REGULAR_EXPRESSION "3458 vertices, [0-9]+ triangles, units mm\nregions \\(7\\):\n  eyes: [0-9]+ vertices, 8 components.*global PCA: 8 components.*landmarks \\(45\\):.* nose_tip=[0-9]+")
+add_test(NAME CliTest.ModelInfoPrintsJson COMMAND morphreg_cli model-info --model ${cli_dir}/small_model.h5 --json)
+set_tests_properties(CliTest.ModelInfoPrintsJson PROPERTIES FIXTURES_REQUIRED cli_model
+  PASS_REGULAR_EXPRESSION "\"components\": 8,.*\"nose_tip\": [0-9]+.*\"vertices\": 3458")
+morphreg_cli_expect_exit(ModelInfoCorruptModelIsNamed 1 "corrupt_model.h5" model-info --model ${cli_dir}/corrupt_model.h5)
 
 add_test(NAME CliTest.RegisterSynthScanMatchesTruth
   COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
@@ -159,6 +168,53 @@ morphreg_cli_expect_exit(RegisterWrongComponentCountExits1 1 "regions"
 set_tests_properties(CliTest.RegisterCorruptModelIsNamed CliTest.RegisterMissingScanIsNamed
   CliTest.RegisterUnknownLandmarkIsNamed CliTest.RegisterWrongTruthIsNamed CliTest.RegisterWrongComponentCountExits1
   PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model;cli_synth")
+
+# register --scans: four synthetic scans of the small model's population in a manifest.
+add_test(NAME CliTest.BatchScans
+  COMMAND morphreg_cli synth --count 4 --resolution 24 --scans 4 --angular-samples 200 --row-spacing 3 --quiet
+          --out ${cli_dir}/batch_scans)
+set_tests_properties(CliTest.BatchScans PROPERTIES FIXTURES_SETUP cli_batch_scans)
+file(WRITE ${cli_dir}/batch.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd,batch_scans/scan_0_landmarks.json\n"
+           "batch_scans/scan_1.pcd\nbatch_scans/scan_2.pcd,,third\nbatch_scans/scan_3.pcd\n")
+file(WRITE ${cli_dir}/batch_failing.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\nno_such_scan.pcd\nbatch_scans/scan_1.pcd\n")
+file(WRITE ${cli_dir}/batch_duplicate.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd\n\nbatch_scans/scan_1.pcd,,scan_0\n")
+foreach(case resume-after-kill interrupt shards-equal-one-run)
+  add_test(NAME CliTest.Batch_${case}
+    COMMAND ${cli_scripts}/batch.sh $<TARGET_FILE:morphreg_cli> ${cli_dir}/small_model.h5 ${cli_dir}/batch.csv
+            ${cli_dir}/batch_${case} ${case})
+  set_tests_properties(CliTest.Batch_${case} PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
+    PASS_REGULAR_EXPRESSION "passed: ${case}")
+endforeach()
+# Failing scans are recorded in the summary, naming the problem, and the others registered; exit 4 at the end.
+morphreg_cli_expect_exit(BatchFailingScanDoesNotStopTheBatch 4 "2 of 4 scans failed"
+  register --scans ${cli_dir}/batch_failing.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/batch_failing
+  --quiet)
+set_tests_properties(CliTest.BatchFailingScanDoesNotStopTheBatch PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
+  FIXTURES_SETUP cli_batch_failing)
+add_test(NAME CliTest.BatchSummaryNamesTheFailures COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/batch_failing/summary.csv)
+set_tests_properties(CliTest.BatchSummaryNamesTheFailures PROPERTIES FIXTURES_REQUIRED cli_batch_failing
+  PASS_REGULAR_EXPRESSION "no_such_scan,failed,,,[0-9.]+,,[^,]*no_such_scan.pcd,[^\n]*no_such_scan.pcd: no such file\nscan_0,ok,[0-9.]+,[0-9]+,.*scan_1,ok,[0-9.]+,[0-9]+,.*scan_flat,failed,,,[0-9.]+,,[^\n]*the 200 points lie in a plane")
+morphreg_cli_expect_exit(BatchDuplicateIdIsNamed 1 "batch_duplicate.csv:4: duplicate scan id 'scan_0' (first at"
+  register --scans ${cli_dir}/batch_duplicate.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/bad_batch)
+morphreg_cli_expect_exit(BatchShardOutOfRangeIsNamed 1 "--shard '2/2': expected I/N with 0 <= I < N"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/bad_batch --shard 2/2)
+morphreg_cli_expect_exit(BatchShardAutoNeedsSlurm 1 "SLURM_ARRAY_TASK_ID is not set"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/bad_batch --shard auto)
+set_tests_properties(CliTest.BatchShardAutoNeedsSlurm PROPERTIES
+  ENVIRONMENT_MODIFICATION "SLURM_ARRAY_TASK_ID=unset:;SLURM_ARRAY_TASK_COUNT=unset:")
+morphreg_cli_expect_exit(BatchNeedsOutDir 1 "give --out-dir" register --scans ${cli_dir}/batch.csv
+  --model ${cli_dir}/small_model.h5)
+morphreg_cli_expect_exit(BatchScanAndScansExit2 2 "--scan excludes --scans" register --scans ${cli_dir}/batch.csv
+  --scan a.pcd --model b.h5)
+morphreg_cli_expect_exit(RegisterNeedsAScan 2 "--scan or --scans is required" register --model b.h5)
+morphreg_cli_expect_exit(MergeSummariesMissingShardIsNamed 1 "shard 1/2 is missing"
+  merge-summaries --out-dir ${cli_dir}/merge_missing ${cli_dir}/batch_shard0_only.json)
+file(WRITE ${cli_dir}/batch_shard0_only.json "{\"shard\": \"0/2\", \"scans\": [{\"id\": \"a\", \"status\": \"ok\"}]}")
+morphreg_cli_expect_exit(MergeSummariesRejectsOtherJson 1 "batch.csv.json: not a batch summary"
+  merge-summaries --out-dir ${cli_dir}/merge_bad ${cli_dir}/batch.csv.json)
+file(WRITE ${cli_dir}/batch.csv.json "{\"rows\": []}")
+set_tests_properties(CliTest.BatchDuplicateIdIsNamed CliTest.BatchShardOutOfRangeIsNamed CliTest.BatchShardAutoNeedsSlurm
+  CliTest.BatchNeedsOutDir PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans")
 
 # The real head-and-shoulders scan as a new user registers it (skipped without ../shared/data): ICT at 30
 # components, no landmarks, the README's real-scan options; exit 0 means the fit passed its checks.

@@ -14,9 +14,23 @@ namespace morphreg
 const std::vector<std::string>&
 knownLandmarkIds ();
 
-/** \brief True if \a id is one of knownLandmarkIds(). */
+/** \brief The id of iBUG-68 point \a number (0-67, the 1-68 of the annotation scheme less one): "ibug68_07". */
+std::string
+ibug68LandmarkId (int number);
+
+/** \brief The 68 iBUG ids "ibug68_00" .. "ibug68_67", in point order (the order of a .pts file). */
+const std::vector<std::string>&
+ibug68LandmarkIds ();
+
+/** \brief True if \a id is one of knownLandmarkIds() or of ibug68LandmarkIds(). */
 bool
 isKnownLandmarkId (const std::string& id);
+
+/** \brief The project id of a Basel Face Model / scalismo landmark id ("center.nose.tip" -> "nose_tip"), or
+ *  \a id itself when it has no equivalent. Left and right are the subject's in both vocabularies.
+ */
+std::string
+fromBfmLandmarkId (const std::string& id);
 
 /** \brief Throws InvalidInputError naming \a source and listing the known ids when \a id is unknown. */
 void

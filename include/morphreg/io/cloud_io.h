@@ -1,6 +1,7 @@
 #pragma once
 /** \file cloud_io.h
- *  \brief Reading and writing point clouds (PCD, PLY, OBJ) of any PCL point type, with errors that name the file.
+ *  \brief Reading and writing point clouds (PCD, PLY, OBJ; STL and OFF meshes read as their vertices) of any PCL
+ *  point type, with errors that name the file.
  */
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -9,8 +10,8 @@
 
 namespace morphreg
 {
-/** \brief Loads a cloud (.pcd, .ply or .obj; for a mesh file, its vertices). Throws IoError if the file is missing or
- *  unreadable, FormatError if it has no points.
+/** \brief Loads a cloud (.pcd, .ply, .obj, .stl or .off; for a mesh file, its vertices). Throws IoError if the file
+ *  is missing or unreadable, FormatError if it has no points.
  */
 template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr

@@ -1,7 +1,8 @@
 #pragma once
 /** \file landmark_io.h
- *  \brief Landmark files: MeshLab PickedPoints (.pp), JSON (.json) and CSV (.csv), holding 3D positions (mm) or,
- *  for photos, 2D pixel positions. The layouts are documented in README.md (Landmark files).
+ *  \brief Landmark files: MeshLab PickedPoints (.pp), JSON (.json: morphreg's or scalismo's array layout), CSV
+ *  (.csv) and iBUG (.pts, the 68 points as ibug68_00 .. ibug68_67), holding 3D positions (mm) or, for photos, 2D
+ *  pixel positions. The layouts are documented in README.md (Landmark files).
  *
  *  Every reader rejects, with an error naming the file and the line or element: a missing or empty file (IoError),
  *  malformed content, a malformed or non-finite number, a wrong number of coordinates, a duplicate id or a file
@@ -27,8 +28,10 @@ namespace morphreg
  */
 using LandmarkPixels = std::map<std::string, Eigen::Vector2d>;
 
-/** \brief Loads 3D landmarks from a .pp, .json or .csv file (chosen by the extension), in millimetres
- *  (JSON files stating "cm" or "m" are converted). Inactive MeshLab points (active="0") are skipped.
+/** \brief Loads 3D landmarks from a .pp, .json, .csv or .pts file (chosen by the extension), in millimetres
+ *  (JSON files stating "cm" or "m" are converted). Inactive MeshLab points (active="0") are skipped. A JSON file
+ *  whose top level is an array is read as scalismo's layout [{"id": ..., "coordinates": [x, y, z]}], with Basel
+ *  Face Model ids translated by fromBfmLandmarkId().
  */
 LandmarkPositions
 loadLandmarks (const std::string& path);
@@ -45,7 +48,13 @@ loadLandmarks (const std::string& path, const std::vector<std::string>& expected
 LandmarkPositions
 loadNamedPoints (const std::string& path);
 
-/** \brief Loads 2D pixel landmarks from a .json or .csv file (PickedPoints files hold 3D points only). */
+/** \brief Parses scalismo landmark JSON \a text (e.g. a BFM-2017 file's metadata/landmarks/json), naming
+ *  \a source in errors; ids are translated by fromBfmLandmarkId() and otherwise kept as they are.
+ */
+LandmarkPositions
+parseScalismoLandmarks (const std::string& text, const std::string& source);
+
+/** \brief Loads 2D pixel landmarks from a .json, .csv or .pts file (PickedPoints files hold 3D points only). */
 LandmarkPixels
 loadLandmarkPixels (const std::string& path);
 
@@ -53,7 +62,8 @@ loadLandmarkPixels (const std::string& path);
 LandmarkPixels
 loadLandmarkPixels (const std::string& path, const std::vector<std::string>& expected_ids);
 
-/** \brief Writes 3D landmarks (mm) as .pp, .json or .csv (by the extension), in the order of knownLandmarkIds().
+/** \brief Writes 3D landmarks (mm) as .pp, .json or .csv (by the extension), in the order of knownLandmarkIds()
+ *  then ibug68LandmarkIds().
  *  Throws InvalidInputError for an empty set, an unknown id or a non-finite position, IoError if the file
  *  cannot be written.
  */

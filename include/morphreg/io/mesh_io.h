@@ -1,6 +1,7 @@
 #pragma once
 /** \file mesh_io.h
- *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL) on top of PCL's readers, with errors that name the file.
+ *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL; OFF read) on top of PCL's readers, with errors that name
+ *  the file.
  *  Files are taken to be in millimetres; convert data in other units after loading.
  */
 #include <morphreg/mesh/triangle_mesh.h>
@@ -11,8 +12,9 @@
 
 namespace morphreg
 {
-/** \brief Loads a polygon mesh (.ply, .obj, .vtk, .stl). Throws IoError if the file is missing or unreadable,
- *  FormatError if it holds no vertices or no polygons.
+/** \brief Loads a polygon mesh (.ply, .obj, .vtk, .stl, ASCII .off). Throws IoError if the file is missing or
+ *  unreadable, FormatError if it holds no vertices or no polygons (or, for OFF, naming the line of a bad count,
+ *  coordinate or corner index).
  */
 pcl::PolygonMesh
 loadPolygonMesh (const std::string& path);

@@ -33,7 +33,9 @@ loadModel (const std::string& path);
 
 /** \brief Loads the statismo-layout model under \a prefix ("" for the root, "shape" for BFM-2017 files).
  *  statismo v0.8 files (minorVersion 8) store the basis scaled by the standard deviations; it is normalised on
- *  import. A file without a version group is read as v0.9. Coordinates are taken to be in millimetres.
+ *  import. A file without a version group is read as v0.9. Coordinates are taken to be in millimetres. The
+ *  landmarks of a BFM-2017 file's metadata/landmarks/json (scalismo's layout, ids translated by
+ *  fromBfmLandmarkId()) become the model's, each on the mean vertex nearest to it.
  */
 MorphableModel::Ptr
 loadStatismoModel (const std::string& path, const std::string& prefix = "");

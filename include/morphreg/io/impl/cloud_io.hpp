@@ -2,6 +2,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/file_checks.h>
+#include <morphreg/io/mesh_io.h>
 
 #include <pcl/conversions.h>
 #include <pcl/io/obj_io.h>
@@ -17,9 +18,13 @@ typename pcl::PointCloud<PointT>::Ptr
 loadCloud (const std::string& path)
 {
   requireReadableFile (path);
-  requireExtension (path, ".pcd .ply .obj", "point cloud");
+  requireExtension (path, ".pcd .ply .obj .stl .off", "point cloud");
   typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
   const std::string ext = fileExtension (path);
+  if (ext == ".stl" || ext == ".off") { // mesh-only formats: the mesh's vertices are the cloud
+    pcl::fromPCLPointCloud2 (loadPolygonMesh (path).cloud, *cloud);
+    return cloud;
+  }
   const int status = callPclIo (path, [&] {
     if (ext == ".pcd")
       return pcl::io::loadPCDFile (path, *cloud);

@@ -1,0 +1,40 @@
+#pragma once
+/** \file atomic_file.h
+ *  \brief Writing a file so that readers see it whole or not at all: written under a temporary name in the same
+ *  folder, then renamed (atomic on POSIX file systems). A run killed mid-write leaves only the temporary file,
+ *  so a resumed batch can trust every output it finds.
+ */
+#include <cstdio>
+#include <string>
+
+namespace morphreg
+{
+/** \brief The temporary name of \a path while it is written: ".partial.<name>" in the same folder (the extension
+ *  kept, as writers choose the format by it).
+ */
+std::string
+partialPath (const std::string& path);
+
+/** \brief Renames the finished \a partial onto \a path; IoError naming both if that fails. */
+void
+commitPartial (const std::string& partial, const std::string& path);
+
+/** \brief Writes \a path atomically: \a write (a callable taking the file name to write) writes partialPath(path),
+ *  which is then renamed to \a path; if \a write throws, the partial file is removed and the error passed on.
+ */
+template <typename Write>
+void
+writeAtomically (const std::string& path, Write write)
+{
+  const std::string partial = partialPath (path);
+  try {
+    write (partial);
+  }
+  catch (...) {
+    std::remove (partial.c_str ());
+    throw;
+  }
+  commitPartial (partial, path);
+}
+
+} // namespace morphreg

@@ -1,0 +1,300 @@
+// `morphreg register --scans`: a study's scans registered to one model, loaded once, several at a time;
+// resumable (a scan's report on disk means it is done), shardable over a job array, summarised.
+#include "batch_summary.h"
+#include "pipeline.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/atomic_file.h>
+#include <morphreg/io/json_file.h>
+#include <morphreg/io/model_io.h>
+#include <morphreg/io/scan_manifest.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/** Ctrl-C count: the first lets the scans in progress finish, the second exits at once. */
+std::atomic<int> interrupts{0};
+
+extern "C" void
+onInterrupt (int)
+{
+  if (interrupts.fetch_add (1) >= 1)
+    _exit (130); // partial outputs keep their temporary names; a rerun redoes those scans
+}
+
+struct Shard
+{
+  int index = 0, count = 1;
+
+  std::string
+  text () const
+  {
+    return std::to_string (index) + "/" + std::to_string (count);
+  }
+};
+
+int
+environmentInteger (const char* name)
+{
+  const char* value = std::getenv (name);
+  if (value == nullptr || *value == '\0')
+    throw InvalidInputError (std::string ("--shard auto: the environment variable ") + name +
+                             " is not set (run it as a Slurm job array: sbatch --array=0-(N-1))");
+  char* end = nullptr;
+  const long number = std::strtol (value, &end, 10);
+  if (*end != '\0' || number < 0)
+    throw InvalidInputError (std::string ("--shard auto: ") + name + "='" + value + "' is not a whole number");
+  return static_cast<int> (number);
+}
+
+/** "I/N", or "auto": Slurm's array task id (less the array's first id) of its task count. */
+Shard
+parseShard (const std::string& text)
+{
+  if (text.empty ())
+    return {};
+  if (text == "auto") {
+    const int first = std::getenv ("SLURM_ARRAY_TASK_MIN") ? environmentInteger ("SLURM_ARRAY_TASK_MIN") : 0;
+    return {environmentInteger ("SLURM_ARRAY_TASK_ID") - first, environmentInteger ("SLURM_ARRAY_TASK_COUNT")};
+  }
+  Shard shard;
+  char slash = 0, rest = 0;
+  std::istringstream stream (text);
+  if (!(stream >> shard.index >> slash >> shard.count) || slash != '/' || stream >> rest || shard.count < 1 ||
+      shard.index < 0 || shard.index >= shard.count)
+    throw InvalidInputError ("--shard '" + text + "': expected I/N with 0 <= I < N (e.g. 0/4), or auto");
+  return shard;
+}
+
+/** One scan to register: its manifest entry and the options of its run. */
+struct Task
+{
+  ScanEntry entry;
+  RegisterOptions options;
+};
+
+/** The report of a finished attempt, or null if the scan has none (never run, or interrupted mid-fit). */
+nlohmann::json
+finishedReport (const std::string& path)
+{
+  std::error_code ec;
+  if (!fs::is_regular_file (path, ec))
+    return nullptr;
+  try {
+    return readJsonFile (path);
+  }
+  catch (const Error&) {
+    return nullptr; // not written by us (reports are written atomically): redo the scan
+  }
+}
+
+/** Counts, rate and ETA on one stderr line. */
+class BatchProgress
+{
+public:
+  BatchProgress (int total, bool quiet) : total_ (total), quiet_ (quiet), start_ (Clock::now ()) {}
+
+  void
+  done (bool ok)
+  {
+    std::lock_guard<std::mutex> lock (mutex_);
+    ++(ok ? ok_ : failed_);
+    if (quiet_)
+      return;
+    const int finished = ok_ + failed_;
+    const double minutes = std::chrono::duration<double> (Clock::now () - start_).count () / 60.0;
+    const double rate = finished / std::max (minutes, 1e-9);
+    const long eta = std::lround ((total_ - finished) / std::max (rate, 1e-9) * 60.0);
+    std::cerr << "\rregistering [" << finished << '/' << total_ << "] " << ok_ << " ok, " << failed_ << " failed, "
+              << std::fixed << std::setprecision (1) << rate << " scans/min, ETA " << eta / 3600 << ':'
+              << std::setw (2) << std::setfill ('0') << eta / 60 % 60 << ':' << std::setw (2) << eta % 60
+              << std::setfill (' ') << std::defaultfloat << "    " << std::flush;
+  }
+
+  void
+  finish () const
+  {
+    if (!quiet_ && ok_ + failed_ > 0)
+      std::cerr << '\n';
+  }
+
+private:
+  int total_, ok_ = 0, failed_ = 0;
+  bool quiet_;
+  Clock::time_point start_;
+  std::mutex mutex_;
+};
+
+/** Registers one scan; a scan that cannot be registered gets a failure record as its report. */
+nlohmann::json
+registerTask (const Task& task, const MorphableModel::Ptr& model)
+{
+  const auto start = Clock::now ();
+  for (const std::string& output : {task.options.out, reportPath (task.options)})
+    std::remove (partialPath (output).c_str ()); // left by a run killed mid-write
+  std::ostringstream log; // per-scan chatter would interleave between threads
+  try {
+    return registerScan (task.options, model, nullptr, 0.0, log, log);
+  }
+  catch (const FitCheckFailure&) {
+    return readJsonFile (reportPath (task.options)); // written, and marked failed
+  }
+  catch (const std::exception& e) {
+    const nlohmann::json failure = {
+        {"status", "failed"},
+        {"failure", e.what ()},
+        {"scan", {{"file", task.entry.scan}, {"landmarks", task.entry.landmarks}}},
+        {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
+    const std::string path = reportPath (task.options);
+    writeAtomically (path, [&] (const std::string& partial) { writeJsonFile (partial, failure); });
+    return failure;
+  }
+}
+
+/** Runs \a tasks on \a jobs threads of \a threads_per_fit OpenMP threads each; stops taking new ones on Ctrl-C.
+ *  Returns each task's report (null for one not started).
+ */
+std::vector<nlohmann::json>
+runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int jobs, int threads_per_fit,
+          bool quiet)
+{
+  std::vector<nlohmann::json> reports (tasks.size ());
+  std::atomic<std::size_t> next{0};
+  BatchProgress progress (static_cast<int> (tasks.size ()), quiet);
+  std::vector<std::thread> workers;
+  for (int j = 0; j < jobs; ++j)
+    workers.emplace_back ([&] {
+      omp_set_num_threads (threads_per_fit);
+      for (std::size_t k; interrupts.load () == 0 && (k = next.fetch_add (1)) < tasks.size ();) {
+        reports[k] = registerTask (tasks[k], model);
+        progress.done (reports[k].value ("status", "") == "ok");
+      }
+    });
+  for (std::thread& worker : workers)
+    worker.join ();
+  progress.finish ();
+  return reports;
+}
+} // namespace
+
+CLI::Option*
+addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batch)
+{
+  CLI::Option* scans = command->add_option (
+      "--scans", options.scans,
+      "batch mode: a folder of scans (each with <name>_landmarks.json/.pp/.csv/.pts if present) or a manifest CSV "
+      "(rows scan[,landmarks[,id]])");
+  command->add_option ("--out-dir", batch.out_dir, "batch mode: folder of the outputs <id>.ply, <id>.json and "
+                                                   "summary.csv / summary.json")
+      ->needs (scans);
+  command->add_option ("--jobs", batch.jobs, "batch mode: scans registered at once (0: one per core; each fit "
+                                             "gets cores/jobs threads)")
+      ->check (CLI::Range (0, 4096))->needs (scans)->capture_default_str ();
+  command->add_option ("--shard", batch.shard, "batch mode: take share I of N of the scans (I/N, 0-based), or "
+                                               "auto from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT")
+      ->needs (scans);
+  command->add_flag ("--retry-failed", batch.retry_failed, "batch mode: register again the scans that failed")
+      ->needs (scans);
+  return scans;
+}
+
+void
+registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
+{
+  if (batch.out_dir.empty ())
+    throw InvalidInputError ("register --scans: give --out-dir, the folder of the outputs");
+  if (!options.screenshot.empty () || !options.truth.empty () || !options.landmarks.empty () ||
+      !options.report.empty ())
+    throw InvalidInputError ("register --scans: --screenshot, --truth, --landmarks and --report are for one scan "
+                             "(landmark files go in the manifest's second column)");
+  const Shard shard = parseShard (batch.shard);
+  const ScanManifest scans = manifestShard (loadScanList (options.scans), shard.index, shard.count);
+  std::error_code ec;
+  fs::create_directories (batch.out_dir, ec);
+  if (!fs::is_directory (batch.out_dir, ec))
+    throw IoError (batch.out_dir + ": cannot create the output folder");
+
+  std::vector<Task> tasks;
+  std::vector<ScanSummary> rows;
+  int skipped = 0;
+  for (const ScanEntry& entry : scans) {
+    Task task{entry, options};
+    task.options.scan = entry.scan;
+    task.options.landmarks = entry.landmarks;
+    task.options.out = (fs::path (batch.out_dir) / (entry.id + ".ply")).string ();
+    task.options.quiet = true;
+    const nlohmann::json report = finishedReport (reportPath (task.options));
+    const bool failed = !report.is_null () && report.value ("status", "") != "ok";
+    if (report.is_null () || (failed && batch.retry_failed))
+      tasks.push_back (task);
+    else {
+      rows.push_back (summaryFromReport (entry.id, entry.scan, report));
+      ++skipped;
+    }
+  }
+
+  const auto start = Clock::now ();
+  const MorphableModel::Ptr model = loadModel (options.model);
+  const int cores = std::max (1, static_cast<int> (std::thread::hardware_concurrency ()));
+  const int jobs = std::max (1, std::min<int> (batch.jobs > 0 ? batch.jobs : cores, static_cast<int> (tasks.size ())));
+  const int threads_per_fit = std::max (1, cores / jobs);
+  std::cout << "register: " << scans.size () << " scans" << (shard.count > 1 ? " in shard " + shard.text () : "")
+            << ", " << skipped << " already done (skipped), " << tasks.size () << " to register with " << jobs
+            << " jobs of " << threads_per_fit << " threads" << std::endl;
+
+  const auto previous = std::signal (SIGINT, onInterrupt);
+  const std::vector<nlohmann::json> reports = runTasks (tasks, model, jobs, threads_per_fit, options.quiet);
+  std::signal (SIGINT, previous);
+  for (std::size_t k = 0; k < tasks.size (); ++k) {
+    ScanSummary row = summaryFromReport (tasks[k].entry.id, tasks[k].entry.scan, reports[k]);
+    if (reports[k].is_null ())
+      row.status = "pending";
+    rows.push_back (row);
+  }
+  const std::string base =
+      (fs::path (batch.out_dir) /
+       (shard.count > 1 ? "summary.shard-" + std::to_string (shard.index) + "-of-" + std::to_string (shard.count)
+                        : std::string ("summary")))
+          .string ();
+  writeSummary (base, rows, shard.count > 1 ? shard.text () : "all");
+
+  const auto count = [&] (const char* status) {
+    return std::count_if (rows.begin (), rows.end (), [&] (const ScanSummary& r) { return r.status == status; });
+  };
+  const double seconds = std::chrono::duration<double> (Clock::now () - start).count ();
+  std::cout << "registered " << tasks.size () - count ("pending") << " scans in " << std::fixed
+            << std::setprecision (1) << seconds << " s; " << count ("ok") << " ok, " << count ("failed")
+            << " failed, " << count ("pending") << " pending; wrote " << base << ".csv and " << base << ".json"
+            << std::defaultfloat << std::endl;
+  if (interrupts.load () > 0) {
+    std::cerr << "morphreg: interrupted; the finished scans' outputs are complete, rerun the command to resume\n";
+    std::exit (130);
+  }
+  if (count ("failed") > 0)
+    throw FitCheckFailure (std::to_string (count ("failed")) + " of " + std::to_string (rows.size ()) +
+                           " scans failed (see " + base + ".csv)");
+}
+
+} // namespace tools
+} // namespace morphreg

@@ -1,0 +1,109 @@
+// `morphreg model-info`: what a model file holds (regions, components, variances, landmarks), as text or JSON.
+#include "commands.h"
+
+#include <morphreg/io/model_io.h>
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <sstream>
+
+namespace morphreg
+{
+namespace tools
+{
+namespace
+{
+struct ModelInfoOptions
+{
+  std::string model;
+  bool json = false;
+};
+
+std::vector<double>
+toStdVector (const Eigen::VectorXd& values)
+{
+  return std::vector<double> (values.data (), values.data () + values.size ());
+}
+
+/** The model's description; both outputs are printed from it. */
+nlohmann::json
+describeModel (const std::string& path, const MorphableModel& model)
+{
+  nlohmann::json regions = nlohmann::json::array ();
+  for (const ModelRegion& region : model.regions ())
+    regions.push_back ({{"name", region.name},
+                        {"vertices", region.vertices.size ()},
+                        {"components", region.variances.size ()},
+                        {"variances_mm2", toStdVector (region.variances)}});
+  return {{"file", path},
+          {"units", model.units ()},
+          {"vertices", model.numVertices ()},
+          {"triangles", model.triangles ().cols ()},
+          {"regions", regions},
+          {"global_pca",
+           {{"components", model.globalVariances ().size ()},
+            {"variances_mm2", toStdVector (model.globalVariances ())}}},
+          {"noise_variance_mm2", model.noiseVariance ()},
+          {"profile_line_vertices", model.profileLine ().size ()},
+          {"landmarks", model.landmarks ()},
+          {"metadata", model.metadata ()}};
+}
+
+/** "12.5 3.1 ... (40 in all)": the first few variances of a list. */
+std::string
+varianceList (const nlohmann::json& json)
+{
+  const auto variances = json.get<std::vector<double>> ();
+  std::ostringstream text;
+  text << std::setprecision (4);
+  const std::size_t shown = std::min<std::size_t> (variances.size (), 5);
+  for (std::size_t k = 0; k < shown; ++k)
+    text << (k ? " " : "") << variances[k];
+  if (variances.size () > shown)
+    text << " ... (sum " << std::accumulate (variances.begin (), variances.end (), 0.0) << ")";
+  return variances.empty () ? "none" : text.str ();
+}
+
+void
+printText (const nlohmann::json& info)
+{
+  std::cout << info["file"].get<std::string> () << ": " << info["vertices"] << " vertices, " << info["triangles"]
+            << " triangles, units " << info["units"].get<std::string> () << '\n'
+            << "regions (" << info["regions"].size () << "):\n";
+  for (const auto& region : info["regions"])
+    std::cout << "  " << region["name"].get<std::string> () << ": " << region["vertices"] << " vertices, "
+              << region["components"] << " components, variances (mm^2) "
+              << varianceList (region["variances_mm2"]) << '\n';
+  std::cout << "global PCA: " << info["global_pca"]["components"] << " components, variances (mm^2) "
+            << varianceList (info["global_pca"]["variances_mm2"]) << '\n'
+            << "landmarks (" << info["landmarks"].size () << "):";
+  for (const auto& [id, vertex] : info["landmarks"].items ())
+    std::cout << ' ' << id << '=' << vertex;
+  std::cout << '\n';
+}
+} // namespace
+
+void
+registerModelInfoCommand (CLI::App& app)
+{
+  auto options = std::make_shared<ModelInfoOptions> ();
+  CLI::App* command = app.add_subcommand ("model-info", "print a model file's regions, components, variances and "
+                                                        "landmarks");
+  command->add_option ("-m,--model", options->model, "model file (.h5: build-model, statismo or BFM-2017)")
+      ->required ();
+  command->add_flag ("--json", options->json, "print JSON (every variance) instead of text");
+  command->callback ([options] () {
+    const nlohmann::json info = describeModel (options->model, *loadModel (options->model));
+    if (options->json)
+      std::cout << info.dump (2) << '\n';
+    else
+      printText (info);
+  });
+}
+
+} // namespace tools
+} // namespace morphreg
