@@ -77,7 +77,10 @@ fitSyntheticPhotos (const morphreg::synthetic::HeadGenerator& generator, int hea
   std::printf ("photos: %zu silhouette points in %s, %zu landmarks in %s\n", photos.profile.silhouette ().size (),
                side.c_str (), photos.frontal.landmarks ().size (), front.c_str ());
 
-  fit = fitFiles (morphreg::TwoViewFitting (model), approach, side, front);
+  morphreg::TwoViewFitting fitting (model);
+  // The simulator projects vertices for the outline landmarks (jaw, chin, neck): here they are fixed points.
+  fitting.setContourLandmarkWeight (morphreg::TwoViewFitting::kDefaultFrontalWeight);
+  fit = fitFiles (fitting, approach, side, front);
   // The fitted head in the true head's frame: the known pose undone.
   const Eigen::Matrix3Xd back =
       photos.rotation.transpose () * (fit.image_mesh.vertices.colwise () - photos.translation) / photos.scale;

@@ -352,7 +352,19 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   if (!options.quiet)
     showIterations (icp, progress);
   pcl::PointCloud<pcl::PointNormal> aligned;
-  icp.align (aligned);
+  try {
+    icp.align (aligned);
+  }
+  catch (const TooFewCorrespondencesError& e) { // the scan passed its checks: the fit failed, it was not bad input
+    const std::string report_path = reportPath (options);
+    const nlohmann::json report = {{"status", "failed"},
+                                   {"checks", {{"passed", false}, {"failures", {e.what ()}}}},
+                                   {"scan", {{"file", options.scan}, {"points", scan->size ()}}},
+                                   {"settings", settingsJson (options)},
+                                   {"fitted_mesh", nullptr}};
+    writeAtomically (report_path, [&] (const std::string& partial) { writeJsonFile (partial, report); });
+    throw FitCheckFailure (std::string (e.what ()) + "; no mesh written (see " + report_path + ")");
+  }
   const IcpReport& icp_report = icp.getRegistrationReport ();
   progress.finish (static_cast<int> (icp_report.history.size ()));
   const double fit_seconds = secondsSince (fit_start);
@@ -503,7 +515,8 @@ registerRegisterCommand (CLI::App& app)
   command->footer ("The scan is checked before fitting (at least 100 finite points spread in 3D; else exit 1) and "
                    "the fit after it (scale, coverage, coefficients, shape, distance to the scan, divergence): a "
                    "fit that fails its checks exits 4, with the fitted mesh and the report written and the "
-                   "report's status \"failed\".");
+                   "report's status \"failed\"; a fit that loses the scan (too few correspondences) exits 4 with "
+                   "the report alone.");
   auto batch = std::make_shared<BatchOptions> ();
   addBatchOptions (command, *options, *batch)->excludes (scan);
   command->callback ([options, batch, command, scan] () {

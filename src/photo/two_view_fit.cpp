@@ -45,7 +45,7 @@ bool
 isPlausibleShape (const Eigen::VectorXd& standardised)
 {
   const double p = static_cast<double> (standardised.size ());
-  return standardised.squaredNorm () <= p + 3.0 * std::sqrt (2.0 * p);
+  return standardised.squaredNorm () <= p + 5.0 * std::sqrt (2.0 * p);
 }
 
 nlohmann::json

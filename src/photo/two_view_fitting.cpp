@@ -102,6 +102,24 @@ frontalTargets (const MorphableModel& model, const FrontalView& frontal, double 
   return targets;
 }
 
+/** The vertices of a two-view fit: the model's profile line, then the frontal landmark vertices of \a targets. */
+std::vector<int>
+twoViewVertices (const MorphableModel& model, const FrontalTargets& targets)
+{
+  std::vector<int> vertices = model.profileLine ();
+  vertices.insert (vertices.end (), targets.vertices.begin (), targets.vertices.end ());
+  return vertices;
+}
+
+/** The two-view problem over \a shape (built on twoViewVertices) with \a targets' landmarks. */
+TwoViewProblem
+twoViewProblem (ShapeProblem shape, const MorphableModel& model, const FrontalTargets& targets, double sagittal_weight,
+                double max_distance)
+{
+  return {std::move (shape), static_cast<Eigen::Index> (model.profileLine ().size ()), targets.points, targets.weights,
+          sagittal_weight, max_distance};
+}
+
 /** \a state with the constrained vertices of \a problem. */
 PoseShapeState
 onProblem (PoseShapeState state, const ShapeProblem& problem)
@@ -418,14 +436,8 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
   TwoViewFit result = fitProfile (profile);
   result.ignored_landmarks = targets.ignored;
   // The error that decides when to stop: the image residuals of the joint fit's rows.
-  std::vector<int> two_view_vertices = model_->profileLine ();
-  two_view_vertices.insert (two_view_vertices.end (), targets.vertices.begin (), targets.vertices.end ());
-  const TwoViewProblem two_view{shapeProblem (two_view_vertices),
-                                static_cast<Eigen::Index> (model_->profileLine ().size ()),
-                                targets.points,
-                                targets.weights,
-                                sagittal_weight_,
-                                max_distance_};
+  const TwoViewProblem two_view = twoViewProblem (shapeProblem (twoViewVertices (*model_, targets)), *model_,
+                                                  targets, sagittal_weight_, max_distance_);
   std::vector<int> all (static_cast<size_t> (model_->numVertices ()));
   std::iota (all.begin (), all.end (), 0);
   const ShapeProblem whole = shapeProblem (all);
@@ -472,18 +484,10 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
 TwoViewFit
 TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) const
 {
-  std::vector<int> vertices = model_->profileLine ();
-  FrontalTargets targets;
-  if (frontal) {
-    targets = frontalTargets (*model_, *frontal, frontal_weight_, contour_weight_);
-    vertices.insert (vertices.end (), targets.vertices.begin (), targets.vertices.end ());
-  }
-  const TwoViewProblem problem{shapeProblem (vertices),
-                               static_cast<Eigen::Index> (model_->profileLine ().size ()),
-                               targets.points,
-                               targets.weights,
-                               sagittal_weight_,
-                               max_distance_};
+  const FrontalTargets targets =
+      frontal ? frontalTargets (*model_, *frontal, frontal_weight_, contour_weight_) : FrontalTargets ();
+  const TwoViewProblem problem = twoViewProblem (shapeProblem (twoViewVertices (*model_, targets)), *model_, targets,
+                                                 sagittal_weight_, max_distance_);
   const Eigen::Matrix2Xd silhouette_points = profile.normalisedSilhouette ();
   const Polyline2d silhouette (silhouette_points);
   PoseShapeState state = initialState (*model_, problem, silhouette);

@@ -509,7 +509,7 @@ TEST_F (MorphableIcpTest, BadInputIsReported)
     icp.setInputTarget (scan.cloud);
     icp.setTargetLandmarks (scan.landmarks);
     icp.setMaxCorrespondenceDistance (1e-3);
-    EXPECT_THROW (icp.align (output), morphreg::InvalidInputError) << "fewer correspondences than unknowns";
+    EXPECT_THROW (icp.align (output), morphreg::TooFewCorrespondencesError) << "fewer correspondences than unknowns";
   }
   {
     Icp icp = makeIcp ();

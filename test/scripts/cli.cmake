@@ -157,10 +157,12 @@ if(EXISTS ${scan_in_metres})
             -DREPORT=${cli_dir}/units_m.json -DUNITS=m -DDETECTION=auto -P ${cli_scripts}/check_register_units.cmake)
   set_tests_properties(CliTest.RegisterDetectsAScanInMetres PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 endif()
-# A fit that fails its checks exits 4, and its report is written and marked failed: a mm scan read as cm.
+# A fit that fails its checks exits 4, and its report is written and marked failed: a mm scan read as cm. The fit
+# either shrinks the model until its scale fails the checks or loses every correspondence (seen on one machine
+# and the other); both are failed fits.
 add_test(NAME CliTest.RegisterFailedChecksExit4
   COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|register|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--units|cm|--quiet|--out|${cli_dir}/failed.ply"
-          -DEXPECT_CODE=4 "-DEXPECT_TEXT=the fit failed its checks: the head's scale" -DREPORT=${cli_dir}/failed.json
+          -DEXPECT_CODE=4 "-DEXPECT_TEXT=the fit failed its checks: " -DREPORT=${cli_dir}/failed.json
           -P ${cli_scripts}/expect_exit.cmake)
 set_tests_properties(CliTest.RegisterFailedChecksExit4 PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 morphreg_cli_expect_exit(RegisterWrongComponentCountExits1 1 "regions"

@@ -32,6 +32,16 @@ public:
   using Error::Error;
 };
 
+/** \brief A registration lost its target: too few correspondences were left to determine the unknowns (a scan in
+ *  the wrong unit or far from the start pose, or a max correspondence distance too small). An InvalidInputError,
+ *  since it is the input that cannot be registered as given.
+ */
+class TooFewCorrespondencesError : public InvalidInputError
+{
+public:
+  using InvalidInputError::InvalidInputError;
+};
+
 /** \brief A file is missing, unreadable or cannot be written. */
 class IoError : public Error
 {

@@ -860,7 +860,7 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
       const Evaluation ev = evaluate (state, loss);
       const int rows = static_cast<int> (ev.kept.size () + problem.landmark_vertices.size ());
       if (rows < unknowns)
-        throw InvalidInputError ("MorphableICP: " + std::to_string (ev.kept.size ()) + " correspondences (of " +
+        throw TooFewCorrespondencesError ("MorphableICP: " + std::to_string (ev.kept.size ()) + " correspondences (of " +
                                  std::to_string (ev.found) + " found) and " +
                                  std::to_string (problem.landmark_vertices.size ()) + " landmarks for " +
                                  std::to_string (unknowns) + " unknowns; check the max correspondence distance, "
