@@ -4,6 +4,8 @@
 // and the whole MorphableICP registration (ICT-FaceKit, 7 regions x 30 components, the README's real-scan settings).
 #include "../test/real_scans/real_scan_support.h"
 
+#include <morphreg/common/cloud_matrix.h>
+
 #include <morphreg/registration/global_alignment.h>
 
 #include <pcl/registration/icp.h>
@@ -25,12 +27,8 @@ struct Fixture
   Fixture () : original (leeScan82k ()), pose (randomPose (101))
   {
     scan = posed (*original, pose);
-    points.resize (3, scan->size ());
-    normals.resize (3, scan->size ());
-    for (size_t i = 0; i < scan->size (); ++i) {
-      points.col (i) = (*scan)[i].getVector3fMap ().cast<double> ();
-      normals.col (i) = (*scan)[i].getNormalVector3fMap ().cast<double> ();
-    }
+    points = morphreg::pointsOf (*scan);
+    normals = morphreg::normalsOf (*scan);
     ictModel30 (); // built once, outside the timings
   }
 };

@@ -2,7 +2,7 @@
 // Fit at n = 66, 500, 1000 landmarks (both), 2000 and 5000 (ours only: VTK's O(n^3) Jacobi takes many minutes);
 // evaluation of 16k and 1M points at n = 66, 500, 1000. Wall-clock times (ours runs on all OpenMP threads, VTK on
 // one); pairs/s = point-landmark pairs per second.
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include <benchmark/benchmark.h>
 #include <vtkNew.h>

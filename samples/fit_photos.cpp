@@ -21,7 +21,7 @@
 #include <morphreg/photo/photo_view_io.h>
 #include <morphreg/photo/two_view_fitting.h>
 #include <morphreg/synthetic/photo_simulator.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 #include <morphreg/io/model_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/registration/morphable_icp.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 
 #include <pcl/registration/correspondence_rejection_median_distance.h>
 #include <pcl/registration/correspondence_rejection_one_to_one.h>

@@ -8,9 +8,9 @@
 
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 #include <morphreg/synthetic/head_generator.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 
 #include <cstdio>
 

@@ -12,7 +12,7 @@
 #include <morphreg/photo/photo_view_io.h>
 #include <morphreg/photo/rgb_image.h>
 #include <morphreg/photo/two_view_fitting.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 
 #include <chrono>
 #include <cmath>

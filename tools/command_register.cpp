@@ -5,6 +5,7 @@
 #include "pipeline.h"
 #include "progress.h"
 
+#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/atomic_file.h>
@@ -17,7 +18,7 @@
 #include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/scan_checks.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include <pcl/registration/correspondence_rejection_distance.h>
@@ -86,7 +87,7 @@ loadScan (const std::string& path)
   dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
-  requireRegistrableScan (scan->getMatrixXfMap (3, sizeof (pcl::PointNormal) / sizeof (float), 0).cast<double> (),
+  requireRegistrableScan (pointsOf (*scan),
                           path);
   scan->is_dense = true;
   return scan;
@@ -102,7 +103,7 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
     const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
     const Eigen::Vector3d centroid = mean.rowwise ().mean ();
     const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
-    unit = guessLengthUnit (scan.getMatrixXfMap (3, sizeof (pcl::PointNormal) / sizeof (float), 0).cast<double> (),
+    unit = guessLengthUnit (pointsOf (scan),
                             model_radius);
   }
   else {

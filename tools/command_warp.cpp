@@ -9,9 +9,9 @@
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/registration/segmented_warp.h>
-#include <morphreg/registration/warp_quality.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/warp/segmented_warp.h>
+#include <morphreg/warp/warp_quality.h>
+#include <morphreg/common/colour_map.h>
 
 #include <nlohmann/json.hpp>
 

@@ -2,6 +2,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
+#include <morphreg/common/order_statistics.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,22 +28,7 @@ constexpr double kMaxHeadRatio = 10.0;
 double
 robustRadius (const Eigen::Matrix3Xd& points)
 {
-  Eigen::Vector3d median;
-  for (int d = 0; d < 3; ++d) {
-    std::vector<double> row (static_cast<size_t> (points.cols ()));
-    for (Eigen::Index i = 0; i < points.cols (); ++i)
-      row[static_cast<size_t> (i)] = points (d, i);
-    std::nth_element (row.begin (), row.begin () + static_cast<long> (row.size () / 2), row.end ());
-    median[d] = row[row.size () / 2];
-  }
-  std::vector<std::pair<double, Eigen::Index>> by_distance;
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    by_distance.emplace_back ((points.col (i) - median).squaredNorm (), i);
-  const auto keep = std::max<size_t> (4, static_cast<size_t> (0.9 * static_cast<double> (by_distance.size ())));
-  std::nth_element (by_distance.begin (), by_distance.begin () + static_cast<long> (keep - 1), by_distance.end ());
-  Eigen::Matrix3Xd kept (3, static_cast<Eigen::Index> (keep));
-  for (size_t k = 0; k < keep; ++k)
-    kept.col (static_cast<Eigen::Index> (k)) = points.col (by_distance[k].second);
+  const Eigen::Matrix3Xd kept = pointsNearMedian (points, 0.9, 4);
   const Eigen::Vector3d centroid = kept.rowwise ().mean ();
   return std::sqrt ((kept.colwise () - centroid).colwise ().squaredNorm ().mean ());
 }

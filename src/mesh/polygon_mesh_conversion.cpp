@@ -1,4 +1,5 @@
 #include <morphreg/common/error.h>
+#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 
@@ -44,9 +45,7 @@ fromPolygonMesh (const pcl::PolygonMesh& mesh, const std::string& name)
   pcl::PointCloud<pcl::PointXYZ> cloud;
   pcl::fromPCLPointCloud2 (mesh.cloud, cloud);
   TriangleMesh result;
-  result.vertices.resize (3, static_cast<Eigen::Index> (cloud.size ()));
-  for (size_t i = 0; i < cloud.size (); ++i)
-    result.vertices.col (i) = cloud[i].getVector3fMap ().cast<double> ();
+  result.vertices = pointsOf (cloud);
   result.triangles.resize (3, static_cast<Eigen::Index> (mesh.polygons.size ()));
   for (size_t t = 0; t < mesh.polygons.size (); ++t) {
     const auto& vertices = mesh.polygons[t].vertices;

@@ -4,7 +4,7 @@
 #include <morphreg/common/landmarks.h>
 #include <morphreg/photo/polyline_2d.h>
 #include <morphreg/photo/two_view_fitting.h>
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include <Eigen/Eigenvalues>
 

@@ -1,4 +1,5 @@
 #include <morphreg/common/error.h>
+#include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/surface_sampling.h>
 #include <morphreg/registration/global_alignment.h>
@@ -126,8 +127,8 @@ surfaceOnly (const OrientedPoints& thinned)
       normals.col (i) = fitPlane (neighbours).normal;
     }
   }
-  const double limit = 3.0 * detail::trimmedLimit (reach, 0.5);
-  const double typical_spacing = std::max (detail::trimmedLimit (spacing, 0.5), 1e-12);
+  const double limit = 3.0 * trimmedLimit (reach, 0.5);
+  const double typical_spacing = std::max (trimmedLimit (spacing, 0.5), 1e-12);
   OrientedPoints kept{Eigen::Matrix3Xd (3, n), Eigen::Matrix3Xd (3, n), Eigen::VectorXd (n)};
   Eigen::Index count = 0;
   for (Eigen::Index i = 0; i < n; ++i)

@@ -1,4 +1,5 @@
 #include <morphreg/common/error.h>
+#include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/registration/initial_alignment.h>
 
@@ -26,8 +27,6 @@ using detail::evenSamples;
 using detail::pointTree;
 using detail::similarityAbout;
 using detail::transformed;
-using detail::trimmedLimit;
-using detail::trimmedMean;
 
 /** Centroid and covariance of the 90 % of \a points nearest to their coordinate-wise median. */
 struct RobustMoments
@@ -36,45 +35,13 @@ struct RobustMoments
   Eigen::Matrix3d covariance;
 };
 
-double
-median (std::vector<double> values)
-{
-  const auto mid = values.begin () + static_cast<long> (values.size () / 2);
-  std::nth_element (values.begin (), mid, values.end ());
-  return *mid;
-}
-
 RobustMoments
 trimmedMoments (const Eigen::Matrix3Xd& points)
 {
-  Eigen::Vector3d centre;
-  for (int d = 0; d < 3; ++d) {
-    const Eigen::RowVectorXd row = points.row (d);
-    centre[d] = median (std::vector<double> (row.data (), row.data () + row.size ()));
-  }
-  std::vector<double> distances (points.cols ());
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    distances[i] = (points.col (i) - centre).squaredNorm ();
-  std::vector<double> sorted = distances;
-  const auto keep = std::max<size_t> (4, static_cast<size_t> (0.9 * static_cast<double> (sorted.size ())));
-  std::nth_element (sorted.begin (), sorted.begin () + static_cast<long> (keep - 1), sorted.end ());
-  const double limit = sorted[keep - 1];
-
-  RobustMoments moments{Eigen::Vector3d::Zero (), Eigen::Matrix3d::Zero ()};
-  double count = 0.0;
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    if (distances[i] <= limit) {
-      moments.centroid += points.col (i);
-      count += 1.0;
-    }
-  moments.centroid /= count;
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    if (distances[i] <= limit) {
-      const Eigen::Vector3d d = points.col (i) - moments.centroid;
-      moments.covariance += d * d.transpose ();
-    }
-  moments.covariance /= count;
-  return moments;
+  const Eigen::Matrix3Xd kept = pointsNearMedian (points, 0.9, 4);
+  const Eigen::Vector3d centroid = kept.rowwise ().mean ();
+  const Eigen::Matrix3Xd centred = kept.colwise () - centroid;
+  return {centroid, centred * centred.transpose () / static_cast<double> (kept.cols ())};
 }
 
 /** Eigenvectors of \a covariance as columns, by decreasing eigenvalue. */

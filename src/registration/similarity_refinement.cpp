@@ -1,5 +1,7 @@
 #include "similarity_refinement.h"
 
+#include <morphreg/common/order_statistics.h>
+
 #include <morphreg/registration/cached_correspondence_estimation.h>
 
 #include <Eigen/Cholesky>
@@ -67,27 +69,6 @@ Eigen::Matrix3Xd
 transformed (const Eigen::Matrix4d& transform, const Eigen::Matrix3Xd& points)
 {
   return (transform.topLeftCorner<3, 3> () * points).colwise () + transform.topRightCorner<3, 1> ();
-}
-
-double
-trimmedLimit (std::vector<double> distances, double fraction)
-{
-  const auto keep = std::max<size_t> (1, static_cast<size_t> (fraction * static_cast<double> (distances.size ())));
-  std::nth_element (distances.begin (), distances.begin () + static_cast<long> (keep - 1), distances.end ());
-  return distances[keep - 1];
-}
-
-double
-trimmedMean (const std::vector<double>& distances, double fraction)
-{
-  const double limit = trimmedLimit (distances, fraction);
-  double sum = 0.0, count = 0.0;
-  for (double d : distances)
-    if (d <= limit) {
-      sum += d;
-      count += 1.0;
-    }
-  return sum / count;
 }
 
 Closest

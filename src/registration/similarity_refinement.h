@@ -26,14 +26,6 @@ evenSamples (const Eigen::Matrix3Xd& points, int count);
 Eigen::Matrix3Xd
 transformed (const Eigen::Matrix4d& transform, const Eigen::Matrix3Xd& points);
 
-/** The distance below which the \a fraction smallest of \a distances lie. */
-double
-trimmedLimit (std::vector<double> distances, double fraction);
-
-/** The mean of the \a fraction smallest of \a distances. */
-double
-trimmedMean (const std::vector<double>& distances, double fraction);
-
 /** Closest point of a tree (its index) and the distance, per query point. */
 struct Closest
 {

@@ -1,4 +1,5 @@
 #include <morphreg/common/error.h>
+#include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/surface_sampling.h>
 #include <morphreg/mesh/triangle_locator.h>
 #include <morphreg/registration/surface_distance.h>
@@ -9,20 +10,6 @@
 
 namespace morphreg
 {
-double
-percentile (std::vector<double> values, double fraction)
-{
-  if (values.empty ())
-    throw InvalidInputError ("percentile: no values");
-  if (!(fraction >= 0.0 && fraction <= 1.0))
-    throw InvalidInputError ("percentile: the fraction must lie in [0, 1], got " + std::to_string (fraction));
-  std::sort (values.begin (), values.end ());
-  const double position = fraction * static_cast<double> (values.size () - 1);
-  const auto below = static_cast<size_t> (std::floor (position));
-  const size_t above = std::min (below + 1, values.size () - 1);
-  return values[below] + (position - static_cast<double> (below)) * (values[above] - values[below]);
-}
-
 namespace
 {
 /** Fills the statistics of \a result from its distances. */

@@ -1,6 +1,6 @@
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/impl/registration_visualizer.hpp>
 
 #include <pcl/visualization/pcl_visualizer.h>

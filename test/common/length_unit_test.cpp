@@ -1,5 +1,5 @@
 // guessLengthUnit on head-sized point sets in every unit, the sizes each unit is recognised over, and the unit
-// symbols; the scan checks and the fit's plausibility checks are in test/icp/scan_checks_test.cpp.
+// symbols; the scan checks and the fit's plausibility checks are in test/registration/scan_checks_test.cpp.
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 

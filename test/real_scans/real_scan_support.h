@@ -2,7 +2,7 @@
 // The shared real head-and-shoulders scan (Lee Perry-Smith, ../shared/data/real_head_scans), the ICT-FaceKit
 // 7-region model with 30 components per region, random similarity poses and the scan's evaluation convention:
 // area samples of the scan mesh to the fitted surface, over the model's face triangles.
-#include "../icp_ict/ict_data.h"
+#include "../registration/ict_data.h"
 
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/mesh_io.h>

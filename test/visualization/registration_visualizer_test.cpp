@@ -1,6 +1,6 @@
 #include <morphreg/common/error.h>
 #include <morphreg/synthetic/head_generator.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include "support/temp_directory.h"

@@ -1,7 +1,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/makehuman_bodies.h>
-#include <morphreg/registration/segmented_warp.h>
-#include <morphreg/registration/warp_quality.h>
+#include <morphreg/warp/segmented_warp.h>
+#include <morphreg/warp/warp_quality.h>
 
 #include "support/test_meshes.h"
 

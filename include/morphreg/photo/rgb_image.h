@@ -2,7 +2,7 @@
 /** \file rgb_image.h
  *  \brief An 8-bit RGB photo in memory, read from and written to PNG or JPEG with VTK's image readers.
  */
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 
 #include <string>
 #include <vector>

@@ -48,10 +48,5 @@ surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
 SurfaceDistance
 surfaceDistanceOver (const SurfaceDistance& distance, const std::vector<bool>& triangles);
 
-/** \brief The value below which \a fraction (in [0, 1]) of \a values lie (linear interpolation between order
- *  statistics); throws InvalidInputError for an empty set or a fraction outside [0, 1].
- */
-double
-percentile (std::vector<double> values, double fraction);
 
 } // namespace morphreg

@@ -1,4 +1,4 @@
-#include <morphreg/registration/impl/tps_kernel.hpp>
+#include <morphreg/warp/impl/tps_kernel.hpp>
 
 // x86-64-v4 (AVX-512) and v3 (AVX2, FMA) clones next to the baseline, picked by the loader for the running CPU.
 // Builds that already target a CPU (MORPHREG_NATIVE, or any -march with AVX2) compile the loop for it alone.

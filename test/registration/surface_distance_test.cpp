@@ -53,19 +53,9 @@ TEST (SurfaceDistanceTest, TargetPartsBeyondTheFittedBoundaryAreDropped)
   EXPECT_LT (overlap.dropped_on_boundary, 40) << "only samples on the fitted border itself";
 }
 
-TEST (SurfaceDistanceTest, PercentilesInterpolateBetweenOrderStatistics)
-{
-  EXPECT_DOUBLE_EQ (morphreg::percentile ({3.0, 1.0, 2.0}, 0.5), 2.0);
-  EXPECT_DOUBLE_EQ (morphreg::percentile ({4.0, 1.0, 2.0, 3.0}, 0.5), 2.5);
-  EXPECT_DOUBLE_EQ (morphreg::percentile ({0.0, 10.0}, 0.95), 9.5);
-  EXPECT_DOUBLE_EQ (morphreg::percentile ({7.0}, 1.0), 7.0);
-}
-
 TEST (SurfaceDistanceTest, BadInputIsReported)
 {
   const TriangleMesh grid = morphreg::test::makeGrid (5);
-  EXPECT_THROW (morphreg::percentile ({}, 0.5), morphreg::InvalidInputError);
-  EXPECT_THROW (morphreg::percentile ({1.0}, 1.5), morphreg::InvalidInputError);
   EXPECT_THROW (morphreg::surfaceDistance (grid, TriangleMesh ()), morphreg::InvalidInputError);
   EXPECT_THROW (morphreg::surfaceDistance (TriangleMesh (), grid), morphreg::InvalidInputError);
   EXPECT_THROW (morphreg::surfaceDistance (grid, grid, {true, false}), morphreg::InvalidInputError);

@@ -1,8 +1,8 @@
 #pragma once
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
-#include <morphreg/registration/impl/tps_solver.h>
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/impl/tps_solver.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include <pcl/PCLPointField.h>
 #include <pcl/type_traits.h>

@@ -1,6 +1,6 @@
 #include <morphreg/common/error.h>
-#include <morphreg/registration/impl/tps_kernel.hpp>
-#include <morphreg/registration/impl/tps_solver.h>
+#include <morphreg/warp/impl/tps_kernel.hpp>
+#include <morphreg/warp/impl/tps_solver.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>

@@ -1,5 +1,5 @@
 // Agreement with VTK's thin plate spline (SetBasisToR: U = +r, the same L and right-hand side as ours).
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include "tps_test_support.h"
 

@@ -1,7 +1,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/mesh_topology.h>
-#include <morphreg/registration/warp_quality.h>
+#include <morphreg/warp/warp_quality.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #include <morphreg/common/error.h>
-#include <morphreg/registration/transformation_estimation_tps.h>
+#include <morphreg/warp/transformation_estimation_tps.h>
 
 #include "tps_test_support.h"
 

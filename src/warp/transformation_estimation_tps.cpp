@@ -1,4 +1,4 @@
-#include <morphreg/registration/impl/transformation_estimation_tps.hpp>
+#include <morphreg/warp/impl/transformation_estimation_tps.hpp>
 
 #define MORPHREG_INSTANTIATE_TPS_ESTIMATION(T)                                                                     \
   template class morphreg::TransformationEstimationTPS<T, T, double>;                                             \

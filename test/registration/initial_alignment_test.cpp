@@ -2,6 +2,8 @@
 // and clear errors for bad input.
 #include "scan_protocol.h"
 
+#include <morphreg/common/cloud_matrix.h>
+
 #include <morphreg/common/error.h>
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/synthetic/head_generator.h>
@@ -23,10 +25,7 @@ namespace
 Eigen::Matrix3Xd
 scanPoints (const morphreg::test::ProtocolScan& scan)
 {
-  Eigen::Matrix3Xd points (3, scan.cloud->size ());
-  for (size_t i = 0; i < scan.cloud->size (); ++i)
-    points.col (i) = (*scan.cloud)[i].getVector3fMap ().cast<double> ();
-  return points;
+  return morphreg::pointsOf (*scan.cloud);
 }
 } // namespace
 

@@ -4,7 +4,7 @@
  *  fast evaluation on points, PCL clouds and meshes.
  */
 #include <morphreg/mesh/triangle_mesh.h>
-#include <morphreg/registration/impl/tps_kernel.hpp>
+#include <morphreg/warp/impl/tps_kernel.hpp>
 
 #include <pcl/PolygonMesh.h>
 #include <pcl/correspondence.h>

@@ -1,7 +1,7 @@
 #pragma once
 #include <morphreg/common/error.h>
-#include <morphreg/registration/impl/thin_plate_spline.hpp>
-#include <morphreg/registration/transformation_estimation_tps.h>
+#include <morphreg/warp/impl/thin_plate_spline.hpp>
+#include <morphreg/warp/transformation_estimation_tps.h>
 
 namespace morphreg
 {

@@ -2,9 +2,10 @@
 // random similarity, holes, noise, outliers and noisy landmarks; error = vertex RMS against the posed truth.
 // The protocol's holes (crown cap at +Y, under the chin at +Z) fit the ICT frame (+Y up, +Z out of the face).
 // 60 registrations: about 2 minutes of CPU time.
-#include "../icp/scan_protocol.h" // shared with test/icp (the built-in population's suite)
+#include "scan_protocol.h"
 #include "ict_data.h"
 
+#include <morphreg/common/order_statistics.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/surface_distance.h>
 

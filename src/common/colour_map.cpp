@@ -1,5 +1,5 @@
 #include <morphreg/common/error.h>
-#include <morphreg/visualization/colour_map.h>
+#include <morphreg/common/colour_map.h>
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/registration/segmented_warp.h>
+#include <morphreg/warp/segmented_warp.h>
 
 #include <pcl/conversions.h>
 

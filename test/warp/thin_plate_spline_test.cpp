@@ -1,5 +1,5 @@
 #include <morphreg/common/error.h>
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include "tps_test_support.h"
 

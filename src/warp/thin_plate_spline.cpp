@@ -1,4 +1,4 @@
-#include <morphreg/registration/impl/thin_plate_spline.hpp>
+#include <morphreg/warp/impl/thin_plate_spline.hpp>
 
 #define MORPHREG_INSTANTIATE_TPS_POINT(S, D, T)                                                                    \
   template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (const pcl::PointCloud<T>&, const pcl::PointCloud<T>&); \

@@ -4,7 +4,7 @@
  *  blended over a width measured along the mesh.
  */
 #include <morphreg/mesh/triangle_mesh.h>
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include <pcl/PolygonMesh.h>
 

@@ -1,5 +1,5 @@
 // Use case: warp one synthetic head onto another head's landmarks (the foundation's population).
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 #include <morphreg/synthetic/head_generator.h>
 
 #include "tps_test_support.h"

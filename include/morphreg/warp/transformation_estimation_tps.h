@@ -3,7 +3,7 @@
  *  \brief PCL-style estimation of a thin plate spline warp from corresponding points, next to PCL's
  *  pcl::registration::TransformationEstimation* classes (which estimate rigid/affine matrices instead).
  */
-#include <morphreg/registration/thin_plate_spline.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include <pcl/correspondence.h>
 #include <pcl/point_cloud.h>

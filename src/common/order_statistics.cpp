@@ -1,0 +1,98 @@
+#include <morphreg/common/error.h>
+#include <morphreg/common/order_statistics.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace morphreg
+{
+namespace
+{
+void
+requireValues (const std::vector<double>& values, const char* what)
+{
+  if (values.empty ())
+    throw InvalidInputError (std::string (what) + ": no values");
+}
+
+size_t
+keptCount (size_t size, double fraction)
+{
+  return std::max<size_t> (1, std::min (size, static_cast<size_t> (fraction * static_cast<double> (size))));
+}
+} // namespace
+
+double
+median (std::vector<double> values)
+{
+  requireValues (values, "median");
+  const auto mid = values.begin () + static_cast<long> (values.size () / 2);
+  std::nth_element (values.begin (), mid, values.end ());
+  return *mid;
+}
+
+double
+percentile (std::vector<double> values, double fraction)
+{
+  requireValues (values, "percentile");
+  if (!(fraction >= 0.0 && fraction <= 1.0))
+    throw InvalidInputError ("percentile: the fraction must lie in [0, 1], got " + std::to_string (fraction));
+  std::sort (values.begin (), values.end ());
+  const double position = fraction * static_cast<double> (values.size () - 1);
+  const auto below = static_cast<size_t> (std::floor (position));
+  const size_t above = std::min (below + 1, values.size () - 1);
+  return values[below] + (position - static_cast<double> (below)) * (values[above] - values[below]);
+}
+
+double
+trimmedLimit (std::vector<double> values, double fraction)
+{
+  requireValues (values, "trimmedLimit");
+  const size_t keep = keptCount (values.size (), fraction);
+  std::nth_element (values.begin (), values.begin () + static_cast<long> (keep - 1), values.end ());
+  return values[keep - 1];
+}
+
+double
+trimmedMean (const std::vector<double>& values, double fraction)
+{
+  const double limit = trimmedLimit (values, fraction);
+  double sum = 0.0, count = 0.0;
+  for (double v : values)
+    if (v <= limit) {
+      sum += v;
+      count += 1.0;
+    }
+  return sum / count;
+}
+
+Eigen::Vector3d
+coordinateMedian (const Eigen::Matrix3Xd& points)
+{
+  Eigen::Vector3d centre;
+  for (int d = 0; d < 3; ++d) {
+    const Eigen::RowVectorXd row = points.row (d);
+    centre[d] = median (std::vector<double> (row.data (), row.data () + row.size ()));
+  }
+  return centre;
+}
+
+Eigen::Matrix3Xd
+pointsNearMedian (const Eigen::Matrix3Xd& points, double fraction, Eigen::Index minimum)
+{
+  const Eigen::Vector3d centre = coordinateMedian (points);
+  std::vector<std::pair<double, Eigen::Index>> by_distance;
+  by_distance.reserve (static_cast<size_t> (points.cols ()));
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    by_distance.emplace_back ((points.col (i) - centre).squaredNorm (), i);
+  const auto keep = std::min (by_distance.size (),
+                              std::max (static_cast<size_t> (minimum), keptCount (by_distance.size (), fraction)));
+  std::nth_element (by_distance.begin (), by_distance.begin () + static_cast<long> (keep - 1), by_distance.end ());
+  Eigen::Matrix3Xd kept (3, static_cast<Eigen::Index> (keep));
+  for (size_t k = 0; k < keep; ++k)
+    kept.col (static_cast<Eigen::Index> (k)) = points.col (by_distance[k].second);
+  return kept;
+}
+} // namespace morphreg
