@@ -27,6 +27,115 @@ vertexFaces (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices
     for (int c = 0; c < 3; ++c)
       faces[fill[triangles (c, t)]++] = static_cast<int> (t);
 }
+/** Each undirected edge once (a < b, sorted) with the number of triangles that use it. */
+std::vector<MeshTopology::Edge>
+countEdges (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices)
+{
+  std::vector<MeshTopology::Edge> edges;
+  std::unordered_map<long long, int> edge_index;
+  edge_index.reserve (static_cast<size_t> (triangles.cols ()) * 2);
+  for (Eigen::Index t = 0; t < triangles.cols (); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const int a = std::min (triangles (c, t), triangles ((c + 1) % 3, t));
+      const int b = std::max (triangles (c, t), triangles ((c + 1) % 3, t));
+      const long long key = static_cast<long long> (a) * num_vertices + b;
+      const auto it = edge_index.find (key);
+      if (it == edge_index.end ()) {
+        edge_index.emplace (key, static_cast<int> (edges.size ()));
+        edges.push_back ({a, b, 1});
+      }
+      else
+        ++edges[it->second].face_count;
+    }
+  std::sort (edges.begin (), edges.end (), [] (const MeshTopology::Edge& x, const MeshTopology::Edge& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  return edges;
+}
+
+/** The CSR adjacency of \a edges: sorted neighbours of vertex v in neighbours[offsets[v], offsets[v + 1]). */
+void
+adjacency (const std::vector<MeshTopology::Edge>& edges, Eigen::Index num_vertices, std::vector<int>& offsets,
+           std::vector<int>& neighbours)
+{
+  offsets.assign (num_vertices + 1, 0);
+  for (const auto& e : edges) {
+    ++offsets[e.a + 1];
+    ++offsets[e.b + 1];
+  }
+  for (Eigen::Index v = 0; v < num_vertices; ++v)
+    offsets[v + 1] += offsets[v];
+  neighbours.resize (offsets.back ());
+  std::vector<int> fill (offsets.begin (), offsets.end () - 1);
+  for (const auto& e : edges) {
+    neighbours[fill[e.a]++] = e.b;
+    neighbours[fill[e.b]++] = e.a;
+  }
+  for (Eigen::Index v = 0; v < num_vertices; ++v)
+    std::sort (neighbours.begin () + offsets[v], neighbours.begin () + offsets[v + 1]);
+}
+
+/** The link of vertex \a v (its triangles' opposite edges, as a vertex -> neighbours map); false if a triangle
+ *  uses v twice.
+ */
+bool
+vertexLink (const TriangleMesh::Triangles& triangles, const int* first_face, const int* last_face, int v,
+            std::unordered_map<int, std::vector<int>>& link)
+{
+  for (const int* face = first_face; face != last_face; ++face) {
+    int others[2], n = 0;
+    for (int c = 0; c < 3; ++c)
+      if (triangles (c, *face) != v) {
+        if (n < 2)
+          others[n] = triangles (c, *face);
+        ++n;
+      }
+    if (n != 2)
+      return false;
+    link[others[0]].push_back (others[1]);
+    link[others[1]].push_back (others[0]);
+  }
+  return true;
+}
+
+/** True if \a link is one cycle (the link of a closed manifold vertex): every vertex on two of its edges and a
+ *  walk through them visits them all.
+ */
+bool
+isSingleCycle (const std::unordered_map<int, std::vector<int>>& link)
+{
+  for (const auto& entry : link)
+    if (entry.second.size () != 2)
+      return false;
+  size_t visited = 1;
+  const int start = link.begin ()->first;
+  int previous = start, current = link.begin ()->second[0];
+  while (current != start && visited <= link.size ()) {
+    const auto& next = link.at (current);
+    const int following = next[0] == previous ? next[1] : next[0];
+    previous = current;
+    current = following;
+    ++visited;
+  }
+  return visited == link.size ();
+}
+
+/** True if the star of every vertex of \a triangles is a single fan (vertices in no triangle pass). */
+bool
+starsAreFans (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices)
+{
+  std::vector<int> face_offsets, faces;
+  vertexFaces (triangles, num_vertices, face_offsets, faces);
+  for (Eigen::Index v = 0; v < num_vertices; ++v) {
+    std::unordered_map<int, std::vector<int>> link;
+    if (!vertexLink (triangles, faces.data () + face_offsets[v], faces.data () + face_offsets[v + 1],
+                     static_cast<int> (v), link))
+      return false;
+    if (!link.empty () && !isSingleCycle (link))
+      return false;
+  }
+  return true;
+}
 } // namespace
 
 MeshTopology::MeshTopology (const TriangleMesh& mesh) : MeshTopology (mesh.triangles, mesh.numVertices ()) {}
@@ -36,82 +145,9 @@ MeshTopology::MeshTopology (const TriangleMesh::Triangles& triangles, Eigen::Ind
 {
   if (triangles.size () > 0 && (triangles.minCoeff () < 0 || triangles.maxCoeff () >= num_vertices))
     throw InvalidInputError ("MeshTopology: triangle indices out of range of the vertex count");
-
-  // Count each undirected edge and how many triangles use it.
-  std::unordered_map<long long, int> edge_index;
-  edge_index.reserve (static_cast<size_t> (triangles.cols ()) * 2);
-  for (Eigen::Index t = 0; t < triangles.cols (); ++t)
-    for (int c = 0; c < 3; ++c) {
-      const int a = std::min (triangles (c, t), triangles ((c + 1) % 3, t));
-      const int b = std::max (triangles (c, t), triangles ((c + 1) % 3, t));
-      const long long key = static_cast<long long> (a) * num_vertices + b;
-      auto it = edge_index.find (key);
-      if (it == edge_index.end ()) {
-        edge_index.emplace (key, static_cast<int> (edges_.size ()));
-        edges_.push_back ({a, b, 1});
-      }
-      else
-        ++edges_[it->second].face_count;
-    }
-  std::sort (edges_.begin (), edges_.end (),
-             [] (const Edge& x, const Edge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-
-  offsets_.assign (num_vertices + 1, 0);
-  for (const auto& e : edges_) {
-    ++offsets_[e.a + 1];
-    ++offsets_[e.b + 1];
-  }
-  for (Eigen::Index v = 0; v < num_vertices; ++v)
-    offsets_[v + 1] += offsets_[v];
-  neighbours_.resize (offsets_.back ());
-  std::vector<int> fill (offsets_.begin (), offsets_.end () - 1);
-  for (const auto& e : edges_) {
-    neighbours_[fill[e.a]++] = e.b;
-    neighbours_[fill[e.b]++] = e.a;
-  }
-  for (Eigen::Index v = 0; v < num_vertices; ++v)
-    std::sort (neighbours_.begin () + offsets_[v], neighbours_.begin () + offsets_[v + 1]);
-
-  std::vector<int> face_offsets, faces;
-  vertexFaces (triangles, num_vertices, face_offsets, faces);
-  for (Eigen::Index v = 0; v < num_vertices && stars_are_fans_; ++v) {
-    // The link of a closed manifold vertex is one cycle: walk it through the opposite edges.
-    std::unordered_map<int, std::vector<int>> link;
-    for (int k = face_offsets[v]; k < face_offsets[v + 1]; ++k) {
-      const int t = faces[k];
-      int others[2], n = 0;
-      for (int c = 0; c < 3; ++c)
-        if (triangles (c, t) != v) {
-          if (n < 2)
-            others[n] = triangles (c, t);
-          ++n;
-        }
-      if (n != 2) {
-        stars_are_fans_ = false; // degenerate triangle using v twice
-        break;
-      }
-      link[others[0]].push_back (others[1]);
-      link[others[1]].push_back (others[0]);
-    }
-    if (!stars_are_fans_ || link.empty ())
-      continue;
-    for (const auto& entry : link)
-      if (entry.second.size () != 2)
-        stars_are_fans_ = false;
-    if (!stars_are_fans_)
-      break;
-    size_t visited = 1;
-    int previous = link.begin ()->first, current = link.begin ()->second[0];
-    while (current != link.begin ()->first && visited <= link.size ()) {
-      const auto& next = link[current];
-      const int following = next[0] == previous ? next[1] : next[0];
-      previous = current;
-      current = following;
-      ++visited;
-    }
-    if (visited != link.size ())
-      stars_are_fans_ = false;
-  }
+  edges_ = countEdges (triangles, num_vertices);
+  adjacency (edges_, num_vertices, offsets_, neighbours_);
+  stars_are_fans_ = starsAreFans (triangles, num_vertices);
 }
 
 std::vector<std::array<int, 2>>

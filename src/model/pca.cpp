@@ -278,6 +278,112 @@ reorderToSet (Eigen::MatrixXd& basis, const VertexAtoms& atoms, const std::vecto
       basis.col (c).segment<3> (target[i]) = column.segment<3> (3 * static_cast<Eigen::Index> (i));
   }
 }
+/** Reorders the rows of \a centred in place, atom by atom, so that every atom is one block of rows. */
+void
+reorderRowsByAtoms (Eigen::MatrixXd& centred, const VertexAtoms& atoms)
+{
+  std::vector<double> buffer (static_cast<std::size_t> (centred.rows ()));
+  Eigen::Map<Eigen::VectorXd> column (buffer.data (), centred.rows ());
+  for (Eigen::Index c = 0; c < centred.cols (); ++c) {
+    column = centred.col (c);
+    for (std::size_t i = 0; i < atoms.order.size (); ++i)
+      centred.col (c).segment<3> (3 * static_cast<Eigen::Index> (i)) = column.segment<3> (3 * atoms.order[i]);
+  }
+}
+
+/** Number of data rows of atom \a a (3 per vertex). */
+Eigen::Index
+atomRows (const VertexAtoms& atoms, int a)
+{
+  return 3 * (atoms.begin[static_cast<std::size_t> (a) + 1] - atoms.begin[static_cast<std::size_t> (a)]);
+}
+
+/** The rows of atom \a a of the atom-ordered data \a centred. */
+Eigen::Block<const Eigen::MatrixXd>
+atomBlock (const Eigen::MatrixXd& centred, const VertexAtoms& atoms, int a)
+{
+  return centred.middleRows (3 * atoms.begin[static_cast<std::size_t> (a)], atomRows (atoms, a));
+}
+
+/** The rows of the atoms \a atom_ids (\a num_rows in all) copied into one matrix. */
+Eigen::MatrixXd
+gatherAtoms (const Eigen::MatrixXd& centred, const VertexAtoms& atoms, const std::vector<int>& atom_ids,
+             Eigen::Index num_rows)
+{
+  Eigen::MatrixXd local (num_rows, centred.cols ());
+  Eigen::Index row = 0;
+  for (int a : atom_ids) {
+    local.middleRows (row, atomRows (atoms, a)) = atomBlock (centred, atoms, a);
+    row += atomRows (atoms, a);
+  }
+  return local;
+}
+
+/** Each atom's Gram matrix: a set's Gram matrix is the sum of its atoms', so each row of the data enters once. */
+std::vector<Eigen::MatrixXd>
+atomGrams (const Eigen::MatrixXd& centred, const VertexAtoms& atoms)
+{
+  std::vector<Eigen::MatrixXd> grams (atoms.begin.size () - 1);
+  for (std::size_t a = 0; a < grams.size (); ++a) {
+    grams[a].setZero (centred.cols (), centred.cols ());
+    grams[a].selfadjointView<Eigen::Lower> ().rankUpdate (atomBlock (centred, atoms, static_cast<int> (a)).transpose ());
+  }
+  return grams;
+}
+
+/** The order in which the sets are computed: a Gram-method set holding every atom (the whole mesh) goes last, its
+ *  basis formed in place of the data matrix; \a in_place is its index (vertex_sets.size () if there is none).
+ */
+std::vector<std::size_t>
+setSequence (const std::vector<std::vector<int>>& vertex_sets, const VertexAtoms& atoms, PcaMethod method,
+             Eigen::Index num_samples, std::size_t& in_place)
+{
+  const std::size_t num_atoms = atoms.begin.size () - 1;
+  in_place = vertex_sets.size ();
+  for (std::size_t s = 0; s < vertex_sets.size (); ++s)
+    if (atoms.atoms_of[s].size () == num_atoms &&
+        useGram (method, 3 * static_cast<Eigen::Index> (vertex_sets[s].size ()), num_samples))
+      in_place = s;
+  std::vector<std::size_t> sequence;
+  for (std::size_t s = 0; s < vertex_sets.size (); ++s)
+    if (s != in_place)
+      sequence.push_back (s);
+  if (in_place < vertex_sets.size ())
+    sequence.push_back (in_place);
+  return sequence;
+}
+
+/** PCA of one set by its Gram matrix (the sum of \a grams over its atoms); with \a in_place, the basis overwrites
+ *  \a centred (each block of D * weights replaces the rows it comes from, so no second 3N x M matrix is allocated).
+ */
+PcaBasis
+setPcaByGram (Eigen::MatrixXd& centred, const VertexAtoms& atoms, const std::vector<int>& atom_ids,
+              const std::vector<Eigen::MatrixXd>& grams, int max_components, double explained_fraction, bool in_place)
+{
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero (centred.cols (), centred.cols ());
+  for (int a : atom_ids)
+    gram += grams[static_cast<std::size_t> (a)];
+  GramComponents components = gramComponents (gram, max_components, explained_fraction);
+  const Eigen::Index keep = components.weights.cols ();
+  std::vector<RowBlock> blocks;
+  Eigen::Index row = 0;
+  for (int a : atom_ids) {
+    appendRowBlocks (3 * atoms.begin[static_cast<std::size_t> (a)], row, atomRows (atoms, a), blocks);
+    row += atomRows (atoms, a);
+  }
+  PcaBasis pca;
+  if (in_place) {
+    multiplyRowBlocks (centred, blocks, components.weights, centred.leftCols (keep));
+    centred.conservativeResize (row, keep);
+    pca.basis = std::move (centred);
+  } else {
+    pca.basis.resize (row, keep);
+    multiplyRowBlocks (centred, blocks, components.weights, pca.basis);
+  }
+  pca.variances = std::move (components.variances);
+  makeOrthonormal (pca.basis);
+  return pca;
+}
 } // namespace
 
 std::vector<PcaBasis>
@@ -290,80 +396,20 @@ computeVertexSetPcas (Eigen::MatrixXd centred, const std::vector<std::vector<int
     throw InvalidInputError ("computeVertexSetPcas: the data matrix has " + std::to_string (centred.rows ()) +
                              " rows, not 3 per vertex");
   const VertexAtoms atoms = groupIntoAtoms (centred.rows () / 3, vertex_sets);
-  // Rows reordered in place, atom by atom, so that every atom is one block of rows.
-  std::vector<double> buffer (static_cast<std::size_t> (centred.rows ()));
-  Eigen::Map<Eigen::VectorXd> column (buffer.data (), centred.rows ());
-  for (Eigen::Index c = 0; c < centred.cols (); ++c) {
-    column = centred.col (c);
-    for (std::size_t i = 0; i < atoms.order.size (); ++i)
-      centred.col (c).segment<3> (3 * static_cast<Eigen::Index> (i)) = column.segment<3> (3 * atoms.order[i]);
-  }
-  const auto rows = [&] (int a) {
-    return centred.middleRows (3 * atoms.begin[a], 3 * (atoms.begin[a + 1] - atoms.begin[a]));
-  };
-  const auto gathered = [&] (const std::vector<int>& atom_ids, Eigen::Index num_rows) {
-    Eigen::MatrixXd local (num_rows, centred.cols ());
-    Eigen::Index row = 0;
-    for (int a : atom_ids) {
-      local.middleRows (row, rows (a).rows ()) = rows (a);
-      row += rows (a).rows ();
-    }
-    return local;
-  };
-  // The Gram matrix of a set is the sum of its atoms' Gram matrices: each row of the data enters once.
-  std::vector<Eigen::MatrixXd> atom_grams (atoms.begin.size () - 1);
-  for (std::size_t a = 0; a < atom_grams.size (); ++a) {
-    atom_grams[a].setZero (centred.cols (), centred.cols ());
-    atom_grams[a].selfadjointView<Eigen::Lower> ().rankUpdate (rows (static_cast<int> (a)).transpose ());
-  }
-  // A set holding every atom (the whole mesh) is done last, its basis formed in place of the data matrix.
-  const std::size_t num_atoms = atom_grams.size ();
-  std::size_t in_place = vertex_sets.size ();
-  for (std::size_t s = 0; s < vertex_sets.size (); ++s)
-    if (atoms.atoms_of[s].size () == num_atoms &&
-        useGram (method, 3 * static_cast<Eigen::Index> (vertex_sets[s].size ()), centred.cols ()))
-      in_place = s;
-  std::vector<std::size_t> sequence;
-  for (std::size_t s = 0; s < vertex_sets.size (); ++s)
-    if (s != in_place)
-      sequence.push_back (s);
-  if (in_place < vertex_sets.size ())
-    sequence.push_back (in_place);
+  reorderRowsByAtoms (centred, atoms);
+  const std::vector<Eigen::MatrixXd> grams = atomGrams (centred, atoms);
+  std::size_t in_place = 0;
+  const std::vector<std::size_t> sequence = setSequence (vertex_sets, atoms, method, centred.cols (), in_place);
   std::vector<Eigen::Index> position (static_cast<std::size_t> (centred.rows () / 3));
   std::vector<PcaBasis> pcas (vertex_sets.size ());
   for (std::size_t s : sequence) {
     const std::vector<int>& atom_ids = atoms.atoms_of[s];
     const Eigen::Index set_rows = 3 * static_cast<Eigen::Index> (vertex_sets[s].size ());
-    PcaBasis& pca = pcas[s];
-    if (!useGram (method, set_rows, centred.cols ())) {
-      pca = pcaBySvd (gathered (atom_ids, set_rows), max_components, explained_fraction);
-      reorderToSet (pca.basis, atoms, atom_ids, vertex_sets[s], position);
-      continue;
-    }
-    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero (centred.cols (), centred.cols ());
-    for (int a : atom_ids)
-      gram += atom_grams[static_cast<std::size_t> (a)];
-    GramComponents components = gramComponents (gram, max_components, explained_fraction);
-    const Eigen::Index keep = components.weights.cols ();
-    std::vector<RowBlock> blocks;
-    Eigen::Index row = 0;
-    for (int a : atom_ids) {
-      appendRowBlocks (3 * atoms.begin[a], row, 3 * (atoms.begin[a + 1] - atoms.begin[a]), blocks);
-      row += 3 * (atoms.begin[a + 1] - atoms.begin[a]);
-    }
-    if (s == in_place) {
-      // Every atom, in order: each block of D * weights overwrites the rows of D it comes from, so no second
-      // 3N x M matrix is allocated.
-      multiplyRowBlocks (centred, blocks, components.weights, centred.leftCols (keep));
-      centred.conservativeResize (set_rows, keep);
-      pca.basis = std::move (centred);
-    } else {
-      pca.basis.resize (set_rows, keep);
-      multiplyRowBlocks (centred, blocks, components.weights, pca.basis);
-    }
-    pca.variances = std::move (components.variances);
-    makeOrthonormal (pca.basis);
-    reorderToSet (pca.basis, atoms, atom_ids, vertex_sets[s], position);
+    if (useGram (method, set_rows, centred.cols ()))
+      pcas[s] = setPcaByGram (centred, atoms, atom_ids, grams, max_components, explained_fraction, s == in_place);
+    else
+      pcas[s] = pcaBySvd (gatherAtoms (centred, atoms, atom_ids, set_rows), max_components, explained_fraction);
+    reorderToSet (pcas[s].basis, atoms, atom_ids, vertex_sets[s], position);
   }
   return pcas;
 }

@@ -99,9 +99,6 @@ public:
                      double max_distance = std::numeric_limits<double>::infinity ()) const;
 
 private:
-  bool
-  vertexStarIsSingleFan (int v, const TriangleMesh::Triangles& triangles) const;
-
   std::vector<int> offsets_;
   std::vector<int> neighbours_;
   std::vector<Edge> edges_;
