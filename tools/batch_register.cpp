@@ -219,8 +219,11 @@ addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batc
   return scans;
 }
 
+namespace
+{
+/** The options of one batch run that single-scan mode has and batch mode refuses. */
 void
-registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
+requireBatchOptions (const RegisterOptions& options, const BatchOptions& batch)
 {
   if (batch.out_dir.empty ())
     throw InvalidInputError ("register --scans: give --out-dir, the folder of the outputs");
@@ -228,16 +231,20 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
       !options.report.empty ())
     throw InvalidInputError ("register --scans: --screenshot, --truth, --landmarks and --report are for one scan "
                              "(landmark files go in the manifest's second column)");
-  const Shard shard = parseShard (batch.shard);
-  const ScanManifest scans = manifestShard (loadScanList (options.scans), shard.index, shard.count);
   std::error_code ec;
   fs::create_directories (batch.out_dir, ec);
   if (!fs::is_directory (batch.out_dir, ec))
     throw IoError (batch.out_dir + ": cannot create the output folder");
+}
 
+/** The scans still to register (no finished report, or a failed one with --retry-failed); the summary rows of the
+ *  others go to \a done.
+ */
+std::vector<Task>
+pendingTasks (const ScanManifest& scans, const RegisterOptions& options, const BatchOptions& batch,
+              std::vector<ScanSummary>& done)
+{
   std::vector<Task> tasks;
-  std::vector<ScanSummary> rows;
-  int skipped = 0;
   for (const ScanEntry& entry : scans) {
     Task task{entry, options};
     task.options.scan = entry.scan;
@@ -248,11 +255,51 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
     const bool failed = !report.is_null () && report.value ("status", "") != "ok";
     if (report.is_null () || (failed && batch.retry_failed))
       tasks.push_back (task);
-    else {
-      rows.push_back (summaryFromReport (entry.id, entry.scan, report));
-      ++skipped;
-    }
+    else
+      done.push_back (summaryFromReport (entry.id, entry.scan, report));
   }
+  return tasks;
+}
+
+/** The summary files' path without extension: summary, or summary.shard-I-of-N for one shard. */
+std::string
+summaryBase (const BatchOptions& batch, const Shard& shard)
+{
+  const std::string name = shard.count > 1 ? "summary.shard-" + std::to_string (shard.index) + "-of-" +
+                                                 std::to_string (shard.count)
+                                           : std::string ("summary");
+  return (fs::path (batch.out_dir) / name).string ();
+}
+
+/** The closing line of a batch run; exits 130 after an interrupt, throws FitCheckFailure if a scan failed. */
+void
+concludeBatch (const std::vector<ScanSummary>& rows, std::size_t registered, double seconds, const std::string& base)
+{
+  const auto count = [&] (const char* status) {
+    return std::count_if (rows.begin (), rows.end (), [&] (const ScanSummary& r) { return r.status == status; });
+  };
+  std::cout << "registered " << registered - count ("pending") << " scans in " << std::fixed << std::setprecision (1)
+            << seconds << " s; " << count ("ok") << " ok, " << count ("failed") << " failed, " << count ("pending")
+            << " pending; wrote " << base << ".csv and " << base << ".json" << std::defaultfloat << std::endl;
+  if (interrupts.load () > 0) {
+    std::cerr << "morphreg: interrupted; the finished scans' outputs are complete, rerun the command to resume\n";
+    std::exit (130);
+  }
+  if (count ("failed") > 0)
+    throw FitCheckFailure (std::to_string (count ("failed")) + " of " + std::to_string (rows.size ()) +
+                           " scans failed (see " + base + ".csv)");
+}
+} // namespace
+
+void
+registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
+{
+  requireBatchOptions (options, batch);
+  const Shard shard = parseShard (batch.shard);
+  const ScanManifest scans = manifestShard (loadScanList (options.scans), shard.index, shard.count);
+  std::vector<ScanSummary> rows;
+  const std::vector<Task> tasks = pendingTasks (scans, options, batch, rows);
+  const std::size_t skipped = rows.size ();
 
   const auto start = Clock::now ();
   const MorphableModel::Ptr model = loadModel (options.model);
@@ -272,28 +319,9 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
       row.status = "pending";
     rows.push_back (row);
   }
-  const std::string base =
-      (fs::path (batch.out_dir) /
-       (shard.count > 1 ? "summary.shard-" + std::to_string (shard.index) + "-of-" + std::to_string (shard.count)
-                        : std::string ("summary")))
-          .string ();
+  const std::string base = summaryBase (batch, shard);
   writeSummary (base, rows, shard.count > 1 ? shard.text () : "all");
-
-  const auto count = [&] (const char* status) {
-    return std::count_if (rows.begin (), rows.end (), [&] (const ScanSummary& r) { return r.status == status; });
-  };
-  const double seconds = std::chrono::duration<double> (Clock::now () - start).count ();
-  std::cout << "registered " << tasks.size () - count ("pending") << " scans in " << std::fixed
-            << std::setprecision (1) << seconds << " s; " << count ("ok") << " ok, " << count ("failed")
-            << " failed, " << count ("pending") << " pending; wrote " << base << ".csv and " << base << ".json"
-            << std::defaultfloat << std::endl;
-  if (interrupts.load () > 0) {
-    std::cerr << "morphreg: interrupted; the finished scans' outputs are complete, rerun the command to resume\n";
-    std::exit (130);
-  }
-  if (count ("failed") > 0)
-    throw FitCheckFailure (std::to_string (count ("failed")) + " of " + std::to_string (rows.size ()) +
-                           " scans failed (see " + base + ".csv)");
+  concludeBatch (rows, tasks.size (), std::chrono::duration<double> (Clock::now () - start).count (), base);
 }
 
 } // namespace tools

@@ -127,6 +127,80 @@ fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model
   return fitting.fitJoint (profile, *frontal);
 }
 
+/** The report's warnings (implausible coefficients, outline landmarks left out), the latter also on stderr. */
+nlohmann::json
+fitWarnings (const FitPhotosOptions& options, const TwoViewFit& fit)
+{
+  nlohmann::json warnings = nlohmann::json::array ();
+  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
+    warnings.push_back ("a shape coefficient is beyond " + std::to_string (kCoefficientWarningSigma) +
+                        " standard deviations");
+  if (!fit.ignored_landmarks.empty ()) {
+    std::string ids;
+    for (const std::string& id : fit.ignored_landmarks)
+      ids += (ids.empty () ? "" : ", ") + id;
+    warnings.push_back ("outline landmarks left out: " + ids);
+    std::cerr << "fit-photos: warning: " << options.frontal << ": the outline landmarks " << ids
+              << " mark no fixed point of the face and are left out (--contour-weight to use them)\n";
+  }
+  return warnings;
+}
+
+nlohmann::json
+settingsJson (const FitPhotosOptions& options)
+{
+  return {{"approach", options.approach},
+          {"components", options.components},
+          {"lambda1", options.lambda1},
+          {"lambda2", options.lambda2},
+          {"coefficient_limit_sigma", options.coefficient_limit},
+          {"frontal_weight", options.frontal_weight},
+          {"contour_weight", options.contour_weight},
+          {"sagittal_weight", options.sagittal_weight}};
+}
+
+/** The fit's summary line on stdout, and a warning on stderr when a coefficient is implausibly large. */
+void
+printFitSummary (const FitPhotosOptions& options, const TwoViewFit& fit, bool with_frontal)
+{
+  std::cout << "fit (" << options.approach << (fit.returned == options.approach || fit.returned == "tps_icp"
+                                                     ? std::string ()
+                                                     : ", returned the " + fit.returned + " fit: no TPS-ICP round "
+                                                       "lowered the image error")
+            << "): " << fit.history.size () << " iterations, profile RMS " << fit.final_residuals.profile_rms
+            << " mm over " << fit.final_residuals.profile_correspondences << " profile-line vertices";
+  if (with_frontal)
+    std::cout << ", landmark RMS " << fit.final_residuals.landmark_rms << " mm";
+  std::cout << "; largest coefficient " << fit.maxCoefficientSigma () << " standard deviations\n";
+  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
+    std::cerr << "fit-photos: warning: a shape coefficient is " << fit.maxCoefficientSigma ()
+              << " standard deviations from the mean (beyond " << kCoefficientWarningSigma
+              << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
+}
+
+/** Writes the fitted mesh coloured by its error against --truth, by the frontal --photo, or plain; returns what
+ *  the colours show.
+ */
+std::string
+writeFittedMesh (const FitPhotosOptions& options, const TwoViewFit& fit, const std::optional<FrontalView>& frontal,
+                 nlohmann::json& report)
+{
+  if (!options.truth.empty ()) {
+    const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max)));
+    return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
+  }
+  if (!options.photo.empty ()) {
+    const VertexTexture texture =
+        frontalTexture (fit.image_mesh, frontal->normalisation (), loadRgbImage (options.photo));
+    report["texture"] = {{"photo", options.photo}, {"visible_vertices", texture.visibleCount ()}};
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture.colours));
+    return "frontal photo (grey where unseen)";
+  }
+  saveTriangleMesh (options.out, fit.model_mesh);
+  return "none";
+}
+
 void
 runFitPhotos (const FitPhotosOptions& options)
 {
@@ -145,56 +219,10 @@ runFitPhotos (const FitPhotosOptions& options)
   nlohmann::json report = twoViewFitJson (fit);
   report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
   report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
-  report["warnings"] = nlohmann::json::array ();
-  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
-    report["warnings"].push_back ("a shape coefficient is beyond " + std::to_string (kCoefficientWarningSigma) +
-                                  " standard deviations");
-  if (!fit.ignored_landmarks.empty ()) {
-    std::string ids;
-    for (const std::string& id : fit.ignored_landmarks)
-      ids += (ids.empty () ? "" : ", ") + id;
-    report["warnings"].push_back ("outline landmarks left out: " + ids);
-    std::cerr << "fit-photos: warning: " << options.frontal << ": the outline landmarks " << ids
-              << " mark no fixed point of the face and are left out (--contour-weight to use them)\n";
-  }
-  report["settings"] = {{"approach", options.approach},
-                        {"components", options.components},
-                        {"lambda1", options.lambda1},
-                        {"lambda2", options.lambda2},
-                        {"coefficient_limit_sigma", options.coefficient_limit},
-                        {"frontal_weight", options.frontal_weight},
-                        {"contour_weight", options.contour_weight},
-                        {"sagittal_weight", options.sagittal_weight}};
-  std::cout << "fit (" << options.approach << (fit.returned == options.approach || fit.returned == "tps_icp"
-                                                     ? std::string ()
-                                                     : ", returned the " + fit.returned + " fit: no TPS-ICP round "
-                                                       "lowered the image error")
-            << "): " << fit.history.size () << " iterations, profile RMS " << fit.final_residuals.profile_rms
-            << " mm over " << fit.final_residuals.profile_correspondences << " profile-line vertices";
-  if (frontal)
-    std::cout << ", landmark RMS " << fit.final_residuals.landmark_rms << " mm";
-  std::cout << "; largest coefficient " << fit.maxCoefficientSigma () << " standard deviations\n";
-  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
-    std::cerr << "fit-photos: warning: a shape coefficient is " << fit.maxCoefficientSigma ()
-              << " standard deviations from the mean (beyond " << kCoefficientWarningSigma
-              << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
-
-  std::string colouring = "none";
-  if (!options.truth.empty ()) {
-    const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
-    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max)));
-    colouring = "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
-  }
-  else if (!options.photo.empty ()) {
-    const VertexTexture texture =
-        frontalTexture (fit.image_mesh, frontal->normalisation (), loadRgbImage (options.photo));
-    report["texture"] = {{"photo", options.photo}, {"visible_vertices", texture.visibleCount ()}};
-    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture.colours));
-    colouring = "frontal photo (grey where unseen)";
-  }
-  else {
-    saveTriangleMesh (options.out, fit.model_mesh);
-  }
+  report["warnings"] = fitWarnings (options, fit);
+  report["settings"] = settingsJson (options);
+  printFitSummary (options, fit, frontal.has_value ());
+  const std::string colouring = writeFittedMesh (options, fit, frontal, report);
   report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
   report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())

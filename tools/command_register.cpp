@@ -336,6 +336,113 @@ registerScanFile (const RegisterOptions& options)
   return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
 }
 
+namespace
+{
+/** Writes the report of a fit that lost the scan (it passed its checks, so it is a failed fit, not bad input) and
+ *  throws FitCheckFailure.
+ */
+[[noreturn]] void
+reportLostFit (const RegisterOptions& options, std::size_t scan_points, const TooFewCorrespondencesError& error)
+{
+  const std::string report_path = reportPath (options);
+  const nlohmann::json report = {{"status", "failed"},
+                                 {"checks", {{"passed", false}, {"failures", {error.what ()}}}},
+                                 {"scan", {{"file", options.scan}, {"points", scan_points}}},
+                                 {"settings", settingsJson (options)},
+                                 {"fitted_mesh", nullptr}};
+  writeAtomically (report_path, [&] (const std::string& partial) { writeJsonFile (partial, report); });
+  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
+}
+
+/** The report's description of the scan and how its unit was found. */
+nlohmann::json
+scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
+{
+  return {{"file", options.scan},
+          {"points", scan_points},
+          {"units", toString (unit.unit)},
+          {"unit_detection", options.units == "auto" ? "auto" : "given"},
+          {"unit_reason", unit.reason},
+          {"scale_to_mm", millimetresPer (unit.unit)}};
+}
+
+/** The report's residual statistics: scan to model over the correspondences, and per model vertex. */
+nlohmann::json
+residualsJson (const IcpReport& icp_report, const Eigen::VectorXd& residuals, double colour_scale)
+{
+  return {{"scan_to_model",
+           {{"correspondences", icp_report.correspondences},
+            {"mean", icp_report.fitness_mean},
+            {"median", icp_report.fitness_median},
+            {"rms", icp_report.fitness_rms}}},
+          {"per_vertex", distanceStatistics (residuals)},
+          {"colour_scale_max", colour_scale}};
+}
+
+/** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
+nlohmann::json
+fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model, const nlohmann::json& scan,
+           double colour_scale)
+{
+  const IcpReport& icp_report = icp.getRegistrationReport ();
+  const FitPlausibility checks = checkFit (icp, model);
+  return {{"status", checks.plausible ? "ok" : "failed"},
+          {"checks", {{"passed", checks.plausible}, {"failures", checks.failures}}},
+          {"units", "mm"},
+          {"scan", scan},
+          {"initialisation",
+           {{"method", icp_report.initialisation},
+            {"detail", icp_report.initialisation_detail},
+            {"confidence", icp_report.initialisation_confidence},
+            {"head_points", icp_report.head_points}}},
+          {"model", {{"file", options.model}, {"vertices", model.numVertices ()}, {"regions", model.numRegions ()}}},
+          {"settings", settingsJson (options)},
+          {"similarity", similarityJson (icp.getFinalTransformation ().cast<double> ())},
+          {"initial_similarity", similarityJson (icp_report.initial_transformation)},
+          {"coefficients", coefficientsJson (model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
+          {"residuals_mm", residualsJson (icp_report, icp.getVertexResiduals (), colour_scale)},
+          {"iterations", iterationsJson (icp_report)},
+          {"termination", {{"reason", toString (icp_report.termination)}, {"message", icp_report.message}}},
+          {"fitted_mesh", options.out}};
+}
+
+/** The fit's one-paragraph summary on \a out; throws FitCheckFailure when the report failed its checks. */
+void
+concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const nlohmann::json& report,
+             double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
+{
+  const std::string report_path = reportPath (options);
+  out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
+      << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS "
+      << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"
+      << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
+      << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+  if (report["checks"]["passed"].get<bool> ())
+    return;
+  std::string reasons;
+  for (const nlohmann::json& failure : report["checks"]["failures"])
+    reasons += (reasons.empty () ? "" : "; ") + failure.get<std::string> ();
+  throw FitCheckFailure (reasons + " (see " + report_path + ")");
+}
+
+/** Runs \a icp's fit with progress shown unless quiet; a lost scan is reported and thrown (reportLostFit). */
+void
+alignScan (Icp& icp, const RegisterOptions& options, std::size_t scan_points)
+{
+  const Progress progress ("registering " + options.scan, options.iterations, options.quiet);
+  if (!options.quiet)
+    showIterations (icp, progress);
+  pcl::PointCloud<pcl::PointNormal> aligned;
+  try {
+    icp.align (aligned);
+  }
+  catch (const TooFewCorrespondencesError& e) {
+    reportLostFit (options, scan_points, e);
+  }
+  progress.finish (static_cast<int> (icp.getRegistrationReport ().history.size ()));
+}
+} // namespace
+
 nlohmann::json
 registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
               double model_seconds, std::ostream& out, std::ostream& warnings)
@@ -349,25 +456,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const double load_seconds = model_seconds + secondsSince (start);
 
   const auto fit_start = Clock::now ();
-  const Progress progress ("registering " + options.scan, options.iterations, options.quiet);
-  if (!options.quiet)
-    showIterations (icp, progress);
-  pcl::PointCloud<pcl::PointNormal> aligned;
-  try {
-    icp.align (aligned);
-  }
-  catch (const TooFewCorrespondencesError& e) { // the scan passed its checks: the fit failed, it was not bad input
-    const std::string report_path = reportPath (options);
-    const nlohmann::json report = {{"status", "failed"},
-                                   {"checks", {{"passed", false}, {"failures", {e.what ()}}}},
-                                   {"scan", {{"file", options.scan}, {"points", scan->size ()}}},
-                                   {"settings", settingsJson (options)},
-                                   {"fitted_mesh", nullptr}};
-    writeAtomically (report_path, [&] (const std::string& partial) { writeJsonFile (partial, report); });
-    throw FitCheckFailure (std::string (e.what ()) + "; no mesh written (see " + report_path + ")");
-  }
-  const IcpReport& icp_report = icp.getRegistrationReport ();
-  progress.finish (static_cast<int> (icp_report.history.size ()));
+  alignScan (icp, options, scan->size ());
   const double fit_seconds = secondsSince (fit_start);
 
   const auto write_start = Clock::now ();
@@ -377,47 +466,14 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
   writeAtomically (options.out, [&] (const std::string& partial) { savePolygonMesh (partial, coloured); });
   const double write_seconds = secondsSince (write_start);
-  const Eigen::Matrix4d pose = icp.getFinalTransformation ().cast<double> ();
 
-  const FitPlausibility checks = checkFit (icp, *model);
-  nlohmann::json report = {
-      {"status", checks.plausible ? "ok" : "failed"},
-      {"checks", {{"passed", checks.plausible}, {"failures", checks.failures}}},
-      {"units", "mm"},
-      {"scan",
-       {{"file", options.scan},
-        {"points", scan->size ()},
-        {"units", toString (unit.unit)},
-        {"unit_detection", options.units == "auto" ? "auto" : "given"},
-        {"unit_reason", unit.reason},
-        {"scale_to_mm", millimetresPer (unit.unit)}}},
-      {"initialisation",
-       {{"method", icp_report.initialisation},
-        {"detail", icp_report.initialisation_detail},
-        {"confidence", icp_report.initialisation_confidence},
-        {"head_points", icp_report.head_points}}},
-      {"model", {{"file", options.model}, {"vertices", model->numVertices ()}, {"regions", model->numRegions ()}}},
-      {"settings", settingsJson (options)},
-      {"similarity", similarityJson (pose)},
-      {"initial_similarity", similarityJson (icp_report.initial_transformation)},
-      {"coefficients", coefficientsJson (*model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
-      {"residuals_mm",
-       {{"scan_to_model",
-         {{"correspondences", icp_report.correspondences},
-          {"mean", icp_report.fitness_mean},
-          {"median", icp_report.fitness_median},
-          {"rms", icp_report.fitness_rms}}},
-        {"per_vertex", distanceStatistics (residuals)},
-        {"colour_scale_max", scale}}},
-      {"iterations", iterationsJson (icp_report)},
-      {"termination", {{"reason", toString (icp_report.termination)}, {"message", icp_report.message}}},
-      {"fitted_mesh", options.out}};
+  nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
   if (!options.truth.empty ())
     report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
   double screenshot_seconds = 0.0;
   if (viewer) {
     const auto shot_start = Clock::now ();
-    saveOverlay (*viewer, options, *scan, fitted, residuals, scale, pose);
+    saveOverlay (*viewer, options, *scan, fitted, residuals, scale, icp.getFinalTransformation ().cast<double> ());
     screenshot_seconds = secondsSince (shot_start);
     report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
   }
@@ -426,20 +482,9 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
                          {"write_mesh", write_seconds},
                          {"screenshot", screenshot_seconds},
                          {"total", model_seconds + secondsSince (start)}};
-  const std::string report_path = reportPath (options);
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeAtomically (report_path, [&] (const std::string& partial) { writeJsonFile (partial, report); });
-  out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
-            << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS "
-            << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"
-            << "wrote " << options.out << " (vertex colours: residual, 0-" << scale << " mm), " << report_path
-            << (viewer ? ", " + options.screenshot : std::string ()) << '\n';
-  if (!checks.plausible) {
-    std::string reasons;
-    for (const std::string& failure : checks.failures)
-      reasons += (reasons.empty () ? "" : "; ") + failure;
-    throw FitCheckFailure (reasons + " (see " + report_path + ")");
-  }
+  writeAtomically (reportPath (options), [&] (const std::string& partial) { writeJsonFile (partial, report); });
+  concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
   return report;
 }
 
