@@ -1,6 +1,6 @@
 #pragma once
 /** \file landmarks.h
- *  \brief The project's landmark vocabulary (../shared/docs/LANDMARKS.md) and a named landmark set.
+ *  \brief The project's landmark vocabulary (docs/landmarks.md) and a named landmark set.
  */
 #include <Eigen/Core>
 
@@ -10,7 +10,7 @@
 
 namespace morphreg
 {
-/** \brief All landmark ids the project knows, in the order of LANDMARKS.md (frontal 1-40, then the rest). */
+/** \brief All landmark ids the project knows, in the order of docs/landmarks.md (frontal 1-40, then the rest). */
 const std::vector<std::string>&
 knownLandmarkIds ();
 
@@ -42,12 +42,12 @@ using LandmarkPositions = std::map<std::string, Eigen::Vector3d>;
 /** \brief Named landmark vertices of a mesh or model: id -> vertex index. */
 using LandmarkVertices = std::map<std::string, int>;
 
-/** \brief The 40 frontal-photo landmark ids (LANDMARKS.md 1-40, thesis table 1), in that order. */
+/** \brief The 40 frontal-photo landmark ids (docs/landmarks.md 1-40, thesis table 1), in that order. */
 std::vector<std::string>
 frontalLandmarkIds ();
 
 /** \brief Whether \a id is a point of a frontal photo's outline rather than a fixed point of the face: the jaw, chin,
- *  neck and head-contour ids (LANDMARKS.md 29-40) and the menton `chin`. Where the outline runs over the head depends
+ *  neck and head-contour ids (docs/landmarks.md 29-40) and the menton `chin`. Where the outline runs over the head depends
  *  on the head's shape and pose, so no one vertex of a model marks it.
  */
 bool

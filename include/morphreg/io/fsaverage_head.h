@@ -15,7 +15,7 @@ namespace morphreg
 struct FsaverageHead
 {
   TriangleMesh mesh;
-  /** "nasion", and the preauricular points LPA / RPA under the nearest project ids (LANDMARKS.md):
+  /** "nasion", and the preauricular points LPA / RPA under the nearest project ids (docs/landmarks.md):
    *  "left_tragus" / "right_tragus".
    */
   LandmarkPositions landmarks;

@@ -15,7 +15,7 @@ namespace morphreg
 struct MediaPipeFace
 {
   TriangleMesh mesh;
-  /** Vertex of each landmark of LANDMARKS.md's MediaPipe column: eye corners, nose tip, mouth corners, chin,
+  /** Vertex of each landmark of the MediaPipe column of docs/landmarks.md: eye corners, nose tip, mouth corners, chin,
    *  forehead.
    */
   LandmarkVertices landmarks;

@@ -1,6 +1,7 @@
 #pragma once
 /** \file model_builder.h
- *  \brief Builds a (multi-region) MorphableModel from training meshes in correspondence (METHOD.md section 2).
+ *  \brief Builds a (multi-region) MorphableModel from training meshes in correspondence (docs/method.md,
+ *  "The multi-region shape model").
  */
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/model/pca.h>

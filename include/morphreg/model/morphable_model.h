@@ -1,6 +1,7 @@
 #pragma once
 /** \file morphable_model.h
- *  \brief The multi-region statistical shape model of METHOD.md section 2: p_i = M_i m + mu_i.
+ *  \brief The multi-region statistical shape model of docs/method.md ("The multi-region
+ *  shape model"): p_i = M_i m + mu_i.
  */
 #include <morphreg/common/landmarks.h>
 #include <morphreg/mesh/triangle_mesh.h>
@@ -67,7 +68,7 @@ enum class ShapePrior
 
 /** \brief A multi-region PCA shape model in a fixed triangle topology (mm by default).
  *
- *  A model vertex is p_i = mu_i + M_i m (METHOD.md section 2), with m the stacked coefficients of the
+ *  A model vertex is p_i = mu_i + M_i m (docs/method.md, "A model vertex"), with m the stacked coefficients of the
  *  selected components of all regions and M_i the blending-weighted rows of the region bases that contain
  *  vertex i. Coefficients are in mm along orthonormal basis vectors; their prior is N(0, variance).
  *  A plain (global) PCA model is the special case of one region holding every vertex with weight 1.

@@ -1,7 +1,7 @@
 #pragma once
 /** \file frontal_texture.h
- *  \brief Per-vertex colours of a fitted head from its frontal photo: the orthographic projection of METHOD.md
- *  section 4 (thesis eq. 48-49), for the vertices the camera sees.
+ *  \brief Per-vertex colours of a fitted head from its frontal photo: the orthographic projection of
+ *  docs/method.md, "Texture" (thesis eq. 48-49), for the vertices the camera sees.
  */
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/photo/photo_normalisation.h>

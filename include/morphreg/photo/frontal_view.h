@@ -1,6 +1,6 @@
 #pragma once
 /** \file frontal_view.h
- *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of LANDMARKS.md) in pixels.
+ *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of docs/landmarks.md) in pixels.
  */
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/photo/photo_normalisation.h>
@@ -17,7 +17,7 @@ class FrontalView
 {
 public:
   /** \brief Throws InvalidInputError naming \a source for a non-positive image size, a landmark id that is not in
-   *  LANDMARKS.md, a non-finite pixel or a missing nose_tip.
+   *  docs/landmarks.md, a non-finite pixel or a missing nose_tip.
    */
   FrontalView (int width, int height, LandmarkPixels landmarks, const std::string& source = "FrontalView");
 

@@ -1,6 +1,7 @@
 #pragma once
 /** \file photo_normalisation.h
- *  \brief The normalised photo frame of METHOD.md section 4: pixels divided by the longer image side, centred on
+ *  \brief The normalised photo frame of docs/method.md ("Fitting to two orthogonal
+ *  photographs"): pixels divided by the longer image side, centred on
  *  the nose tip, with the image's y axis flipped so that +Y is up. Both photos of a two-view fit use it, so one
  *  similarity maps the model into both.
  */

@@ -88,7 +88,7 @@ public:
     return directions_.cols ();
   }
 
-  /** \brief Landmark ids of LANDMARKS.md -> vertex index (every id that exists on a 3D head). */
+  /** \brief Landmark ids of docs/landmarks.md -> vertex index (every id that exists on a 3D head). */
   const LandmarkVertices&
   landmarks () const
   {

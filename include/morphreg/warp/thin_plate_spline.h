@@ -1,6 +1,6 @@
 #pragma once
 /** \file thin_plate_spline.h
- *  \brief Thin plate spline warps (METHOD.md section 1): exact or regularised fits from landmark pairs, and
+ *  \brief Thin plate spline warps (docs/method.md, "Thin plate splines"): exact or regularised fits from landmark pairs, and
  *  fast evaluation on points, PCL clouds and meshes.
  */
 #include <morphreg/mesh/triangle_mesh.h>
@@ -29,8 +29,8 @@ namespace morphreg
  *  InvalidInputError and an ill-conditioned system a NumericalError, never a silent result.
  *
  *  Evaluation is vectorised over the landmarks and threaded (OpenMP) over the query points. Points use the
- *  project's column layout (Dim x N, like TriangleMesh::vertices); the coefficient accessors use METHOD.md's
- *  matrices (one row per landmark). For Dim = 2 the spline warps x and y and leaves z unchanged.
+ *  project's column layout (Dim x N, like TriangleMesh::vertices); the coefficient accessors use the matrices
+ *  of docs/method.md (one row per landmark). For Dim = 2 the spline warps x and y and leaves z unchanged.
  *
  *  \code
  *  morphreg::ThinPlateSpline<double, 3> tps;
