@@ -71,7 +71,7 @@ struct TwoViewFit
 /** \brief Whether coefficients \a standardised (in prior standard deviations) describe a head the model's population
  *  holds: their squared norm at most p + 5 sqrt(2 p) for p coefficients, the chi-square mean plus five standard
  *  deviations. Heads drawn from the model almost never pass it; it is that loose because a model built from few heads
- *  underestimates the variance of new ones (measured: an unseen head fitted with a 30-head model reaches p + 3.2 sd).
+ *  underestimates the variance of new ones (an unseen head fitted with a 30-head model reaches p + 3.2 sd).
  */
 bool
 isPlausibleShape (const Eigen::VectorXd& standardised);
