@@ -17,7 +17,10 @@ namespace morphreg
  *  neck over the face and crown to the back of the neck.
  *  Throws IoError if a file is missing, FormatError naming the file and the problem if shapes, counts, values or
  *  indices are wrong.
+ *  \param[in] directory the ICT-FaceKit folder
+ *  \return the model
  */
+
 MorphableModel::Ptr
 loadIctFaceKit (const std::string& directory);
 
