@@ -1,4 +1,4 @@
-// Model building (issue 4): ModelBuilder (global PCA + 7 region PCAs + blending) against a plain Eigen BDCSVD of
+// Model building: ModelBuilder (global PCA + 7 region PCAs + blending) against a plain Eigen BDCSVD of
 // the same centred data matrix, for 200 synthetic heads (9602 vertices) and 200 ICT samples (11248 vertices).
 // Counters: peak_MiB = growth of the resident set's high-water mark during the timed runs (Linux clear_refs).
 #include <morphreg/io/ict_facekit.h>

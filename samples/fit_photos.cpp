@@ -1,6 +1,6 @@
 // Fits a morphable head model to a profile photo (the silhouette) and a frontal photo (named landmarks) with
-// TwoViewFitting (METHOD.md section 4: approach 1, "joint", or approach 2, "tps"), writes the fitted head as PLY and
-// the fit's report as JSON.
+// TwoViewFitting (docs/method.md, "Fitting to two orthogonal photographs": approach 1, "joint", or approach 2,
+// "tps"), writes the fitted head as PLY and the fit's report as JSON.
 //
 //   sample_fit_photos [--profile side.json --frontal front.json --model model.h5 [--photo front.png]]
 //                     [--approach joint|tps] [--out fitted.ply] [--report fit.json] [--scale 5] [--heads 30]

@@ -1,5 +1,5 @@
-// A thin plate spline warps one synthetic head onto another head's landmarks (the built-in population, LANDMARKS.md
-// ids). Landmarks land exactly; between them the warped head stays as close to the source shape as the smoothest
+// A thin plate spline warps one synthetic head onto another head's landmarks (the built-in population, ids of
+// docs/landmarks.md). Landmarks land exactly; between them the warped head stays as close to the source shape as the smoothest
 // spline allows. Prints the mean / max vertex error against the other head before and after the warp and writes the
 // warped head as PLY coloured by that error (viridis, 0-10 mm).
 //

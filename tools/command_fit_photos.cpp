@@ -1,4 +1,5 @@
-// `morphreg fit-photos`: a head model fitted to an annotated profile photo and frontal photo (METHOD.md section 4),
+// `morphreg fit-photos`: a head model fitted to an annotated profile photo and frontal photo (docs/method.md,
+// "Fitting to two orthogonal photographs"),
 // written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.
 #include "commands.h"
 #include "distance_statistics.h"

@@ -108,7 +108,7 @@ bool
 isFrontalContourLandmarkId (const std::string& id)
 {
   const auto& ids = knownLandmarkIds ();
-  const auto contour_begin = ids.begin () + 28, contour_end = ids.begin () + 40; // LANDMARKS.md 29-40
+  const auto contour_begin = ids.begin () + 28, contour_end = ids.begin () + 40; // docs/landmarks.md 29-40
   return id == "chin" || std::find (contour_begin, contour_end, id) != contour_end;
 }
 

@@ -16,7 +16,7 @@ namespace
 {
 constexpr double kCentimetresToMillimetres = 10.0;
 
-/** Project landmark ids (LANDMARKS.md) and their iBUG-68 numbers. */
+/** Project landmark ids (docs/landmarks.md) and their iBUG-68 numbers. */
 const std::vector<std::pair<std::string, int>> kIbugLandmarks = {
     {"right_eyebrow", 19},      {"right_eye_outer", 36},   {"right_eye_inner", 39},  {"left_eyebrow", 24},
     {"left_eye_outer", 45},     {"left_eye_inner", 42},    {"right_nose_wing", 31},  {"nose_tip", 30},

@@ -23,7 +23,8 @@ namespace
 constexpr double kCoincidenceTolerance = 1e-12;
 /** Source landmarks whose thinnest spread is below this fraction of the widest are flat (coplanar/collinear). */
 constexpr double kFlatnessTolerance = 1e-9;
-/** Landmarks must be reproduced to this fraction of their extent (METHOD.md, issue 3). */
+/** Landmarks must be reproduced to this fraction of their extent: an interpolating spline hits them exactly
+ *  (docs/method.md, "Thin plate splines"). */
 constexpr double kResidualTolerance = 1e-9;
 /** Above this relative residual, one step of iterative refinement is taken before the final check. */
 constexpr double kRefineTolerance = 1e-13;

@@ -15,6 +15,8 @@ using VertexColours = Eigen::Matrix<unsigned char, 3, Eigen::Dynamic>;
 
 /** \brief The viridis colour of \a t in [0, 1] (clamped; NaN gives neutral grey), piecewise linear between ten
  *  stops of the published map.
+ *  \param[in] t the value to colour, 0 the low end and 1 the high end of the scale
+ *  \return the colour
  */
 Rgb8
 viridis (double t);
@@ -22,8 +24,12 @@ viridis (double t);
 /** \brief Colours of non-negative \a values on the scale [0, \a max_value] (larger values saturate at the top);
  *  NaN entries (no residual) are grey. Throws InvalidInputError if \a max_value is not positive and finite or a
  *  value is negative or infinite.
+ *  \param[in] values one non-negative value (e.g. a residual in mm) per vertex, NaN for none
+ *  \param[in] max_value the value that maps to the top of the scale
+ *  \return one colour per value
  */
 VertexColours
+
 residualColours (const Eigen::VectorXd& values, double max_value);
 
 } // namespace morphreg

@@ -12,9 +12,15 @@ namespace morphreg
 class Error : public pcl::PCLException
 {
 public:
+  /** \brief An error whose text is \a message.
+   *  \param[in] message what was wrong, naming the input
+   */
   explicit Error (const std::string& message) : pcl::PCLException (message), message_ (message) {}
 
-  /** \brief The message alone (PCLException's own text starts with ": " when no source location is given). */
+  /** \brief The message alone (PCLException's own text starts with ": " when no source location is given).
+   *  \return the message given to the constructor
+   */
+
   const char*
   what () const noexcept override
   {

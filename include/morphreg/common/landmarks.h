@@ -1,6 +1,6 @@
 #pragma once
 /** \file landmarks.h
- *  \brief The project's landmark vocabulary (../shared/docs/LANDMARKS.md) and a named landmark set.
+ *  \brief The project's landmark vocabulary (docs/landmarks.md) and a named landmark set.
  */
 #include <Eigen/Core>
 
@@ -10,29 +10,44 @@
 
 namespace morphreg
 {
-/** \brief All landmark ids the project knows, in the order of LANDMARKS.md (frontal 1-40, then the rest). */
+/** \brief All landmark ids the project knows, in the order of docs/landmarks.md (frontal 1-40, then the rest).
+ *  \return the ids, built once
+ */
 const std::vector<std::string>&
 knownLandmarkIds ();
 
-/** \brief The id of iBUG-68 point \a number (0-67, the 1-68 of the annotation scheme less one): "ibug68_07". */
+/** \brief The id of iBUG-68 point \a number (0-67, the 1-68 of the annotation scheme less one): "ibug68_07".
+ *  \param[in] number the 0-based point number; InvalidInputError outside 0-67
+ *  \return the id, with two digits
+ */
 std::string
 ibug68LandmarkId (int number);
 
-/** \brief The 68 iBUG ids "ibug68_00" .. "ibug68_67", in point order (the order of a .pts file). */
+/** \brief The 68 iBUG ids "ibug68_00" .. "ibug68_67", in point order (the order of a .pts file).
+ *  \return the ids, built once
+ */
 const std::vector<std::string>&
 ibug68LandmarkIds ();
 
-/** \brief True if \a id is one of knownLandmarkIds() or of ibug68LandmarkIds(). */
+/** \brief Whether \a id is one of knownLandmarkIds() or of ibug68LandmarkIds().
+ *  \param[in] id the landmark id
+ *  \return true for a project or iBUG id
+ */
 bool
 isKnownLandmarkId (const std::string& id);
 
 /** \brief The project id of a Basel Face Model / scalismo landmark id ("center.nose.tip" -> "nose_tip"), or
  *  \a id itself when it has no equivalent. Left and right are the subject's in both vocabularies.
+ *  \param[in] id a BFM / scalismo landmark id
+ *  \return the project id, or \a id unchanged
  */
 std::string
 fromBfmLandmarkId (const std::string& id);
 
-/** \brief Throws InvalidInputError naming \a source and listing the known ids when \a id is unknown. */
+/** \brief Throws InvalidInputError naming \a source and listing the known ids when \a id is unknown.
+ *  \param[in] id the landmark id to check
+ *  \param[in] source where the id was read (a file and line), for the message
+ */
 void
 requireKnownLandmarkId (const std::string& id, const std::string& source);
 
@@ -42,19 +57,27 @@ using LandmarkPositions = std::map<std::string, Eigen::Vector3d>;
 /** \brief Named landmark vertices of a mesh or model: id -> vertex index. */
 using LandmarkVertices = std::map<std::string, int>;
 
-/** \brief The 40 frontal-photo landmark ids (LANDMARKS.md 1-40, thesis table 1), in that order. */
+/** \brief The 40 frontal-photo landmark ids (docs/landmarks.md 1-40, thesis table 1), in that order.
+ *  \return the ids
+ */
 std::vector<std::string>
 frontalLandmarkIds ();
 
 /** \brief Whether \a id is a point of a frontal photo's outline rather than a fixed point of the face: the jaw, chin,
- *  neck and head-contour ids (LANDMARKS.md 29-40) and the menton `chin`. Where the outline runs over the head depends
+ *  neck and head-contour ids (docs/landmarks.md 29-40) and the menton `chin`. Where the outline runs over the head depends
  *  on the head's shape and pose, so no one vertex of a model marks it.
+ *  \param[in] id the landmark id
+ *  \return true for an outline id
  */
 bool
 isFrontalContourLandmarkId (const std::string& id);
 
-/** \brief The entries of \a landmarks whose id is one of frontalLandmarkIds(). */
+/** \brief The entries of \a landmarks whose id is one of frontalLandmarkIds().
+ *  \param[in] landmarks landmark vertices of a mesh or model
+ *  \return the frontal ones among them
+ */
 LandmarkVertices
+
 frontalLandmarks (const LandmarkVertices& landmarks);
 
 } // namespace morphreg

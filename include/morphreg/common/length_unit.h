@@ -11,30 +11,39 @@ namespace morphreg
 /** \brief The length units scans arrive in. */
 enum class LengthUnit
 {
-  millimetre,
-  centimetre,
-  metre,
-  inch
+  millimetre, ///< mm, the library's own unit
+  centimetre, ///< cm
+  metre,      ///< m
+  inch        ///< in, 25.4 mm
 };
 
-/** \brief Millimetres per \a unit: 1, 10, 1000 or 25.4. */
+/** \brief Millimetres per \a unit: 1, 10, 1000 or 25.4.
+ *  \param[in] unit the unit
+ *  \return the length of one \a unit in mm
+ */
 double
 millimetresPer (LengthUnit unit);
 
-/** \brief The unit's symbol: "mm", "cm", "m" or "in". */
+/** \brief The unit's symbol: "mm", "cm", "m" or "in".
+ *  \param[in] unit the unit
+ *  \return its symbol
+ */
 std::string
 toString (LengthUnit unit);
 
-/** \brief The unit of a symbol ("mm", "cm", "m", "in"); InvalidInputError naming the text and the choices. */
+/** \brief The unit of a symbol ("mm", "cm", "m", "in"); InvalidInputError naming the text and the choices.
+ *  \param[in] name the symbol, e.g. from a command line option
+ *  \return the unit it names
+ */
 LengthUnit
 parseLengthUnit (const std::string& name);
 
 /** \brief A guessed unit, the scan's size over the model's as given (ratio) and a sentence saying why. */
 struct LengthUnitGuess
 {
-  LengthUnit unit = LengthUnit::millimetre;
-  double size_ratio = 0.0;
-  std::string reason;
+  LengthUnit unit = LengthUnit::millimetre; ///< the unit the scan is taken to be in
+  double size_ratio = 0.0;                  ///< the scan's size over the model's, both as given
+  std::string reason;                       ///< one sentence with the numbers behind the choice
 };
 
 /** \brief Guesses the unit of \a points (3 x N) from their size against a head model's, \a model_radius_mm (the RMS
@@ -52,6 +61,9 @@ struct LengthUnitGuess
  *  recognised in every unit; a wider head-and-shoulders scan (over 1.88) in inches is taken for cm, and a face alone
  *  (about 0.5) is recognised in mm and m but taken for inches in cm: give the unit in those cases.
  *
+ *  \param[in] points the scan's points, 3 x N, in their file's unit
+ *  \param[in] model_radius_mm the model's RMS radius in mm
+
  *  \return the unit, r and one sentence with the numbers, e.g. "the scan's RMS radius is 0.128 against the model's
  *  104 mm: taken as m (x1000 to mm), it is 1.23 times the model".
  *  Throws InvalidInputError for fewer than 4 or non-finite points, or a non-positive model radius.

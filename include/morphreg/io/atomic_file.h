@@ -11,17 +11,25 @@ namespace morphreg
 {
 /** \brief The temporary name of \a path while it is written: ".partial.<name>" in the same folder (the extension
  *  kept, as writers choose the format by it).
+ *  \param[in] path the file to be written
+ *  \return the temporary path beside it
  */
 std::string
 partialPath (const std::string& path);
 
-/** \brief Renames the finished \a partial onto \a path; IoError naming both if that fails. */
+/** \brief Renames the finished \a partial onto \a path; IoError naming both if that fails.
+ *  \param[in] partial the completely written temporary file
+ *  \param[in] path its final name
+ */
 void
 commitPartial (const std::string& partial, const std::string& path);
 
 /** \brief Writes \a path atomically: \a write (a callable taking the file name to write) writes partialPath(path),
  *  which is then renamed to \a path; if \a write throws, the partial file is removed and the error passed on.
+ *  \param[in] path the file to write
+ *  \param[in] write called with the temporary file name; writes the whole file there
  */
+
 template <typename Write>
 void
 writeAtomically (const std::string& path, Write write)

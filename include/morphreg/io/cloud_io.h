@@ -12,23 +12,32 @@ namespace morphreg
 {
 /** \brief Loads a cloud (.pcd, .ply, .obj, .stl or .off; for a mesh file, its vertices). Throws IoError if the file
  *  is missing or unreadable, FormatError if it has no points.
+ *  \param[in] path the file
+ *  \return the cloud, fields the file lacks left at their defaults
  */
 template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr
 loadCloud (const std::string& path);
 
-/** \brief Saves a cloud as binary .pcd or .ply, or as .obj vertices; throws IoError naming the file on failure. */
+/** \brief Saves a cloud as binary .pcd or .ply, or as .obj vertices; throws IoError naming the file on failure.
+ *  \param[in] path the file; its extension chooses the format
+ *  \param[in] cloud the points to write
+ */
 template <typename PointT>
 void
 saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud);
 
-/** \brief Throws InvalidInputError naming \a name if \a cloud is empty or has a non-finite point. */
+/** \brief Throws InvalidInputError naming \a name if \a cloud is empty or has a non-finite point.
+ *  \param[in] cloud the cloud to check
+ *  \param[in] name what the cloud is (e.g. its file), for the message
+ */
 template <typename PointT>
 void
 requireFiniteNonEmpty (const pcl::PointCloud<PointT>& cloud, const std::string& name);
 
 } // namespace morphreg
 
+/// \cond
 #define MORPHREG_DECLARE_CLOUD_IO(T)                                                                          \
   extern template pcl::PointCloud<T>::Ptr morphreg::loadCloud<T> (const std::string&);                       \
   extern template void morphreg::saveCloud<T> (const std::string&, const pcl::PointCloud<T>&);               \
@@ -37,3 +46,5 @@ MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZ)
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointNormal)
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_CLOUD_IO
+/// \endcond
+

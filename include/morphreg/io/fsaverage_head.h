@@ -14,8 +14,8 @@ namespace morphreg
 /** \brief The fsaverage scalp (closed: a flat cap closes it below the head) and its fiducials, in mm. */
 struct FsaverageHead
 {
-  TriangleMesh mesh;
-  /** "nasion", and the preauricular points LPA / RPA under the nearest project ids (LANDMARKS.md):
+  TriangleMesh mesh; ///< the closed scalp, mm
+  /** "nasion", and the preauricular points LPA / RPA under the nearest project ids (docs/landmarks.md):
    *  "left_tragus" / "right_tragus".
    */
   LandmarkPositions landmarks;
@@ -23,7 +23,10 @@ struct FsaverageHead
 
 /** \brief Loads the scalp and fiducials from \a directory. Throws IoError if a file is missing or unreadable,
  *  FormatError naming the file if the JSON is malformed, its units are not metres or a fiducial is missing.
+ *  \param[in] directory the folder with fsaverage_head.ply and fsaverage_head_landmarks.json
+ *  \return the scalp and its landmarks in mm
  */
+
 FsaverageHead
 loadFsaverageHead (const std::string& directory);
 

@@ -11,13 +11,16 @@
 namespace morphreg
 {
 /** \brief Loads the ICT head model from \a directory as a one-region (global PCA) MorphableModel in mm.
- *  Landmarks: the iBUG-68 points as "ibug68_00" .. "ibug68_67", the project ids of LANDMARKS.md that map to
+ *  Landmarks: the iBUG-68 points as "ibug68_00" .. "ibug68_67", the project ids of docs/landmarks.md that map to
  *  iBUG points, and the points ICT lacks, picked by geometry: left_tragus 7321, right_tragus 8048, nasion 1358.
  *  Profile line: the mid-sagittal vertices (x = 0; the mesh is exactly symmetric), ordered from the front of the
  *  neck over the face and crown to the back of the neck.
  *  Throws IoError if a file is missing, FormatError naming the file and the problem if shapes, counts, values or
  *  indices are wrong.
+ *  \param[in] directory the ICT-FaceKit folder
+ *  \return the model
  */
+
 MorphableModel::Ptr
 loadIctFaceKit (const std::string& directory);
 

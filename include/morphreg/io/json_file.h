@@ -10,11 +10,17 @@ namespace morphreg
 {
 /** \brief Parses the JSON file \a path. Throws IoError if it is missing or unreadable, FormatError naming the file
  *  and the parser's message if it is not valid JSON.
+ *  \param[in] path the file
+ *  \return the parsed document
  */
 nlohmann::json
 readJsonFile (const std::string& path);
 
-/** \brief Writes \a document to \a path (indented); IoError if the file cannot be written. */
+/** \brief Writes \a document to \a path (indented); IoError if the file cannot be written.
+ *  \param[in] path the file
+ *  \param[in] document the JSON to write
+ */
+
 void
 writeJsonFile (const std::string& path, const nlohmann::json& document);
 

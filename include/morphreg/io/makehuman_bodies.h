@@ -15,8 +15,8 @@ namespace morphreg
 /** \brief Pose of a MakeHuman body. */
 enum class BodyPose
 {
-  standing,
-  seated
+  standing, ///< the rest pose
+  seated    ///< sitting on a chair
 };
 
 /** \brief The MakeHuman body folder, validated on construction (files present, counts consistent).
@@ -33,49 +33,72 @@ public:
   /** \brief MakeHuman units (decimetres) to millimetres. */
   static constexpr double kMillimetresPerUnit = 100.0;
 
-  /** \brief Reads the JSON files of \a directory; throws IoError / FormatError naming the file and the problem. */
+  /** \brief Reads the JSON files of \a directory; throws IoError / FormatError naming the file and the problem.
+   *  \param[in] directory the makehuman_bodies folder
+   */
   explicit MakeHumanBodies (const std::string& directory);
 
-  /** \brief The subjects ("base", "caucasian-male-young", "caucasian-female-young"). */
+  /** \brief The subjects ("base", "caucasian-male-young", "caucasian-female-young").
+   *  \return their names
+   */
   std::vector<std::string>
   subjects () const;
 
-  /** \brief A subject's body mesh in \a pose, in millimetres. */
+  /** \brief A subject's body mesh in \a pose, in millimetres.
+   *  \param[in] subject one of subjects()
+   *  \param[in] pose standing or seated
+   *  \return the mesh; every subject and pose share one topology
+   */
   TriangleMesh
   loadMesh (const std::string& subject, BodyPose pose) const;
 
   /** \brief Joint centres (3 x names.size(), mm) of a subject in \a pose; throws InvalidInputError for an
    *  unknown subject or joint name.
+   *  \param[in] subject one of subjects()
+   *  \param[in] pose standing or seated
+   *  \param[in] names the joints wanted, e.g. majorJoints()
+   *  \return one column per name
    */
   Eigen::Matrix3Xd
   joints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const;
 
-  /** \brief All joint names (head and tail of every bone). */
+  /** \brief All joint names (head and tail of every bone).
+   *  \return the names, sorted
+   */
   std::vector<std::string>
   jointNames () const;
 
-  /** \brief The 51 major joints of mh_landmark_sets.json (the sparse landmark set). */
+  /** \brief The 51 major joints of mh_landmark_sets.json (the sparse landmark set).
+   *  \return their names
+   */
   const std::vector<std::string>&
   majorJoints () const
   {
     return major_joints_;
   }
 
-  /** \brief The 16 surface vertex indices of mh_landmark_sets.json (knees, thighs, hips, buttocks). */
+  /** \brief The 16 surface vertex indices of mh_landmark_sets.json (knees, thighs, hips, buttocks).
+   *  \return the vertex indices
+   */
   const std::vector<int>&
   surfaceVertices () const
   {
     return surface_vertices_;
   }
 
-  /** \brief Segment label per vertex (index into segmentNames()). */
+  /** \brief Segment label per vertex (index into segmentNames()).
+   *  \return one label per vertex
+   */
   const std::vector<int>&
   segmentLabels () const
   {
     return segment_labels_;
   }
 
-  /** \brief "left_arm", "right_arm", "upper_body", "lower_body". */
+  /** \brief The body segments: "left_arm", "right_arm", "upper_body", "lower_body".
+   *  \return the names, indexed by segmentLabels()
+   */
+
   const std::vector<std::string>&
   segmentNames () const
   {

@@ -14,8 +14,8 @@ namespace morphreg
 /** \brief The canonical face (front only, open) in mm, with the project landmark ids MediaPipe has. */
 struct MediaPipeFace
 {
-  TriangleMesh mesh;
-  /** Vertex of each landmark of LANDMARKS.md's MediaPipe column: eye corners, nose tip, mouth corners, chin,
+  TriangleMesh mesh; ///< the 468-vertex canonical face, mm
+  /** Vertex of each landmark of the MediaPipe column of docs/landmarks.md: eye corners, nose tip, mouth corners, chin,
    *  forehead.
    */
   LandmarkVertices landmarks;
@@ -23,7 +23,10 @@ struct MediaPipeFace
 
 /** \brief Loads the canonical face OBJ at \a path. Throws IoError if the file is missing or unreadable,
  *  FormatError naming the file if it is not a triangle mesh with the 468 Face Mesh vertices.
+ *  \param[in] path the canonical face OBJ (cm)
+ *  \return the face in mm and its landmark vertices
  */
+
 MediaPipeFace
 loadMediaPipeFace (const std::string& path);
 

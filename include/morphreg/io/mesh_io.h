@@ -15,19 +15,31 @@ namespace morphreg
 /** \brief Loads a polygon mesh (.ply, .obj, .vtk, .stl, ASCII .off). Throws IoError if the file is missing or
  *  unreadable, FormatError if it holds no vertices or no polygons (or, for OFF, naming the line of a bad count,
  *  coordinate or corner index).
+ *  \param[in] path the mesh file
+ *  \return the mesh as read
  */
 pcl::PolygonMesh
 loadPolygonMesh (const std::string& path);
 
-/** \brief Saves \a mesh (.ply binary, .obj, .vtk); throws IoError naming the file on failure. */
+/** \brief Saves \a mesh (.ply binary, .obj, .vtk); throws IoError naming the file on failure.
+ *  \param[in] path the file; its extension chooses the format
+ *  \param[in] mesh the mesh to write
+ */
 void
 savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh);
 
-/** \brief Loads a triangle mesh (non-triangle polygons are an error) and validates it. */
+/** \brief Loads a triangle mesh (non-triangle polygons are an error) and validates it.
+ *  \param[in] path the mesh file (as loadPolygonMesh())
+ *  \return the mesh, with vertex colours if the file has them
+ */
 TriangleMesh
 loadTriangleMesh (const std::string& path);
 
-/** \brief Saves a triangle mesh with vertex normals. */
+/** \brief Saves a triangle mesh with vertex normals.
+ *  \param[in] path the file; its extension chooses the format (as savePolygonMesh())
+ *  \param[in] mesh the mesh to write
+ */
+
 void
 saveTriangleMesh (const std::string& path, const TriangleMesh& mesh);
 

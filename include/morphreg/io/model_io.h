@@ -10,7 +10,7 @@
  *  /version/majorVersion = 0, minorVersion = 9; /modelinfo/build-time, /modelinfo/scores [k, 0] (no scores kept).
  *
  *  morphreg part (float64 so a round trip is exact): /morphreg/formatVersion = 1; mean [3N]; units; landmarks and
- *  metadata (JSON strings); profileLine [L] int32; numRegions; regions/region_<j>/{name, vertices [B] int32,
+ *  metadata (JSON strings); profileLine [L] int32; numRegions; regions/region_\<j\>/{name, vertices [B] int32,
  *  weights [B], basis [3B, P], variances [P]}.
  */
 #include <morphreg/model/morphable_model.h>
@@ -19,7 +19,10 @@
 
 namespace morphreg
 {
-/** \brief Writes \a model to \a path (HDF5, usually .h5); throws IoError naming the file on failure. */
+/** \brief Writes \a model to \a path (HDF5, usually .h5); throws IoError naming the file on failure.
+ *  \param[in] path the model file
+ *  \param[in] model the model to write
+ */
 void
 saveModel (const std::string& path, const MorphableModel& model);
 
@@ -27,6 +30,8 @@ saveModel (const std::string& path, const MorphableModel& model);
  *  statismo-layout global PCA model found at the root or under the Basel Face Model 2017 prefix "shape/".
  *  Throws IoError for a missing file, FormatError naming the file, the dataset and the problem for anything
  *  corrupt (missing dataset, wrong dimensions, non-finite values, out-of-range indices, truncated file).
+ *  \param[in] path the model file
+ *  \return the model
  */
 MorphableModel::Ptr
 loadModel (const std::string& path);
@@ -36,7 +41,11 @@ loadModel (const std::string& path);
  *  import. A file without a version group is read as v0.9. Coordinates are taken to be in millimetres. The
  *  landmarks of a BFM-2017 file's metadata/landmarks/json (scalismo's layout, ids translated by
  *  fromBfmLandmarkId()) become the model's, each on the mean vertex nearest to it.
+ *  \param[in] path the model file
+ *  \param[in] prefix the HDF5 group holding the model
+ *  \return a one-region model
  */
+
 MorphableModel::Ptr
 loadStatismoModel (const std::string& path, const std::string& prefix = "");
 

@@ -24,7 +24,11 @@ struct PlanarCapSettings
  *  the plane and whose normal is within max_angle_deg of the plane's normal (oriented like direction); the plane
  *  is refitted to the selection and the selection repeated, \a settings.rounds times in all. Returns all false
  *  when no triangle qualifies as a seed. Throws InvalidInputError for an invalid mesh or settings.
+ *  \param[in] mesh the mesh, e.g. a head with a flat cut below the neck
+ *  \param[in] settings the seed direction, tolerances and rounds
+ *  \return one flag per triangle: true on the cap
  */
+
 std::vector<bool>
 findPlanarCap (const TriangleMesh& mesh, const PlanarCapSettings& settings = {});
 

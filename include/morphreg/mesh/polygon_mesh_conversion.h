@@ -12,15 +12,26 @@ namespace morphreg
 {
 /** \brief Extracts vertices and triangles from \a mesh; throws InvalidInputError naming \a name if a
  *  polygon is not a triangle or the cloud has no x/y/z fields.
+ *  \param[in] mesh the PCL mesh
+ *  \param[in] name what the mesh is (e.g. its file), for messages
+ *  \return its vertices (mm, double) and triangles
  */
 TriangleMesh
 fromPolygonMesh (const pcl::PolygonMesh& mesh, const std::string& name = "mesh");
 
-/** \brief Builds a pcl::PolygonMesh with PointNormal vertices (normals computed from the triangles). */
+/** \brief Builds a pcl::PolygonMesh with PointNormal vertices (normals computed from the triangles).
+ *  \param[in] mesh the mesh
+ *  \return the PCL mesh
+ */
 pcl::PolygonMesh
 toPolygonMesh (const TriangleMesh& mesh);
 
-/** \brief As toPolygonMesh, with per-vertex colours (3 x N, 0-255) as a PointXYZRGBNormal cloud. */
+/** \brief As toPolygonMesh, with per-vertex colours (3 x N, 0-255) as a PointXYZRGBNormal cloud.
+ *  \param[in] mesh the mesh
+ *  \param[in] colours one RGB colour per vertex
+ *  \return the PCL mesh
+ */
+
 pcl::PolygonMesh
 toPolygonMesh (const TriangleMesh& mesh, const Eigen::Matrix<unsigned char, 3, Eigen::Dynamic>& colours);
 

@@ -21,7 +21,13 @@ struct SurfaceSamples
  *  Triangles flagged in \a excluded (empty = none; else one flag per triangle) get no samples and do not count
  *  towards the area. Throws InvalidInputError for an invalid mesh, a non-positive \a area_per_sample, a wrongly
  *  sized \a excluded or no area left to sample.
+ *  \param[in] mesh the surface
+ *  \param[in] area_per_sample mm^2 of surface per sample
+ *  \param[in] seed the random seed
+ *  \param[in] excluded per triangle, true to leave it out; empty to sample every triangle
+ *  \return the samples and their triangles
  */
+
 SurfaceSamples
 sampleSurfaceUniformly (const TriangleMesh& mesh, double area_per_sample, std::uint64_t seed,
                         const std::vector<bool>& excluded = {});

@@ -13,6 +13,11 @@ namespace morphreg
 /** \brief Barycentric coordinates (weights of a, b, c; sum 1) of the point of triangle (a, b, c) closest to \a p.
  *  A weight is exactly 0 when the closest point lies on the opposite edge, so edge and vertex cases are exact.
  *  Degenerate triangles are handled (their closest point lies on an edge).
+ *  \param[in] p the query point
+ *  \param[in] a the triangle's first corner
+ *  \param[in] b its second corner
+ *  \param[in] c its third corner
+ *  \return the weights of a, b and c
  */
 Eigen::Vector3d
 closestPointOnTriangle (const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
@@ -28,8 +33,8 @@ closestPointOnTriangle (const Eigen::Vector3d& p, const Eigen::Vector3d& a, cons
 class TriangleLocator
 {
 public:
-  using Ptr = std::shared_ptr<TriangleLocator>;
-  using ConstPtr = std::shared_ptr<const TriangleLocator>;
+  using Ptr = std::shared_ptr<TriangleLocator>;           ///< shared pointer
+  using ConstPtr = std::shared_ptr<const TriangleLocator>; ///< shared pointer to const
 
   /** \brief Where a query met the surface. */
   struct Hit
@@ -41,10 +46,16 @@ public:
     bool on_boundary = false;  ///< it lies on an edge used by one triangle only, or on a vertex of such an edge
   };
 
-  /** \brief Builds the hierarchy; throws InvalidInputError (via validateMesh) for an invalid mesh. */
+  /** \brief Builds the hierarchy; throws InvalidInputError (via validateMesh) for an invalid mesh.
+   *  \param[in] mesh the surface to query
+   */
   explicit TriangleLocator (const TriangleMesh& mesh);
 
-  /** \brief The closest point of the surface to \a query; throws InvalidInputError for a non-finite query. */
+  /** \brief The closest point of the surface to \a query; throws InvalidInputError for a non-finite query.
+   *  \param[in] query the point (mm)
+   *  \return where the surface is closest to it
+   */
+
   Hit
   closestPoint (const Eigen::Vector3d& query) const;
 

@@ -13,46 +13,68 @@ namespace morphreg
 class ComponentSelection
 {
 public:
+  /** \brief No region, no component. */
   ComponentSelection () : offsets_ (1, 0) {}
 
-  /** \brief Selects \a counts[j] (>= 0) leading components of region j. */
+  /** \brief Selects \a counts[j] (>= 0) leading components of region j.
+   *  \param[in] counts one count per region
+   */
   explicit ComponentSelection (std::vector<int> counts);
 
+  /** \brief The number of regions.
+   *  \return counts ().size ()
+   */
   int
   numRegions () const
   {
     return static_cast<int> (counts_.size ());
   }
 
-  /** \brief Number of selected components of \a region. */
+  /** \brief Number of selected components of \a region.
+   *  \param[in] region the region index
+   *  \return its count
+   */
   int
   count (int region) const
   {
     return counts_[region];
   }
 
-  /** \brief Column of \a region's first selected component in the stacked coefficient vector. */
+  /** \brief Column of \a region's first selected component in the stacked coefficient vector.
+   *  \param[in] region the region index
+   *  \return the sum of the counts of the regions before it
+   */
   int
   offset (int region) const
   {
     return offsets_[region];
   }
 
-  /** \brief Length of the stacked coefficient vector (the number P of shape parameters). */
+  /** \brief Length of the stacked coefficient vector (the number P of shape parameters).
+   *  \return the sum of all counts
+   */
   int
   total () const
   {
     return offsets_.back ();
   }
 
+  /** \brief The selected components per region.
+   *  \return one count per region
+   */
   const std::vector<int>&
   counts () const
   {
     return counts_;
   }
 
+  /** \brief Whether both select the same counts.
+   *  \param[in] other the selection to compare with
+   *  \return true for equal counts
+   */
   bool
   operator== (const ComponentSelection& other) const
+
   {
     return counts_ == other.counts_;
   }

@@ -25,13 +25,21 @@ namespace morphreg
 /** \brief Seeds and geodesic radii (mm) of the six face regions on an ICT model loaded by loadIctFaceKit (needs
  *  its ibug68_* and tragus landmarks); the cheek seeds are the vertices nearest to the centroid of outer eye
  *  corner, mouth corner and jaw contour point on each side.
+ *  \param[in] ict the ICT model as loaded
+ *  \return one group per face region
  */
 std::vector<LandmarkGroup>
 ictRegionGroups (const MorphableModel& ict);
 
 /** \brief Samples \a samples heads from \a ict (seeded by \a seed) and builds the 7-region model with
  *  \a settings; landmarks, profile line and units are carried over.
+ *  \param[in] ict the ICT model as loaded
+ *  \param[in] samples how many heads to draw from it
+ *  \param[in] seed the random seed of the draw
+ *  \param[in] settings the model builder's settings
+ *  \return the 7-region model
  */
+
 MorphableModel::Ptr
 buildIctRegionModel (const MorphableModel& ict, int samples, std::uint64_t seed,
                      const ModelBuilderSettings& settings = {});

@@ -1,6 +1,7 @@
 #pragma once
 /** \file model_builder.h
- *  \brief Builds a (multi-region) MorphableModel from training meshes in correspondence (METHOD.md section 2).
+ *  \brief Builds a (multi-region) MorphableModel from training meshes in correspondence (docs/method.md,
+ *  "The multi-region shape model").
  */
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/model/pca.h>
@@ -21,6 +22,7 @@ struct ModelBuilderSettings
   int blend_rings = 2;
   /** \brief Rigid generalised Procrustes alignment of the training meshes before the PCA. */
   bool align = true;
+  /** \brief How the PCAs are computed. */
   PcaMethod pca_method = PcaMethod::automatic;
 };
 
@@ -34,22 +36,34 @@ struct ModelBuilderSettings
 class ModelBuilder
 {
 public:
+  /** \brief A builder with \a settings.
+   *  \param[in] settings component limits, blending and alignment
+   */
   explicit ModelBuilder (ModelBuilderSettings settings = {});
 
   /** \brief A one-region model of the global PCA. Throws InvalidInputError for fewer than two meshes, an invalid
    *  mesh, or meshes not in correspondence (naming the mesh and the difference).
+   *  \param[in] meshes the training meshes, one topology
+   *  \return the model
    */
   MorphableModel::Ptr
   buildGlobal (const std::vector<TriangleMesh>& meshes) const;
 
   /** \brief A multi-region model: one PCA per region of \a regions (grown and blended), plus the global PCA as
    *  the model's statismo part. Throws InvalidInputError as buildGlobal, and for invalid region labels.
+   *  \param[in] meshes the training meshes, one topology
+   *  \param[in] regions a region label per vertex
+   *  \return the model
    */
   MorphableModel::Ptr
   build (const std::vector<TriangleMesh>& meshes, const RegionLabels& regions) const;
 
+  /** \brief The builder's settings.
+   *  \return the settings given at construction
+   */
   const ModelBuilderSettings&
   settings () const
+
   {
     return settings_;
   }

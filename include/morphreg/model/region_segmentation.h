@@ -13,12 +13,14 @@ namespace morphreg
 /** \brief A partition of a mesh's vertices into named regions: labels[v] indexes names. */
 struct RegionLabels
 {
-  std::vector<std::string> names;
-  std::vector<int> labels;
+  std::vector<std::string> names; ///< one name per region
+  std::vector<int> labels;        ///< one region index per vertex
 };
 
 /** \brief Throws InvalidInputError if \a regions does not label \a num_vertices vertices with valid indices, a
  *  name is empty or duplicated, or a region is empty.
+ *  \param[in] regions the labels to check
+ *  \param[in] num_vertices the mesh's vertex count
  */
 void
 validateRegionLabels (const RegionLabels& regions, Eigen::Index num_vertices);
@@ -26,16 +28,21 @@ validateRegionLabels (const RegionLabels& regions, Eigen::Index num_vertices);
 /** \brief A region seeded by landmark vertices: vertices within \a radius (mm, geodesic) of any seed join it. */
 struct LandmarkGroup
 {
-  std::string name;
-  std::vector<int> vertices;
-  double radius;
+  std::string name;          ///< the region's name
+  std::vector<int> vertices; ///< the seed vertices
+  double radius;             ///< geodesic radius around the seeds, mm
 };
 
 /** \brief Assigns each vertex to the group whose seeds are geodesically nearest (edge-graph distance over
  *  \a mesh), if within that group's radius; other vertices form the region \a rest_name (listed last).
  *  Throws InvalidInputError for an invalid mesh, an empty group, a seed out of range, a non-positive radius or
  *  a region left empty.
+ *  \param[in] mesh the mesh to segment
+ *  \param[in] groups the seeded regions
+ *  \param[in] rest_name the name of the region of all other vertices
+ *  \return the regions and a label per vertex
  */
+
 RegionLabels
 segmentByLandmarkGroups (const TriangleMesh& mesh, const std::vector<LandmarkGroup>& groups,
                          const std::string& rest_name = "skull_neck");

@@ -1,6 +1,6 @@
 #pragma once
 /** \file frontal_view.h
- *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of LANDMARKS.md) in pixels.
+ *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of docs/landmarks.md) in pixels.
  */
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/photo/photo_normalisation.h>
@@ -17,24 +17,36 @@ class FrontalView
 {
 public:
   /** \brief Throws InvalidInputError naming \a source for a non-positive image size, a landmark id that is not in
-   *  LANDMARKS.md, a non-finite pixel or a missing nose_tip.
+   *  docs/landmarks.md, a non-finite pixel or a missing nose_tip.
+   *  \param[in] width the image width in pixels
+   *  \param[in] height the image height in pixels
+   *  \param[in] landmarks the marked landmarks in pixels
+   *  \param[in] source the annotation's file or origin, for messages
    */
   FrontalView (int width, int height, LandmarkPixels landmarks, const std::string& source = "FrontalView");
 
+  /** \brief The photo's normalisation.
+   *  \return the map from pixels to the normalised frame
+   */
   const PhotoNormalisation&
   normalisation () const
   {
     return normalisation_;
   }
 
-  /** \brief The landmarks in pixels. */
+  /** \brief The landmarks in pixels.
+   *  \return id -> pixel
+   */
   const LandmarkPixels&
   landmarks () const
   {
     return landmarks_;
   }
 
-  /** \brief The landmarks in the normalised frame: u to the image's right (the model's +X), v up (+Y). */
+  /** \brief The landmarks in the normalised frame: u to the image's right (the model's +X), v up (+Y).
+   *  \return id -> normalised position
+   */
+
   std::map<std::string, Eigen::Vector2d>
   normalisedLandmarks () const;
 

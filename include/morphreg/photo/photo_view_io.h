@@ -18,17 +18,32 @@
 
 namespace morphreg
 {
+/** \brief Reads a profile annotation (the layout above).
+ *  \param[in] path the JSON file
+ *  \return the silhouette and nose tip
+ */
 ProfileView
 loadProfileView (const std::string& path);
 
+/** \brief Reads a frontal annotation (the layout above).
+ *  \param[in] path the JSON file
+ *  \return the landmarks
+ */
 FrontalView
 loadFrontalView (const std::string& path);
 
-/** \brief Writes \a view as a profile JSON file; IoError if it cannot be written. */
+/** \brief Writes \a view as a profile JSON file; IoError if it cannot be written.
+ *  \param[in] path the JSON file
+ *  \param[in] view the profile annotation
+ */
 void
 saveProfileView (const std::string& path, const ProfileView& view);
 
-/** \brief Writes \a view as a frontal JSON file; IoError if it cannot be written. */
+/** \brief Writes \a view as a frontal JSON file; IoError if it cannot be written.
+ *  \param[in] path the JSON file
+ *  \param[in] view the frontal annotation
+ */
+
 void
 saveFrontalView (const std::string& path, const FrontalView& view);
 } // namespace morphreg

@@ -12,20 +12,32 @@ namespace morphreg
 class Polyline2d
 {
 public:
-  /** \brief Throws InvalidInputError for fewer than 2 points or non-finite coordinates. */
+  /** \brief Throws InvalidInputError for fewer than 2 points or non-finite coordinates.
+   *  \param[in] points the vertices in order, one per column
+   */
   explicit Polyline2d (Eigen::Matrix2Xd points);
 
-  /** \brief The point of the polyline closest to \a query. */
+  /** \brief The point of the polyline closest to \a query.
+   *  \param[in] query the point
+   *  \return the closest point on any segment
+   */
   Eigen::Vector2d
   closestPoint (const Eigen::Vector2d& query) const;
 
   /** \brief Whether \a point (a closestPoint result) is one of the polyline's two ends: a query beyond the traced
-   *  part of a silhouette lands there, and says nothing about where the outline goes. */
+   *  part of a silhouette lands there, and says nothing about where the outline goes.
+   *  \param[in] point a result of closestPoint()
+   *  \return true at either end
+   */
   bool
   isEnd (const Eigen::Vector2d& point) const;
 
+  /** \brief The polyline's vertices.
+   *  \return 2 x K, in order
+   */
   const Eigen::Matrix2Xd&
   points () const
+
   {
     return points_;
   }

@@ -12,11 +12,15 @@ namespace morphreg
 /** \brief An 8-bit RGB image, rows top to bottom (pixel (0, 0) is the top-left corner, as in photo annotations). */
 struct RgbImage
 {
-  int width = 0;
-  int height = 0;
+  int width = 0;  ///< pixels per row
+  int height = 0; ///< rows
   std::vector<unsigned char> data; ///< 3 bytes per pixel, row by row
 
-  /** \brief The colour of column \a x, row \a y (no range check). */
+  /** \brief The colour of column \a x, row \a y (no range check).
+   *  \param[in] x the column, 0 at the left
+   *  \param[in] y the row, 0 at the top
+   *  \return the pixel's colour
+   */
   Rgb8
   pixel (int x, int y) const
   {
@@ -27,13 +31,18 @@ struct RgbImage
 
 /** \brief Reads a PNG or JPEG photo (grey and RGBA images become RGB). Throws IoError if the file is missing,
  *  FormatError naming it if it is not a readable 8-bit PNG or JPEG.
+ *  \param[in] path the image file
+ *  \return the image as RGB
  */
 RgbImage
 loadRgbImage (const std::string& path);
 
 /** \brief Writes \a image as PNG. Throws InvalidInputError for an empty or inconsistent image, IoError if the file
  *  cannot be written.
+ *  \param[in] path the PNG file
+ *  \param[in] image the image
  */
+
 void
 saveRgbImage (const std::string& path, const RgbImage& image);
 } // namespace morphreg

@@ -19,27 +19,30 @@ namespace synthetic
 /** \brief The seven regions of the thesis's multi-region model. */
 enum class HeadRegion : int
 {
-  eyes = 0,
-  nose,
-  mouth,
-  ears,
-  chin,
-  cheeks,
-  skull_neck
+  eyes = 0,  ///< both eyes and their sockets
+  nose,      ///< the nose
+  mouth,     ///< lips and mouth
+  ears,      ///< both ears
+  chin,      ///< the chin
+  cheeks,    ///< both cheeks
+  skull_neck ///< everything else: skull, forehead, neck
 };
 
 /** \brief Number of HeadRegion values. */
 constexpr int kNumHeadRegions = 7;
 
-/** \brief Lower-case name of a region ("eyes", ..., "skull_neck"). */
+/** \brief Lower-case name of a region ("eyes", ..., "skull_neck").
+ *  \param[in] region the region
+ *  \return its name
+ */
 std::string
 headRegionName (HeadRegion region);
 
 /** \brief One generated head: its mesh (mm) and the parameters that shaped it. */
 struct SyntheticHead
 {
-  TriangleMesh mesh;
-  HeadParameters parameters;
+  TriangleMesh mesh;         ///< the head, mm
+  HeadParameters parameters; ///< the measurements it was generated from
 };
 
 /** \brief Generates closed, manifold head-and-neck meshes (+Y up, +Z out of the face, +X to the subject's
@@ -55,40 +58,58 @@ struct SyntheticHead
 class HeadGenerator
 {
 public:
-  using Ptr = std::shared_ptr<HeadGenerator>;
-  using ConstPtr = std::shared_ptr<const HeadGenerator>;
+  using Ptr = std::shared_ptr<HeadGenerator>;           ///< shared pointer
+  using ConstPtr = std::shared_ptr<const HeadGenerator>; ///< shared pointer to const
 
   /** \brief \a resolution (even, 20-44) cells per cube edge of the underlying sphere: 6 r^2 + 2 vertices
    *  (the default 40 gives 9602).
+   *  \param[in] resolution the sphere's cells per cube edge
    */
   explicit HeadGenerator (int resolution = 40);
 
-  /** \brief The head with the given parameters (validated). */
+  /** \brief The head with the given parameters (validated).
+   *  \param[in] parameters the measurements
+   *  \return the head mesh
+   */
   TriangleMesh
   generate (const HeadParameters& parameters) const;
 
-  /** \brief The head whose parameters are drawn from the population with \a seed. */
+  /** \brief The head whose parameters are drawn from the population with \a seed.
+   *  \param[in] seed the random seed
+   *  \return the head and its parameters
+   */
   SyntheticHead
   sample (std::uint64_t seed) const;
 
-  /** \brief \a count heads; head i uses the parameters drawn with seed + i, so any subset can be regenerated. */
+  /** \brief \a count heads; head i uses the parameters drawn with seed + i, so any subset can be regenerated.
+   *  \param[in] count the number of heads
+   *  \param[in] seed the seed of the first head
+   *  \return the heads, in seed order
+   */
   std::vector<SyntheticHead>
   population (int count, std::uint64_t seed) const;
 
-  /** \brief The shared triangles (3 x M, counter-clockwise seen from outside). */
+  /** \brief The shared triangles (3 x M, counter-clockwise seen from outside).
+   *  \return the triangles of every head
+   */
   const TriangleMesh::Triangles&
   triangles () const
   {
     return triangles_;
   }
 
+  /** \brief The number of vertices of every head.
+   *  \return 6 r^2 + 2 for resolution r
+   */
   Eigen::Index
   numVertices () const
   {
     return directions_.cols ();
   }
 
-  /** \brief Landmark ids of LANDMARKS.md -> vertex index (every id that exists on a 3D head). */
+  /** \brief Landmark ids of docs/landmarks.md -> vertex index (every id that exists on a 3D head).
+   *  \return id -> vertex index, the same on every head
+   */
   const LandmarkVertices&
   landmarks () const
   {
@@ -97,6 +118,7 @@ public:
 
   /** \brief Vertices on the mid-sagittal plane (x = 0), ordered from the front of the neck over the face and
    *  the crown to the back of the neck.
+   *  \return the vertex indices in order
    */
   const std::vector<int>&
   profileLine () const
@@ -104,14 +126,19 @@ public:
     return profile_line_;
   }
 
-  /** \brief Region of each vertex. */
+  /** \brief Region of each vertex.
+   *  \return one region per vertex
+   */
   const std::vector<HeadRegion>&
   regionLabels () const
   {
     return region_labels_;
   }
 
-  /** \brief The seven regions named (headRegionName) and indexed per vertex, as ModelBuilder::build takes them. */
+  /** \brief The seven regions named (headRegionName) and indexed per vertex, as ModelBuilder::build takes them.
+   *  \return the region names and labels
+   */
+
   RegionLabels
   regions () const;
 

@@ -40,25 +40,32 @@ struct HeadParameters
   /** \brief Name, mean, standard deviation and allowed range of one parameter. */
   struct Range
   {
-    std::string name;
-    double HeadParameters::*member;
-    double mean;
-    double stddev;
-    double min;
-    double max;
+    std::string name;               ///< the member's name, e.g. "nose_length"
+    double HeadParameters::*member; ///< the member it describes
+    double mean;                    ///< population mean, mm
+    double stddev;                  ///< population standard deviation, mm
+    double min;                     ///< smallest allowed value, mm
+    double max;                     ///< largest allowed value, mm
   };
 
-  /** \brief All parameters with their population statistics (the order of asVector()). */
+  /** \brief All parameters with their population statistics (the order of asVector()).
+   *  \return one range per parameter
+   */
   static const std::vector<Range>&
   ranges ();
 
   /** \brief Draws a head from the population: a shared size factor (half of every length's variance) plus
    *  independent Gaussian variation, each value clamped to its range (mean +- 2.5 sd).
+   *  \param[in,out] rng the random generator
+   *  \return the drawn parameters
    */
   static HeadParameters
   sample (std::mt19937_64& rng);
 
-  /** \brief The parameters in the order of ranges(). */
+  /** \brief The parameters in the order of ranges().
+   *  \return their values, mm
+   */
+
   std::vector<double>
   asVector () const;
 

@@ -21,11 +21,11 @@ namespace synthetic
  */
 struct SimulatedPhotos
 {
-  ProfileView profile;
-  FrontalView frontal;
-  double scale;
-  Eigen::Matrix3d rotation;
-  Eigen::Vector3d translation;
+  ProfileView profile;         ///< the annotated profile photo
+  FrontalView frontal;         ///< the annotated frontal photo
+  double scale;                ///< s: normalised units per head millimetre
+  Eigen::Matrix3d rotation;    ///< R: the head's pose
+  Eigen::Vector3d translation; ///< t, normalised units
 };
 
 /** \brief Photographs a head (+Y up, +Z out of the face) orthographically from the front (along -Z) and from its
@@ -41,10 +41,11 @@ struct SimulatedPhotos
 class PhotoSimulator
 {
 public:
+  /** \brief Camera and annotation settings. */
   struct Parameters
   {
-    int width = 1000;                   ///< image size (px), both photos
-    int height = 1200;
+    int width = 1000;                   ///< image width (px), both photos
+    int height = 1200;                  ///< image height (px), both photos
     double pixels_per_mm = 3.5;         ///< the same in both photos
     Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity (); ///< the head's pose (about its origin)
     Eigen::Vector2d frontal_nose{480.0, 620.0};  ///< where the nose tip lands in the frontal photo (px)
@@ -54,11 +55,17 @@ public:
     int silhouette_subdivisions = 3;    ///< points inserted in each segment of the projected profile line
   };
 
+  /** \brief A simulator with the default Parameters. */
   PhotoSimulator () = default;
 
-  /** \brief Throws InvalidInputError naming the setting if \a parameters are out of range. */
+  /** \brief Throws InvalidInputError naming the setting if \a parameters are out of range.
+   *  \param[in] parameters the camera and annotation settings
+   */
   explicit PhotoSimulator (const Parameters& parameters);
 
+  /** \brief The simulator's settings.
+   *  \return the parameters
+   */
   const Parameters&
   parameters () const
   {
@@ -68,7 +75,13 @@ public:
   /** \brief Photographs \a head (3 x N, mm) with noise drawn from \a seed. \a frontal_landmarks (which must
    *  include nose_tip) and \a profile_line index \a head's columns. Throws InvalidInputError for out-of-range
    *  indices or a profile line of fewer than 2 vertices.
+   *  \param[in] head the head's vertices (3 x N, mm)
+   *  \param[in] frontal_landmarks the landmarks to mark on the frontal photo
+   *  \param[in] profile_line the vertices whose projection is the silhouette, in order
+   *  \param[in] seed the seed of the annotation noise
+   *  \return the two annotated photos and the true similarity
    */
+
   SimulatedPhotos
   photograph (const Eigen::Matrix3Xd& head, const LandmarkVertices& frontal_landmarks,
               const std::vector<int>& profile_line, std::uint64_t seed) const;

@@ -66,11 +66,17 @@ public:
     double max_edge_length = 6;    ///< mm, range-image neighbours further apart are not connected
   };
 
+  /** \brief A scanner with the default Parameters. */
   ScanSimulator () = default;
 
-  /** \brief Throws InvalidInputError naming the setting if \a parameters are out of range. */
+  /** \brief Throws InvalidInputError naming the setting if \a parameters are out of range.
+   *  \param[in] parameters the scanner settings
+   */
   explicit ScanSimulator (const Parameters& parameters);
 
+  /** \brief The scanner's settings.
+   *  \return the parameters
+   */
   const Parameters&
   parameters () const
   {
@@ -79,7 +85,11 @@ public:
 
   /** \brief Scans \a head (validated; mm) with noise, outliers and pose drawn from \a seed. Throws
    *  InvalidInputError if the scanner sees nothing of it.
+   *  \param[in] head the head mesh
+   *  \param[in] seed the seed of the noise, outliers and pose
+   *  \return the scan and its ground truth
    */
+
   SimulatedScan
   scan (const TriangleMesh& head, std::uint64_t seed) const;
 

@@ -49,21 +49,21 @@ namespace morphreg
 class RegistrationVisualizer
 {
 public:
-  using Ptr = std::shared_ptr<RegistrationVisualizer>;
-  using ConstPtr = std::shared_ptr<const RegistrationVisualizer>;
+  using Ptr = std::shared_ptr<RegistrationVisualizer>;           ///< shared pointer
+  using ConstPtr = std::shared_ptr<const RegistrationVisualizer>; ///< shared pointer to const
 
   /** \brief An on-screen window with an interactor, or offscreen rendering only (no interactor, no window). */
   enum class Display
   {
-    Window,
-    Offscreen
+    Window,   ///< a window the user can interact with
+    Offscreen ///< rendering for screenshots only
   };
 
   /** \brief Landmarks of the moving side (model, source) or of the fixed side (scan, target): different colours. */
   enum class LandmarkRole
   {
-    Source,
-    Target
+    Source, ///< the moving side: the model
+    Target  ///< the fixed side: the scan
   };
 
   /** \brief PCL's registration callback signature (Registration::UpdateVisualizerCallbackSignature). */
@@ -72,60 +72,108 @@ public:
       std::function<void (const pcl::PointCloud<PointSource>&, const pcl::Indices&,
                           const pcl::PointCloud<PointTarget>&, const pcl::Indices&)>;
 
-  /** \brief Opens the visualiser. Throws morphreg::Error if there is no X display ($DISPLAY unset). */
+  /** \brief Opens the visualiser. Throws morphreg::Error if there is no X display ($DISPLAY unset).
+   *  \param[in] display a window or offscreen rendering
+   *  \param[in] window_name the window's title
+   */
   explicit RegistrationVisualizer (Display display = Display::Window,
                                    const std::string& window_name = "morphreg registration");
 
+  /** \brief Closes the window and releases the renderer. */
   ~RegistrationVisualizer ();
 
+  /// \cond
   RegistrationVisualizer (const RegistrationVisualizer&) = delete;
   RegistrationVisualizer&
   operator= (const RegistrationVisualizer&) = delete;
+  /// \endcond
 
-  /** \brief The underlying PCL visualiser, for anything not covered here. */
+  /** \brief The underlying PCL visualiser, for anything not covered here.
+   *  \return the PCLVisualizer
+   */
   pcl::visualization::PCLVisualizer&
   getVisualizer ();
 
-  /** \brief Sets the background of every viewport (RGB in [0, 1]); text colours follow its brightness. */
+  /** \brief Sets the background of every viewport (RGB in [0, 1]); text colours follow its brightness.
+   *  \param[in] r red
+   *  \param[in] g green
+   *  \param[in] b blue
+   */
   void
   setBackgroundColour (double r, double g, double b);
 
   /** \brief Splits the window into a left "before" and a right "after" viewport, sharing one camera, each with a
-   *  caption. \param[out] before the left viewport \param[out] after the right viewport
+   *  caption.
+   *  \param[out] before the left viewport
+   *  \param[out] after the right viewport
+   *  \param[in] before_caption the left viewport's caption
+   *  \param[in] after_caption the right viewport's caption
    */
   void
   createBeforeAfterViewports (int& before, int& after, const std::string& before_caption = "before",
                               const std::string& after_caption = "after");
 
-  /** \brief Shows a target scan as points (uniform colour, \a point_size pixels). */
+  /** \brief Shows a target scan as points (uniform colour, \a point_size pixels).
+   *  \param[in] cloud the scan
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   *  \param[in] point_size the points' size in pixels
+   */
   template <typename PointT>
   void
   addTargetCloud (const pcl::PointCloud<PointT>& cloud, const std::string& id = "target", int viewport = 0,
                   double point_size = 2.0);
 
-  /** \brief Shows a target scan given as a mesh (its vertex colours if it has any, else the target colour). */
+  /** \brief Shows a target scan given as a mesh (its vertex colours if it has any, else the target colour).
+   *  \param[in] mesh the scan
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   */
   void
   addTargetMesh (const pcl::PolygonMesh& mesh, const std::string& id = "target", int viewport = 0);
 
-  /** \brief Shows a target scan given as a triangle mesh. */
+  /** \brief Shows a target scan given as a triangle mesh.
+   *  \param[in] mesh the scan
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   */
   void
   addTargetMesh (const TriangleMesh& mesh, const std::string& id = "target", int viewport = 0);
 
-  /** \brief Shows the fitted model as a smooth-shaded mesh with \a opacity in [0, 1]. */
+  /** \brief Shows the fitted model as a smooth-shaded mesh with \a opacity in [0, 1].
+   *  \param[in] mesh the fitted model
+   *  \param[in] opacity 0 transparent, 1 opaque
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   */
   void
   addModelMesh (const pcl::PolygonMesh& mesh, double opacity = 0.6, const std::string& id = "model",
                 int viewport = 0);
 
-  /** \brief Shows the fitted model given as a triangle mesh. */
+  /** \brief Shows the fitted model given as a triangle mesh.
+   *  \param[in] mesh the fitted model
+   *  \param[in] opacity 0 transparent, 1 opaque
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   */
   void
   addModelMesh (const TriangleMesh& mesh, double opacity = 0.6, const std::string& id = "model", int viewport = 0);
 
-  /** \brief Changes the opacity (in [0, 1]) of a mesh added before. */
+  /** \brief Changes the opacity (in [0, 1]) of a mesh already shown.
+   *  \param[in] opacity 0 transparent, 1 opaque
+   *  \param[in] id the mesh's id
+   */
   void
   setMeshOpacity (double opacity, const std::string& id = "model");
 
   /** \brief Draws lines from source[index_query] to target[index_match], at most \a max_lines of them (an evenly
    *  spaced subset keeps dense correspondences readable). Throws InvalidInputError for out-of-range indices.
+   *  \param[in] source the source cloud (e.g. the model's vertices in the scan frame)
+   *  \param[in] target the target cloud (the scan)
+   *  \param[in] correspondences pairs of source and target indices
+   *  \param[in] max_lines the most lines drawn
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
    */
   template <typename PointSource, typename PointTarget>
   void
@@ -137,22 +185,41 @@ public:
    *  residual) and adds a colour bar titled "residual (mm)" with its scale [0, \a max_residual_mm]. A
    *  non-positive \a max_residual_mm uses the largest residual. Throws InvalidInputError if the sizes differ
    *  or a residual is negative or infinite.
+   *  \param[in] mesh the fitted mesh
+   *  \param[in] residuals_mm one residual per vertex (mm), NaN for none
+   *  \param[in] max_residual_mm the top of the colour scale (<= 0: the largest residual)
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
    */
   void
   addResidualHeatMap (const TriangleMesh& mesh, const Eigen::VectorXd& residuals_mm, double max_residual_mm = 0.0,
                       const std::string& id = "residuals", int viewport = 0);
 
-  /** \brief As above for a pcl::PolygonMesh of triangles. */
+  /** \brief As above for a pcl::PolygonMesh of triangles.
+   *  \param[in] mesh the fitted mesh
+   *  \param[in] residuals_mm one residual per vertex (mm), NaN for none
+   *  \param[in] max_residual_mm the top of the colour scale (<= 0: the largest residual)
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   */
   void
   addResidualHeatMap (const pcl::PolygonMesh& mesh, const Eigen::VectorXd& residuals_mm,
                       double max_residual_mm = 0.0, const std::string& id = "residuals", int viewport = 0);
 
-  /** \brief Where the colour bar sits in its viewport: (x_min, y_min, x_max, y_max), normalised, origin bottom left. */
+  /** \brief Where the colour bar sits in its viewport: (x_min, y_min, x_max, y_max), normalised, origin bottom left.
+   *  \return the bar's corners in viewport coordinates
+   */
   static Eigen::Vector4d
   colourBarRegion ();
 
   /** \brief Draws each landmark as a sphere of \a radius (mm) in the colour of its \a role, labelled with its id
    *  when \a labels is set. Shapes are named \a id_prefix + landmark id (+ "_label").
+   *  \param[in] landmarks the landmarks by id (mm)
+   *  \param[in] role source or target, which sets the colour
+   *  \param[in] radius the spheres' radius (mm)
+   *  \param[in] labels whether to write each landmark's id beside it
+   *  \param[in] id_prefix prefix of the shapes' ids
+   *  \param[in] viewport where to show them (0: every viewport)
    */
   void
   addLandmarks (const LandmarkPositions& landmarks, LandmarkRole role, double radius = 2.5, bool labels = true,
@@ -167,12 +234,17 @@ public:
    *  icp.registerVisualizationCallback (callback);
    *  icp.align (aligned);
    *  \endcode
+   *  \param[in] viewport where to draw (0: every viewport)
+   *  \param[in] max_lines the most correspondence lines drawn per call
+   *  \return the callback
    */
   template <typename PointSource, typename PointTarget>
   RegistrationCallback<PointSource, PointTarget>
   makeRegistrationCallback (int viewport = 0, std::size_t max_lines = 300);
 
-  /** \brief How many times registration callbacks made by this visualiser have been called. */
+  /** \brief How many times registration callbacks made by this visualiser have been called.
+   *  \return the number of calls
+   */
   std::size_t
   getRegistrationUpdateCount () const
   {
@@ -181,6 +253,8 @@ public:
 
   /** \brief Points the shared camera along -\a view_direction (default: looking at the face, +Z towards the
    *  viewer) with \a up upwards, and fits everything shown in every viewport (again at each screenshot's size).
+   *  \param[in] view_direction from the scene towards the camera
+   *  \param[in] up the screen's up direction in the scene
    */
   void
   resetCamera (const Eigen::Vector3d& view_direction = Eigen::Vector3d::UnitZ (),
@@ -189,6 +263,9 @@ public:
   /** \brief Renders at \a width x \a height pixels and writes a PNG (vtkWindowToImageFilter + vtkPNGWriter; works
    *  without an interactor). Throws InvalidInputError for a non-positive size, IoError if the file cannot be
    *  written.
+   *  \param[in] png_path the PNG file
+   *  \param[in] width the image width in pixels
+   *  \param[in] height the image height in pixels
    */
   void
   saveScreenshot (const std::string& png_path, int width, int height);
@@ -197,7 +274,9 @@ public:
   void
   spin ();
 
-  /** \brief Processes window events for \a milliseconds and redraws (Display::Window only). */
+  /** \brief Processes window events for \a milliseconds and redraws (Display::Window only).
+   *  \param[in] milliseconds how long to process events
+   */
   void
   spinOnce (int milliseconds = 1);
 
@@ -249,6 +328,7 @@ private:
 
 } // namespace morphreg
 
+/// \cond
 #define MORPHREG_DECLARE_REGISTRATION_VISUALIZER(T)                                                                \
   extern template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&,               \
                                                                              const std::string&, int, double);     \
@@ -261,3 +341,5 @@ MORPHREG_DECLARE_REGISTRATION_VISUALIZER (pcl::PointXYZ)
 MORPHREG_DECLARE_REGISTRATION_VISUALIZER (pcl::PointNormal)
 MORPHREG_DECLARE_REGISTRATION_VISUALIZER (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_REGISTRATION_VISUALIZER
+/// \endcond
+

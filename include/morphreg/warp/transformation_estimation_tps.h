@@ -28,53 +28,83 @@ template <typename PointSource, typename PointTarget, typename Scalar = double>
 class TransformationEstimationTPS
 {
 public:
-  using Ptr = std::shared_ptr<TransformationEstimationTPS>;
-  using ConstPtr = std::shared_ptr<const TransformationEstimationTPS>;
-  using PointCloudSource = pcl::PointCloud<PointSource>;
-  using PointCloudTarget = pcl::PointCloud<PointTarget>;
-  using Spline = ThinPlateSpline<Scalar, 3>;
+  using Ptr = std::shared_ptr<TransformationEstimationTPS>;           ///< shared pointer
+  using ConstPtr = std::shared_ptr<const TransformationEstimationTPS>; ///< shared pointer to const
+  using PointCloudSource = pcl::PointCloud<PointSource>;               ///< the source cloud type
+  using PointCloudTarget = pcl::PointCloud<PointTarget>;               ///< the target cloud type
+  using Spline = ThinPlateSpline<Scalar, 3>;                           ///< the estimated warp
 
-  /** \brief Regularisation lambda of the estimated splines (see ThinPlateSpline::setRegularization). */
+  /** \brief Regularisation lambda of the estimated splines (see ThinPlateSpline::setRegularization).
+   *  \param[in] lambda the smoothing weight, >= 0
+   */
   void
   setRegularization (double lambda)
   {
     settings_.setRegularization (lambda);
   }
 
+  /** \brief Regularisation lambda of the estimated splines.
+   *  \return lambda
+   */
   double
   getRegularization () const
   {
     return settings_.getRegularization ();
   }
 
-  /** \brief Condition limit of the estimated splines (see ThinPlateSpline::setMaxConditionNumber). */
+  /** \brief Condition limit of the estimated splines (see ThinPlateSpline::setMaxConditionNumber).
+   *  \param[in] limit the largest accepted condition estimate
+   */
   void
   setMaxConditionNumber (double limit)
   {
     settings_.setMaxConditionNumber (limit);
   }
 
+  /** \brief Condition limit of the estimated splines.
+   *  \return the limit
+   */
   double
   getMaxConditionNumber () const
   {
     return settings_.getMaxConditionNumber ();
   }
 
-  /** \brief Source point i goes to target point i; the clouds must have the same size. */
+  /** \brief Source point i goes to target point i; the clouds must have the same size.
+   *  \param[in] cloud_src the source points
+   *  \param[in] cloud_tgt the target points
+   *  \param[out] spline the fitted warp
+   */
   void
   estimateTransformation (const PointCloudSource& cloud_src, const PointCloudTarget& cloud_tgt, Spline& spline) const;
 
-  /** \brief Source point indices_src[i] goes to target point i. */
+  /** \brief Source point indices_src[i] goes to target point i.
+   *  \param[in] cloud_src the source cloud
+   *  \param[in] indices_src the source points used, one per target point
+   *  \param[in] cloud_tgt the target points
+   *  \param[out] spline the fitted warp
+   */
   void
   estimateTransformation (const PointCloudSource& cloud_src, const pcl::Indices& indices_src,
                           const PointCloudTarget& cloud_tgt, Spline& spline) const;
 
-  /** \brief Source point indices_src[i] goes to target point indices_tgt[i]. */
+  /** \brief Source point indices_src[i] goes to target point indices_tgt[i].
+   *  \param[in] cloud_src the source cloud
+   *  \param[in] indices_src the source points used
+   *  \param[in] cloud_tgt the target cloud
+   *  \param[in] indices_tgt the target points, as many as \a indices_src
+   *  \param[out] spline the fitted warp
+   */
   void
   estimateTransformation (const PointCloudSource& cloud_src, const pcl::Indices& indices_src,
                           const PointCloudTarget& cloud_tgt, const pcl::Indices& indices_tgt, Spline& spline) const;
 
-  /** \brief Each correspondence maps source point index_query to target point index_match. */
+  /** \brief Each correspondence maps source point index_query to target point index_match.
+   *  \param[in] cloud_src the source cloud
+   *  \param[in] cloud_tgt the target cloud
+   *  \param[in] correspondences the point pairs
+   *  \param[out] spline the fitted warp
+   */
   void
   estimateTransformation (const PointCloudSource& cloud_src, const PointCloudTarget& cloud_tgt,
                           const pcl::Correspondences& correspondences, Spline& spline) const;
@@ -89,6 +119,7 @@ private:
 
 } // namespace morphreg
 
+/// \cond
 #define MORPHREG_DECLARE_TPS_ESTIMATION(T)                                                                         \
   extern template class morphreg::TransformationEstimationTPS<T, T, double>;                                      \
   extern template class morphreg::TransformationEstimationTPS<T, T, float>;
@@ -96,3 +127,5 @@ MORPHREG_DECLARE_TPS_ESTIMATION (pcl::PointXYZ)
 MORPHREG_DECLARE_TPS_ESTIMATION (pcl::PointNormal)
 MORPHREG_DECLARE_TPS_ESTIMATION (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_TPS_ESTIMATION
+/// \endcond
+

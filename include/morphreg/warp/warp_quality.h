@@ -27,7 +27,14 @@ struct WarpQuality
  *  collapses to less than half their source area (skinning artefacts of a synthetic truth, where no smooth warp can
  *  follow) are counted in \a collapsed and left out of the fold counts. Throws InvalidInputError if the topologies
  *  or label count differ.
+ *  \param[in] warped the warped mesh
+ *  \param[in] truth the true mesh, same topology
+ *  \param[in] labels the segment of each vertex
+ *  \param[in] band_width the width (mm) of the band around the borders
+ *  \param[in] source the unwarped mesh, or nullptr
+ *  \return the figures
  */
+
 WarpQuality
 evaluateWarp (const TriangleMesh& warped, const TriangleMesh& truth, const std::vector<int>& labels,
               double band_width = 100.0, const TriangleMesh* source = nullptr);
