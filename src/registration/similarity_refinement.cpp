@@ -41,6 +41,19 @@ closestPoints (CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ>& est
   }
   return closest;
 }
+
+/** The state of \a pose with \a samples about the preimage of \a centre, so that the solver's rotation and scaling
+ *  turn about \a centre; \a pivot is that preimage. */
+PoseShapeState
+aboutCentre (const PoseShapeLeastSquares& solver, const Eigen::Matrix4d& pose, const Eigen::Vector3d& centre,
+             const Eigen::Matrix3Xd& samples, Eigen::Vector3d& pivot)
+{
+  pivot = pose.topLeftCorner<3, 3> ().inverse () * (centre - pose.topRightCorner<3, 1> ());
+  PoseShapeState state = solver.state (pose, Eigen::VectorXd ());
+  state.translation = centre;
+  state.vertices = samples.colwise () - pivot;
+  return state;
+}
 } // namespace
 
 PointTree::Ptr
@@ -92,19 +105,15 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
                   const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
                   int iterations, double inlier_fraction)
 {
-  // The samples about the preimage of \a centre, so that the solver's rotations and scalings turn about the centre.
-  const Eigen::Matrix3d linear = pose.topLeftCorner<3, 3> ();
-  const Eigen::Vector3d pivot = linear.inverse () * (centre - pose.topRightCorner<3, 1> ());
   const PoseShapeLeastSquares solver;
-  PoseShapeState state = solver.state (pose, Eigen::VectorXd ());
-  state.translation = centre;
-  state.vertices = samples.colwise () - pivot;
   // The samples move less each step, so the cached estimation skips most of the tree queries.
   CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ> nearest;
   nearest.setInputTarget (tree->getInputCloud ());
   nearest.setSearchMethodTarget (tree, true);
   std::vector<PoseShapeRow> rows;
   for (int iteration = 0; iteration < iterations; ++iteration) {
+    Eigen::Vector3d pivot;
+    PoseShapeState state = aboutCentre (solver, pose, centre, samples, pivot);
     const Eigen::Matrix3Xd posed = state.posed ();
     if (!representable (posed))
       break;
@@ -116,16 +125,14 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
         const Eigen::Vector3d n = normals.col (closest.index[i]);
         rows.push_back ({static_cast<int> (i), target.col (closest.index[i]), n * n.transpose ()});
       }
-    PoseShapeState updated = state;
-    if (rows.size () < 7 || !solver.step (updated, rows) || !representable (updated.posed ()))
+    if (rows.size () < 7 || !solver.step (state, rows) || !representable (state.posed ()))
       break; // too few rows (see requireEnoughRows), singular or diverging: this hypothesis stops here
-    const double motion = (updated.posed () - posed).colwise ().squaredNorm ().mean ();
-    state = std::move (updated);
+    const double motion = (state.posed () - posed).colwise ().squaredNorm ().mean ();
+    pose = state.similarity ();
+    pose.topRightCorner<3, 1> () -= pose.topLeftCorner<3, 3> () * pivot;
     if (motion < 1e-12)
       break;
   }
-  pose = state.similarity ();
-  pose.topRightCorner<3, 1> () -= pose.topLeftCorner<3, 3> () * pivot;
   return pose;
 }
 
