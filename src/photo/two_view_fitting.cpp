@@ -516,8 +516,9 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
       iteration.stage = stage;
       const std::vector<PoseShapeRow> rows = currentRows (problem, silhouette, state, iteration);
       requireEnoughRows (static_cast<size_t> (iteration.profile_correspondences), 3, "TwoViewFitting",
-                         "the profile-line vertices within " + std::to_string (max_distance_) +
-                             " mm of the silhouette");
+                         "profile-line vertices lie within " + std::to_string (max_distance_) +
+                             " mm of the silhouette",
+                         "the silhouette and the max correspondence distance");
       result.history.push_back (iteration);
       const Eigen::Matrix3Xd before = state.posed ();
       if (!solver.step (state, rows))

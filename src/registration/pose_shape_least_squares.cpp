@@ -66,12 +66,12 @@ requirePriorWeight (double weight, const std::string& what)
 }
 
 void
-requireEnoughRows (size_t rows, size_t needed, const std::string& who, const std::string& counts)
+requireEnoughRows (size_t rows, size_t needed, const std::string& who, const std::string& counts,
+                   const std::string& hint)
 {
   if (rows < needed)
-    throw TooFewCorrespondencesError (who + ": " + counts + " give " + std::to_string (rows) + " rows, " +
-                                      std::to_string (needed) + " are needed; check the max correspondence "
-                                      "distance, the rejectors and the initial alignment");
+    throw TooFewCorrespondencesError (who + ": only " + std::to_string (rows) + " rows (" + counts + "), at least " +
+                                      std::to_string (needed) + " are needed; check " + hint);
 }
 
 double

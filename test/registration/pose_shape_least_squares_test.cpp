@@ -59,8 +59,8 @@ TEST (PoseShapeLeastSquaresTest, FixedScaleStaysFixedAndStepsNeverRaiseTheCost)
 
 TEST (PoseShapeLeastSquaresTest, TooFewRowsFollowOneRule)
 {
-  EXPECT_NO_THROW (morphreg::requireEnoughRows (7, 7, "test", "rows"));
-  EXPECT_THROW (morphreg::requireEnoughRows (6, 7, "test", "rows"), morphreg::TooFewCorrespondencesError);
+  EXPECT_NO_THROW (morphreg::requireEnoughRows (7, 7, "test", "rows", "the input"));
+  EXPECT_THROW (morphreg::requireEnoughRows (6, 7, "test", "rows", "the input"), morphreg::TooFewCorrespondencesError);
   morphreg::PoseShapeSettings settings;
   settings.smoothness_weight = -1.0;
   EXPECT_THROW (settings.validate ("test"), morphreg::InvalidInputError);

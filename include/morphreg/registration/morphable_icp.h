@@ -339,7 +339,7 @@ private:
   struct Phase
   {
     bool shape = false;
-    ShapePhase components; ///< the shape phase's components and lambda_1
+    ShapePhase settings; ///< the shape phase's components and lambda_1
     RobustLoss loss = RobustLoss::none;
   };
 

@@ -188,7 +188,9 @@ namespace morphreg
  *  \param[in] needed the fewest rows the fit accepts
  *  \param[in] who the fit, for the message
  *  \param[in] counts what the rows are made of, for the message
+ *  \param[in] hint what to check, for the message
  */
 void
-requireEnoughRows (size_t rows, size_t needed, const std::string& who, const std::string& counts);
+requireEnoughRows (size_t rows, size_t needed, const std::string& who, const std::string& counts,
+                   const std::string& hint);
 } // namespace morphreg

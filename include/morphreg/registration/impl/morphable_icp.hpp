@@ -193,10 +193,8 @@ template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::setRejectTargetBoundary (bool enabled, int neighbours)
 {
-  if (neighbours < 4)
-    throw InvalidInputError ("MorphableICP::setRejectTargetBoundary: at least 4 neighbours are needed");
-  reject_boundary_ = enabled;
   target_surface_->setNeighbours (neighbours);
+  reject_boundary_ = enabled;
 }
 
 template <typename PointTarget, typename Scalar>
@@ -466,8 +464,8 @@ MorphableICP<PointTarget, Scalar>::solver (const Phase& phase) const
 {
   PoseShapeSettings settings;
   if (phase.shape)
-    settings.components = phase.components.components;
-  settings.smoothness_weight = phase.components.smoothness_weight;
+    settings.components = phase.settings.components;
+  settings.smoothness_weight = phase.settings.smoothness_weight;
   settings.prior_weight = lambda2_;
   settings.prior = prior_;
   settings.estimate_scale = estimate_scale_;
@@ -482,7 +480,7 @@ MorphableICP<PointTarget, Scalar>::startPhase (const Phase& phase, int phases_le
 {
   Eigen::VectorXd sigma;
   if (phase.shape) {
-    const ComponentSelection& components = phase.components.components;
+    const ComponentSelection& components = phase.settings.components;
     state.coefficients = detail::restack (state.coefficients, state.selection, components);
     state.selection = components;
     state.vertices = model_->generate (state.coefficients, state.selection);
@@ -515,7 +513,8 @@ MorphableICP<PointTarget, Scalar>::runPhase (const Phase& phase, const PoseShape
     const std::vector<PoseShapeRow> rows = this->rows (ev);
     requireEnoughRows (rows.size (), unknowns, "MorphableICP",
                        std::to_string (ev.kept.size ()) + " correspondences (of " + std::to_string (ev.found) +
-                           " found) and " + std::to_string (landmark_rows_.size ()) + " landmarks");
+                           " found) and " + std::to_string (landmark_rows_.size ()) + " landmarks",
+                       "the max correspondence distance, the rejectors and the initial alignment");
     visualize (ev);
     if (!convergence.checkCost (solver.cost (state, rows) / static_cast<double> (rows.size ())))
       break;
