@@ -174,10 +174,7 @@ private:
   Eigen::MatrixXd prior_; ///< lambda_1^2 Gamma^T Gamma + lambda_2^2 Lambda^2 (P x P)
   int max_columns_ = 7;   ///< the most Jacobian columns one row can have
 };
-} // namespace morphreg
 
-namespace morphreg
-{
 /** \brief The one rule for too few correspondences. Each iteration of a fit counts its point rows (the
  *  correspondences left after rejection, plus landmark rows) and, if they are fewer than \a needed, throws
  *  TooFewCorrespondencesError naming \a who, the counts and what to check: MorphableICP needs as many rows as
