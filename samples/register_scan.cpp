@@ -75,6 +75,7 @@ registerScan (int argc, char** argv)
   median->setMedianFactor (3.0); // drop pairs more than 3x the median distance apart (outliers, unmodelled parts)
   auto one_to_one = std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> (); // one vertex per point
   if (!options.flag ("--no-rejectors")) {
+    icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ()); // the default chain, which a chain replaces
     icp.addCorrespondenceRejector (median);
     icp.addCorrespondenceRejector (one_to_one);
   }

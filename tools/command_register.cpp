@@ -167,6 +167,8 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
   icp.setRobustLoss (robustLoss (options.loss), options.loss_scale);
   icp.setTargetSmoothing (options.target_smoothing);
   icp.setTargetUnit (LengthUnit::millimetre); // the scan is converted on loading
+  // A chain replaces the default one (the target boundary rejector): it stays first.
+  icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
   if (options.reject_distance > 0.0) {
     auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
     rejector->setMaximumDistance (static_cast<float> (options.reject_distance));

@@ -1,5 +1,3 @@
-#include "pose_shape_gauss_newton.h"
-
 #include <morphreg/common/error.h>
 #include <morphreg/common/landmarks.h>
 #include <morphreg/photo/polyline_2d.h>
@@ -24,9 +22,22 @@ constexpr double kEndSlack = 5.0;
 /** At most this many rounds of TPS warp and 3D-3D fit in fitTpsIcp. */
 constexpr int kTpsIcpRounds = 10;
 
-using detail::PoseShapeState;
-using detail::ShapeProblem;
-using detail::WeightedRow;
+/** Mean squared motion (model mm^2) of the fitted vertices below which an iteration loop has converged. */
+constexpr double kMotionEpsilon = 1e-6;
+
+/** Mean squared motion (model mm^2) of the vertices between \a before (posed) and \a state. */
+double
+motion (const Eigen::Matrix3Xd& before, const PoseShapeState& state)
+{
+  return (state.posed () - before).colwise ().squaredNorm ().mean () / (state.scale () * state.scale ());
+}
+
+/** A row of per-axis weights \a weight. */
+PoseShapeRow
+weightedRow (Eigen::Index slot, const Eigen::Vector3d& target, const Eigen::Vector3d& weight)
+{
+  return {static_cast<int> (slot), target, Eigen::Matrix3d (weight.asDiagonal ())};
+}
 
 /** The frontal landmarks used: model vertices, normalised (X, Y) positions and row weights; and the contour landmarks
  *  left out (weight 0). */
@@ -49,9 +60,11 @@ struct FrontalTargets
  */
 struct TwoViewProblem
 {
-  ShapeProblem shape;
+  PoseShapeLeastSquares shape; ///< the shape stage's solver
+  PoseShapeLeastSquares pose;  ///< the similarity stage's (no shape unknowns)
+  Eigen::Matrix3Xd mean; ///< the mean shape's vertices of the slots
   Eigen::Index profile_count;
-  std::vector<Eigen::Vector2d> landmarks; ///< normalised (X, Y) of shape.vertices[profile_count + k]
+  std::vector<Eigen::Vector2d> landmarks; ///< normalised (X, Y) of slot profile_count + k
   std::vector<double> landmark_weights;    ///< the row weight of each landmark
   double sagittal_weight;
   double max_distance;
@@ -111,20 +124,25 @@ twoViewVertices (const MorphableModel& model, const FrontalTargets& targets)
   return vertices;
 }
 
-/** The two-view problem over \a shape (built on twoViewVertices) with \a targets' landmarks. */
+/** The two-view problem over twoViewVertices with \a settings and \a targets' landmarks. */
 TwoViewProblem
-twoViewProblem (ShapeProblem shape, const MorphableModel& model, const FrontalTargets& targets, double sagittal_weight,
-                double max_distance)
+twoViewProblem (const MorphableModel& model, const PoseShapeSettings& settings, const FrontalTargets& targets,
+                double sagittal_weight, double max_distance)
 {
-  return {std::move (shape), static_cast<Eigen::Index> (model.profileLine ().size ()), targets.points, targets.weights,
+  PoseShapeSettings pose = settings;
+  pose.components = ComponentSelection ();
+  PoseShapeLeastSquares shape (model, twoViewVertices (model, targets), settings);
+  Eigen::Matrix3Xd mean = shape.vertices (Eigen::VectorXd::Zero (shape.sigma ().size ()));
+  return {std::move (shape), PoseShapeLeastSquares (model, twoViewVertices (model, targets), pose), std::move (mean),
+          static_cast<Eigen::Index> (model.profileLine ().size ()), targets.points, targets.weights,
           sagittal_weight, max_distance};
 }
 
 /** \a state with the constrained vertices of \a problem. */
 PoseShapeState
-onProblem (PoseShapeState state, const ShapeProblem& problem)
+onProblem (PoseShapeState state, const PoseShapeLeastSquares& problem)
 {
-  state.vertices = problem.vertexPositions (state.coefficients);
+  state.vertices = problem.vertices (state.coefficients);
   return state;
 }
 
@@ -147,7 +165,7 @@ hiddenFromSilhouette (const Eigen::Matrix2Xd& profile, Eigen::Index k, const Eig
 /** The rows at \a state: profile correspondences (closest silhouette point within the distance), then the frontal
  *  landmarks; fills \a residuals with their in-image RMS distances in model mm.
  */
-std::vector<WeightedRow>
+std::vector<PoseShapeRow>
 currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const PoseShapeState& state,
              TwoViewIteration& residuals)
 {
@@ -156,7 +174,7 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
   Eigen::Matrix2Xd profile (2, problem.profile_count);
   profile.row (0) = posed.row (2).head (problem.profile_count);
   profile.row (1) = posed.row (1).head (problem.profile_count);
-  std::vector<WeightedRow> rows;
+  std::vector<PoseShapeRow> rows;
   double profile_sum = 0.0;
   for (Eigen::Index k = 0; k < problem.profile_count; ++k) {
     const Eigen::Vector2d projected = profile.col (k);
@@ -165,8 +183,8 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
     if (!(distance <= problem.max_distance) || (distance > kEndSlack && silhouette.isEnd (closest)) ||
         hiddenFromSilhouette (profile, k, closest))
       continue; // too far, beyond the end of a silhouette that shows part of the profile, or not on the outline
-    rows.push_back ({k, Eigen::Vector3d (0.0, closest.y (), closest.x ()),
-                     Eigen::Vector3d (problem.sagittal_weight, 1.0, 1.0)});
+    rows.push_back (weightedRow (k, Eigen::Vector3d (0.0, closest.y (), closest.x ()),
+                                 Eigen::Vector3d (problem.sagittal_weight, 1.0, 1.0)));
     profile_sum += distance * distance;
   }
   residuals.profile_correspondences = static_cast<int> (rows.size ());
@@ -176,7 +194,8 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
     const Eigen::Index slot = problem.profile_count + static_cast<Eigen::Index> (l);
     const Eigen::Vector2d& marked = problem.landmarks[l];
     const double weight = problem.landmark_weights[l];
-    rows.push_back ({slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0), Eigen::Vector3d (weight, weight, 0.0)});
+    rows.push_back (weightedRow (slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0),
+                                 Eigen::Vector3d (weight, weight, 0.0)));
     landmark_sum += (marked - posed.col (slot).head<2> ()).squaredNorm () * mm * mm;
   }
   residuals.landmark_rms =
@@ -202,8 +221,8 @@ jointCost (const TwoViewIteration& residuals, double landmark_weight)
  *  the image rows' total weight; the landmark targets and the profile rows themselves keep their weights, so the fit
  *  stays on the silhouette where the warp's smooth interpolation cannot follow it.
  */
-std::vector<WeightedRow>
-tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& image_rows,
+std::vector<PoseShapeRow>
+tpsTargetRows (const TwoViewProblem& two_view, const std::vector<PoseShapeRow>& image_rows,
                const PoseShapeState& state)
 {
   const double s = state.scale ();
@@ -211,11 +230,11 @@ tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& i
   std::map<int, Eigen::Vector3d> marked; // landmark vertex -> sum of its marks (X, Y) and their count
   std::map<int, Eigen::Vector3d> anchors; // vertex -> its target
   std::map<int, double> weights;          // landmark vertex -> its row weight
-  for (const WeightedRow& row : image_rows) {
-    const int vertex = two_view.shape.vertices[row.slot];
+  for (const PoseShapeRow& row : image_rows) {
+    const int vertex = two_view.shape.slots ()[static_cast<size_t> (row.slot)];
     if (row.slot >= two_view.profile_count) {
       marked.emplace (vertex, Eigen::Vector3d::Zero ()).first->second += Eigen::Vector3d (row.target.x (), row.target.y (), 1.0);
-      weights[vertex] = std::max (weights[vertex], row.weight.x ());
+      weights[vertex] = std::max (weights[vertex], row.metric (0, 0));
     }
     else
       anchors[vertex] = Eigen::Vector3d (posed (0, vertex), row.target.y (), row.target.z ());
@@ -237,14 +256,15 @@ tpsTargetRows (const TwoViewProblem& two_view, const std::vector<WeightedRow>& i
   // (at weight 1 each the mesh would outweigh them a hundredfold and the fit would follow the warp's extrapolation).
   const Eigen::Vector3d share = Eigen::Vector3d::Constant (static_cast<double> (image_rows.size ()) /
                                                            static_cast<double> (warped.cols ()));
-  std::vector<WeightedRow> rows;
+  std::vector<PoseShapeRow> rows;
   for (Eigen::Index i = 0; i < warped.cols (); ++i)
-    rows.push_back ({i, warped.col (i), share});
+    rows.push_back (weightedRow (i, warped.col (i), share));
   for (const auto& entry : marked)
-    rows.push_back ({entry.first, anchors.at (entry.first), Eigen::Vector3d::Constant (weights.at (entry.first))});
-  for (const WeightedRow& row : image_rows)
+    rows.push_back (weightedRow (entry.first, anchors.at (entry.first),
+                                 Eigen::Vector3d::Constant (weights.at (entry.first))));
+  for (const PoseShapeRow& row : image_rows)
     if (row.slot < two_view.profile_count)
-      rows.push_back ({two_view.shape.vertices[row.slot], row.target, row.weight});
+      rows.push_back ({two_view.shape.slots ()[static_cast<size_t> (row.slot)], row.target, row.metric});
   return rows;
 }
 
@@ -257,7 +277,7 @@ landmarkScale (const TwoViewProblem& problem)
   Eigen::Matrix2Xd image (2, count), model (2, count);
   for (Eigen::Index k = 0; k < count; ++k) {
     image.col (k) = problem.landmarks[static_cast<size_t> (k)];
-    model.col (k) = problem.shape.mean.col (problem.profile_count + k).head<2> ();
+    model.col (k) = problem.mean.col (problem.profile_count + k).head<2> ();
   }
   const Eigen::Vector2d image_centre = image.rowwise ().mean (), model_centre = model.rowwise ().mean ();
   image.colwise () -= image_centre;
@@ -272,7 +292,7 @@ landmarkScale (const TwoViewProblem& problem)
 double
 silhouetteScale (const TwoViewProblem& problem, const Eigen::Vector3d& nose, const Polyline2d& silhouette)
 {
-  const Eigen::Matrix3Xd profile = problem.shape.mean.leftCols (problem.profile_count);
+  const Eigen::Matrix3Xd profile = problem.mean.leftCols (problem.profile_count);
   const double model_height = profile.row (1).maxCoeff () - profile.row (1).minCoeff ();
   const double image_height = silhouette.points ().row (1).maxCoeff () - silhouette.points ().row (1).minCoeff ();
   if (!(model_height > 0.0) || !(image_height > 0.0))
@@ -305,8 +325,8 @@ initialState (const MorphableModel& model, const TwoViewProblem& problem, const 
   state.log_scale =
       std::log (problem.landmarks.size () >= 2 ? landmarkScale (problem) : silhouetteScale (problem, nose, silhouette));
   state.translation = -state.scale () * nose;
-  state.coefficients = Eigen::VectorXd::Zero (problem.shape.sigma.size ());
-  state.vertices = problem.shape.mean;
+  state.coefficients = Eigen::VectorXd::Zero (problem.shape.sigma ().size ());
+  state.vertices = problem.mean;
   return state;
 }
 
@@ -343,27 +363,32 @@ TwoViewFitting::TwoViewFitting (MorphableModel::ConstPtr model) : model_ (std::m
     throw InvalidInputError ("TwoViewFitting: the model has no profile line (MorphableModel::setProfileLine)");
   if (!model_->landmarks ().count ("nose_tip"))
     throw InvalidInputError ("TwoViewFitting: the model has no nose_tip landmark (it centres the photos)");
-  selection_ = model_->firstComponents (kDefaultComponents);
+  settings_.components = model_->firstComponents (kDefaultComponents);
+  settings_.smoothness_weight = kDefaultSmoothnessWeight;
+  settings_.prior_weight = kDefaultShapePriorWeight;
+  settings_.coefficient_limit = kDefaultCoefficientLimit;
+  settings_.model_units = true;
 }
 
 void
 TwoViewFitting::setComponentSelection (const ComponentSelection& selection)
 {
   model_->requireCompatible (selection, nullptr, "TwoViewFitting::setComponentSelection");
-  selection_ = selection;
+  settings_.components = selection;
 }
 
 void
 TwoViewFitting::setSmoothnessWeight (double lambda1)
 {
-  lambda1_ = checkedSetting (lambda1, false, "lambda_1 (the smoothness weight; regions without data need it)");
+  settings_.smoothness_weight =
+      checkedSetting (lambda1, false, "lambda_1 (the smoothness weight; regions without data need it)");
 }
 
 void
 TwoViewFitting::setShapePriorWeight (double lambda2, ShapePrior prior)
 {
-  lambda2_ = checkedSetting (lambda2, true, "lambda_2");
-  prior_ = prior;
+  settings_.prior_weight = requirePriorWeight (lambda2, "TwoViewFitting: lambda_2");
+  settings_.prior = prior;
 }
 
 void
@@ -372,7 +397,7 @@ TwoViewFitting::setCoefficientLimit (double sigmas)
   if (!(sigmas > 0.0)) // NaN included; infinity is no limit
     throw InvalidInputError ("TwoViewFitting: the coefficient limit must be > 0 standard deviations (infinity for "
                              "none), got " + std::to_string (sigmas));
-  coefficient_limit_ = sigmas;
+  settings_.coefficient_limit = sigmas;
 }
 
 void
@@ -423,11 +448,6 @@ TwoViewFitting::fitJoint (const ProfileView& profile, const FrontalView& frontal
   return fit (profile, &frontal);
 }
 
-ShapeProblem
-TwoViewFitting::shapeProblem (std::vector<int> vertices) const
-{
-  return ShapeProblem (*model_, selection_, std::move (vertices), lambda1_, lambda2_, prior_, coefficient_limit_);
-}
 
 TwoViewFit
 TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const
@@ -436,11 +456,8 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
   TwoViewFit result = fitProfile (profile);
   result.ignored_landmarks = targets.ignored;
   // The error that decides when to stop: the image residuals of the joint fit's rows.
-  const TwoViewProblem two_view = twoViewProblem (shapeProblem (twoViewVertices (*model_, targets)), *model_,
-                                                  targets, sagittal_weight_, max_distance_);
-  std::vector<int> all (static_cast<size_t> (model_->numVertices ()));
-  std::iota (all.begin (), all.end (), 0);
-  const ShapeProblem whole = shapeProblem (all);
+  const TwoViewProblem two_view = twoViewProblem (*model_, settings_, targets, sagittal_weight_, max_distance_);
+  const PoseShapeLeastSquares whole (*model_, {}, settings_);
   const Polyline2d silhouette (profile.normalisedSilhouette ());
 
   PoseShapeState state;
@@ -448,16 +465,16 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
   state.rotation = result.rotation;
   state.translation = result.translation;
   state.coefficients = result.coefficients;
-  state.vertices = whole.vertexPositions (state.coefficients);
+  state.vertices = whole.vertices (state.coefficients);
   PoseShapeState best = state;
   double best_error = std::numeric_limits<double>::infinity ();
   for (int round = 0;; ++round) {
     TwoViewIteration iteration;
     iteration.stage = TwoViewStage::tps_icp;
-    const std::vector<WeightedRow> image_rows =
+    const std::vector<PoseShapeRow> image_rows =
         currentRows (two_view, silhouette, onProblem (state, two_view.shape), iteration);
     const double error = jointCost (iteration, targets.totalWeight ());
-    if (!(error < best_error) || !isPlausibleShape (state.coefficients.cwiseQuotient (whole.sigma)))
+    if (!(error < best_error) || !isPlausibleShape (state.coefficients.cwiseQuotient (whole.sigma ())))
       break; // no better in the photos, or a head the model's population does not hold
     best = state;
     best_error = error;
@@ -465,12 +482,12 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
     result.history.push_back (iteration);
     if (round == kTpsIcpRounds)
       break;
-    const std::vector<WeightedRow> rows = tpsTargetRows (two_view, image_rows, state);
+    const std::vector<PoseShapeRow> rows = tpsTargetRows (two_view, image_rows, state);
     for (int it = 0; it < shape_iterations_; ++it) {
       const Eigen::Matrix3Xd before = state.posed ();
-      if (!detail::poseShapeStep (whole, state, rows, selection_.total () > 0))
+      if (!whole.step (state, rows))
         throw NumericalError ("TwoViewFitting::fitTpsIcp: the normal equations could not be solved");
-      if (detail::poseShapeMotion (before, state) < detail::kPoseShapeMotionEpsilon)
+      if (motion (before, state) < kMotionEpsilon)
         break;
     }
   }
@@ -486,34 +503,33 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
 {
   const FrontalTargets targets =
       frontal ? frontalTargets (*model_, *frontal, frontal_weight_, contour_weight_) : FrontalTargets ();
-  const TwoViewProblem problem = twoViewProblem (shapeProblem (twoViewVertices (*model_, targets)), *model_, targets,
-                                                 sagittal_weight_, max_distance_);
+  const TwoViewProblem problem = twoViewProblem (*model_, settings_, targets, sagittal_weight_, max_distance_);
   const Eigen::Matrix2Xd silhouette_points = profile.normalisedSilhouette ();
   const Polyline2d silhouette (silhouette_points);
   PoseShapeState state = initialState (*model_, problem, silhouette);
   TwoViewFit result;
   for (const TwoViewStage stage : {TwoViewStage::similarity, TwoViewStage::shape}) {
-    const bool shape = stage == TwoViewStage::shape && selection_.total () > 0;
+    const PoseShapeLeastSquares& solver = stage == TwoViewStage::shape ? problem.shape : problem.pose;
     const int budget = stage == TwoViewStage::similarity ? similarity_iterations_ : shape_iterations_;
     for (int it = 0; it < budget; ++it) {
       TwoViewIteration iteration;
       iteration.stage = stage;
-      const std::vector<WeightedRow> rows = currentRows (problem, silhouette, state, iteration);
-      if (iteration.profile_correspondences < 3)
-        throw InvalidInputError ("TwoViewFitting: only " + std::to_string (iteration.profile_correspondences) +
-                                 " profile-line vertices lie within " + std::to_string (max_distance_) +
-                                 " mm of the silhouette; check the silhouette and the max correspondence distance");
+      const std::vector<PoseShapeRow> rows = currentRows (problem, silhouette, state, iteration);
+      requireEnoughRows (static_cast<size_t> (iteration.profile_correspondences), 3, "TwoViewFitting",
+                         "profile-line vertices lie within " + std::to_string (max_distance_) +
+                             " mm of the silhouette",
+                         "the silhouette and the max correspondence distance");
       result.history.push_back (iteration);
       const Eigen::Matrix3Xd before = state.posed ();
-      if (!detail::poseShapeStep (problem.shape, state, rows, shape))
+      if (!solver.step (state, rows))
         throw NumericalError ("TwoViewFitting: the normal equations could not be solved");
-      if (detail::poseShapeMotion (before, state) < detail::kPoseShapeMotionEpsilon)
+      if (motion (before, state) < kMotionEpsilon)
         break;
     }
   }
   result.final_residuals.stage = result.history.empty () ? TwoViewStage::similarity : result.history.back ().stage;
   currentRows (problem, silhouette, state, result.final_residuals);
-  result.selection = selection_;
+  result.selection = settings_.components;
   result.returned = frontal ? "joint" : "profile";
   result.ignored_landmarks = targets.ignored;
   storeState (*model_, state, result);

@@ -459,65 +459,83 @@ requireInputs (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan, con
     throw InvalidInputError ("alignHeadGlobally: " + std::to_string (scan_normals.cols ()) + " normals for " +
                              std::to_string (scan.cols ()) + " scan points");
 }
-} // namespace
 
-GlobalAlignment
-alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& scan_normals,
-                   const GlobalAlignmentSettings& settings)
+/** The model's side of the search: its surface samples, size, voxel and head sphere. */
+struct ModelFrame
 {
-  requireSettings (settings);
-  requireInputs (model_mean, scan, scan_normals);
+  OrientedPoints samples;
+  Eigen::Vector3d centroid;
+  double radius;
+  double voxel;
+  Sphere sphere;
+};
 
-  // The model: its size, its surface samples and its own head sphere.
-  const OrientedPoints model = surfaceSamples (model_mean, 1500, 11);
-  const Eigen::Vector3d model_centroid = model.points.rowwise ().mean ();
-  const double model_radius = std::sqrt ((model.points.colwise () - model_centroid).colwise ().squaredNorm ().mean ());
-  const double voxel = settings.voxel_ratio * model_radius;
-  const std::vector<Sphere> model_spheres =
-      houghSpheres (model, 0.4 * model_radius, 1.2 * model_radius, voxel, 1, model_radius);
-  if (model_spheres.empty ())
+ModelFrame
+modelFrame (const TriangleMesh& model_mean, const GlobalAlignmentSettings& settings)
+{
+  ModelFrame model;
+  model.samples = surfaceSamples (model_mean, 1500, 11);
+  model.centroid = model.samples.points.rowwise ().mean ();
+  model.radius = std::sqrt ((model.samples.points.colwise () - model.centroid).colwise ().squaredNorm ().mean ());
+  model.voxel = settings.voxel_ratio * model.radius;
+  const std::vector<Sphere> spheres =
+      houghSpheres (model.samples, 0.4 * model.radius, 1.2 * model.radius, model.voxel, 1, model.radius);
+  if (spheres.empty ())
     throw InvalidInputError ("alignHeadGlobally: the model mean has no head-like sphere");
-  const Sphere& model_sphere = model_spheres.front ();
+  model.sphere = spheres.front ();
+  return model;
+}
 
-  // The scan: thinned, without isolated points, with normals; its head spheres.
-  const OrientedPoints surface = surfaceOnly (thinToVoxels (scan, scan_normals, voxel));
+/** The scan thinned to the model's voxels, without isolated points, with normals. */
+OrientedPoints
+scanSurface (const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& scan_normals, double voxel)
+{
+  OrientedPoints surface = surfaceOnly (thinToVoxels (scan, scan_normals, voxel));
   if (surface.points.cols () < 10)
     throw InvalidInputError ("alignHeadGlobally: fewer than 10 scan points are left on a surface (" +
                              std::to_string (surface.points.cols ()) + " after thinning to " + std::to_string (voxel) +
                              " mm and dropping isolated points)");
-  const std::vector<Sphere> spheres =
-      houghSpheres (surface, settings.min_radius_ratio * model_sphere.radius,
-                    settings.max_radius_ratio * model_sphere.radius, voxel, settings.centre_candidates,
-                    model_sphere.radius);
-  const PointTree::Ptr tree = detail::pointTree (surface.points);
+  return surface;
+}
 
-  // Where the model's anchor goes and at what scale: each head sphere, and the scan's centroid with the model's
-  // centroid at the ratio of their spreads (a scan of the head alone, where a cut crown leaves no clear sphere).
+/** Where the model's anchor goes and at what scale: each head sphere of the scan, and the scan's centroid with the
+ *  model's centroid at the ratio of their spreads (a scan of the head alone, where a cut crown leaves no clear
+ *  sphere). */
+std::vector<Anchor>
+anchorsOf (const ModelFrame& model, const OrientedPoints& surface, const std::vector<Sphere>& spheres,
+           const GlobalAlignmentSettings& settings)
+{
   std::vector<Anchor> anchors;
   for (const Sphere& sphere : spheres)
-    anchors.push_back ({model_sphere.centre, sphere.centre, sphere.radius / model_sphere.radius});
+    anchors.push_back ({model.sphere.centre, sphere.centre, sphere.radius / model.sphere.radius});
   const Eigen::Vector3d scan_centroid = surface.points.rowwise ().mean ();
   const double scan_radius = std::sqrt ((surface.points.colwise () - scan_centroid).colwise ().squaredNorm ().mean ());
-  anchors.push_back ({model_centroid, scan_centroid,
-                      std::clamp (scan_radius / model_radius, settings.min_radius_ratio, settings.max_radius_ratio)});
+  anchors.push_back ({model.centroid, scan_centroid,
+                      std::clamp (scan_radius / model.radius, settings.min_radius_ratio, settings.max_radius_ratio)});
+  return anchors;
+}
 
-  // The rotation grid, scored about each anchor on a distance transform of the scan.
-  const std::vector<Eigen::Matrix3d> rotations = rotationGrid (settings.rotation_directions, settings.rotation_twists);
-  const Eigen::Matrix3Xd score_samples = detail::evenSamples (model.points, settings.score_samples);
+/** The best-scoring grid rotations about every anchor (scored on a distance transform of the scan), at most
+ *  settings.refined_poses over all anchors, best first. */
+std::vector<Pose>
+gridPoses (const ModelFrame& model, const OrientedPoints& surface, const std::vector<Anchor>& anchors,
+           const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
+{
+  const Eigen::Matrix3Xd samples = detail::evenSamples (model.samples.points, settings.score_samples);
   // Samples off the model's head sphere (nose, chin, ears, neck) tell the rotations apart; the cranium hardly does.
-  Eigen::VectorXd weights (score_samples.cols ());
-  for (Eigen::Index i = 0; i < score_samples.cols (); ++i)
-    weights[i] = 1.0 + 4.0 * std::min (1.0, std::abs ((score_samples.col (i) - model_sphere.centre).norm () -
-                                                      model_sphere.radius) / (0.3 * model_sphere.radius));
-  const double truncation = settings.truncation_ratio * model_radius;
+  Eigen::VectorXd weights (samples.cols ());
+  for (Eigen::Index i = 0; i < samples.cols (); ++i)
+    weights[i] = 1.0 + 4.0 * std::min (1.0, std::abs ((samples.col (i) - model.sphere.centre).norm () -
+                                                      model.sphere.radius) / (0.3 * model.sphere.radius));
+  const double truncation = settings.truncation_ratio * model.radius;
   std::vector<Pose> poses;
   for (size_t a = 0; a < anchors.size (); ++a) {
     const Anchor& anchor = anchors[a];
-    const Eigen::Matrix3Xd centred = score_samples.colwise () - anchor.model;
+    const Eigen::Matrix3Xd centred = samples.colwise () - anchor.model;
     const double reach = centred.colwise ().norm ().maxCoeff ();
     const Eigen::Vector3d half = Eigen::Vector3d::Constant (anchor.scale * reach + truncation);
-    const Grid grid = gridOver (anchor.scan - half, anchor.scan + half, voxel);
-    const DistanceField field (grid, surface.points, truncation);
+    const DistanceField field (gridOver (anchor.scan - half, anchor.scan + half, model.voxel), surface.points,
+                               truncation);
     std::vector<double> scores (rotations.size ());
 #pragma omp parallel for schedule(static)
     for (size_t r = 0; r < rotations.size (); ++r) {
@@ -534,57 +552,67 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
   // Only the best grid scores over all anchors go on (an anchor off the head scores badly for every rotation).
   std::sort (poses.begin (), poses.end (), [] (const Pose& a, const Pose& b) { return a.score < b.score; });
   poses.resize (std::min<size_t> (poses.size (), static_cast<size_t> (settings.refined_poses)));
+  return poses;
+}
 
-  // Refinement: every pose a few similarity ICP steps, the best three to the end; scored on the scan's k-d tree.
-  const Eigen::Matrix3Xd refine_samples = detail::evenSamples (model.points, 600);
-  const double min_scale = settings.min_radius_ratio, max_scale = settings.max_radius_ratio;
-  const auto refine = [&] (std::vector<size_t> active, int iterations) {
+/** Refines every pose a few similarity ICP steps and the best three to the end, each scored on the scan's k-d
+ *  tree; returns the pose indices, best first. */
+std::vector<size_t>
+refinePoses (const ModelFrame& model, const OrientedPoints& surface, const PointTree::Ptr& tree,
+             const std::vector<Anchor>& anchors, const GlobalAlignmentSettings& settings, std::vector<Pose>& poses)
+{
+  const Eigen::Matrix3Xd samples = detail::evenSamples (model.samples.points, 600);
+  const double truncation = settings.truncation_ratio * model.radius;
+  const auto refine = [&] (const std::vector<size_t>& active, int iterations) {
 #pragma omp parallel for schedule(dynamic, 1)
     for (size_t k = 0; k < active.size (); ++k) {
       Pose& pose = poses[active[k]];
       const Eigen::Vector3d centre = pose.similarity.topLeftCorner<3, 3> () * anchors[pose.anchor].model +
                                      pose.similarity.topRightCorner<3, 1> ();
-      pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, refine_samples,
+      pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, samples,
                                                   pose.similarity, iterations, settings.inlier_fraction);
-      scorePose (*tree, surface, model, truncation, 2.0 * voxel, min_scale, max_scale, pose);
+      scorePose (*tree, surface, model.samples, truncation, 2.0 * model.voxel, settings.min_radius_ratio,
+                 settings.max_radius_ratio, pose);
     }
   };
+  const auto by_score = [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; };
   std::vector<size_t> active (poses.size ());
   std::iota (active.begin (), active.end (), size_t (0));
   const int screening = std::min (settings.screen_iterations, settings.refine_iterations);
   refine (active, screening);
-  std::sort (active.begin (), active.end (), [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; });
-  std::vector<size_t> finalists (active.begin (), active.begin () + std::min<long> (3, static_cast<long> (active.size ())));
+  std::sort (active.begin (), active.end (), by_score);
+  const std::vector<size_t> finalists (active.begin (),
+                                       active.begin () + std::min<long> (3, static_cast<long> (active.size ())));
   refine (finalists, settings.refine_iterations - screening);
-  std::sort (active.begin (), active.end (), [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; });
+  std::sort (active.begin (), active.end (), by_score);
+  return active;
+}
 
-  const Pose& best = poses[active.front ()];
-  GlobalAlignment result;
-  result.similarity = best.similarity;
-  result.score = best.score;
-  result.coverage = best.coverage;
+/** The score of the best pose of \a ranked (pose indices, best first) at least 30 degrees or a model radius away
+ *  from the first; 0 if there is none. */
+double
+runnerUpScore (const std::vector<Pose>& poses, const std::vector<size_t>& ranked, double model_radius)
+{
+  const Pose& best = poses[ranked.front ()];
   const Eigen::Matrix3d best_rotation = best.similarity.topLeftCorner<3, 3> () / detail::similarityScale (best.similarity);
-  for (size_t k = 1; k < active.size (); ++k) {
-    const Pose& other = poses[active[k]];
+  for (size_t k = 1; k < ranked.size (); ++k) {
+    const Pose& other = poses[ranked[k]];
     const Eigen::Matrix3d rotation = other.similarity.topLeftCorner<3, 3> () / detail::similarityScale (other.similarity);
     const double shift = (other.similarity.topRightCorner<3, 1> () - best.similarity.topRightCorner<3, 1> ()).norm ();
-    if (angleBetween (rotation, best_rotation) > M_PI / 6.0 || shift > model_radius) {
-      result.runner_up_score = other.score;
-      break;
-    }
+    if (angleBetween (rotation, best_rotation) > M_PI / 6.0 || shift > model_radius)
+      return other.score;
   }
-  const double distinctness = result.runner_up_score > 0.0 ? 1.0 - result.score / result.runner_up_score : 1.0;
-  result.confidence = std::clamp (result.coverage * distinctness, 0.0, 1.0);
-  const Anchor& anchor = anchors[static_cast<size_t> (best.anchor)];
-  result.head_centre = anchor.scan;
-  result.head_radius = anchor.scale * model_sphere.radius;
-  result.rotations_scored = static_cast<int> (rotations.size () * anchors.size ());
-  result.poses_refined = static_cast<int> (poses.size ());
+  return 0.0;
+}
 
-  // The head's part of the scan: the points within the truncation distance of the posed model.
-  const Eigen::Matrix3Xd posed_model = detail::transformed (best.similarity, model.points);
-  const auto model_tree = detail::pointTree (posed_model);
-  const double head_reach = truncation * detail::similarityScale (best.similarity);
+/** The scan points within the truncation distance of the model's samples posed by \a similarity: the head. */
+std::vector<int>
+headIndices (const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& samples, const Eigen::Matrix4d& similarity,
+             double truncation)
+{
+  const auto model_tree = detail::pointTree (detail::transformed (similarity, samples));
+  const double head_reach = truncation * detail::similarityScale (similarity);
+  std::vector<int> indices;
   for (Eigen::Index i = 0; i < scan.cols (); ++i) {
     pcl::PointXYZ query;
     query.getVector3fMap () = scan.col (i).cast<float> ();
@@ -592,20 +620,65 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
     std::vector<float> squared (1);
     model_tree->nearestKSearch (query, 1, index, squared);
     if (std::sqrt (static_cast<double> (squared[0])) <= head_reach)
-      result.head_indices.push_back (static_cast<int> (i));
+      indices.push_back (static_cast<int> (i));
   }
+  return indices;
+}
 
+/** The sentence of GlobalAlignment::method. */
+std::string
+methodSentence (const GlobalAlignment& result, const ModelFrame& model, const OrientedPoints& surface,
+                size_t spheres, bool sphere_won, size_t rotations, Eigen::Index scan_points)
+{
   std::ostringstream method;
   method.precision (3);
-  method << "global: the scan thinned to " << surface.points.cols () << " points (" << voxel << " mm voxels); "
-         << spheres.size () << " head sphere(s) by Hough vote and the scan's centroid as anchors, the winner "
-         << (static_cast<size_t> (best.anchor) < spheres.size () ? "a sphere" : "the centroid") << " at ("
-         << result.head_centre.transpose () << "), head radius " << result.head_radius << " mm (the model's "
-         << model_sphere.radius << " mm); " << rotations.size () << " rotations per anchor scored on a distance transform; " << poses.size ()
+  method << "global: the scan thinned to " << surface.points.cols () << " points (" << model.voxel << " mm voxels); "
+         << spheres << " head sphere(s) by Hough vote and the scan's centroid as anchors, the winner "
+         << (sphere_won ? "a sphere" : "the centroid") << " at (" << result.head_centre.transpose ()
+         << "), head radius " << result.head_radius << " mm (the model's " << model.sphere.radius << " mm); "
+         << rotations << " rotations per anchor scored on a distance transform; " << result.poses_refined
          << " poses refined by similarity ICP; best truncated distance " << result.score << " mm, runner-up "
          << result.runner_up_score << " mm; coverage " << result.coverage << "; " << result.head_indices.size ()
-         << " of " << scan.cols () << " scan points on the head";
-  result.method = method.str ();
+         << " of " << scan_points << " scan points on the head";
+  return method.str ();
+}
+} // namespace
+
+GlobalAlignment
+alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& scan_normals,
+                   const GlobalAlignmentSettings& settings)
+{
+  requireSettings (settings);
+  requireInputs (model_mean, scan, scan_normals);
+  const ModelFrame model = modelFrame (model_mean, settings);
+  const OrientedPoints surface = scanSurface (scan, scan_normals, model.voxel);
+  const std::vector<Sphere> spheres =
+      houghSpheres (surface, settings.min_radius_ratio * model.sphere.radius,
+                    settings.max_radius_ratio * model.sphere.radius, model.voxel, settings.centre_candidates,
+                    model.sphere.radius);
+  const std::vector<Anchor> anchors = anchorsOf (model, surface, spheres, settings);
+  const std::vector<Eigen::Matrix3d> rotations = rotationGrid (settings.rotation_directions, settings.rotation_twists);
+  std::vector<Pose> poses = gridPoses (model, surface, anchors, rotations, settings);
+  const std::vector<size_t> ranked =
+      refinePoses (model, surface, detail::pointTree (surface.points), anchors, settings, poses);
+
+  const Pose& best = poses[ranked.front ()];
+  GlobalAlignment result;
+  result.similarity = best.similarity;
+  result.score = best.score;
+  result.coverage = best.coverage;
+  result.runner_up_score = runnerUpScore (poses, ranked, model.radius);
+  const double distinctness = result.runner_up_score > 0.0 ? 1.0 - result.score / result.runner_up_score : 1.0;
+  result.confidence = std::clamp (result.coverage * distinctness, 0.0, 1.0);
+  const Anchor& anchor = anchors[static_cast<size_t> (best.anchor)];
+  result.head_centre = anchor.scan;
+  result.head_radius = anchor.scale * model.sphere.radius;
+  result.rotations_scored = static_cast<int> (rotations.size () * anchors.size ());
+  result.poses_refined = static_cast<int> (poses.size ());
+  result.head_indices =
+      headIndices (scan, model.samples.points, best.similarity, settings.truncation_ratio * model.radius);
+  result.method = methodSentence (result, model, surface, spheres.size (),
+                                  static_cast<size_t> (best.anchor) < spheres.size (), rotations.size (), scan.cols ());
   return result;
 }
 

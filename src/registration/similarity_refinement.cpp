@@ -3,8 +3,8 @@
 #include <morphreg/common/order_statistics.h>
 
 #include <morphreg/registration/cached_correspondence_estimation.h>
+#include <morphreg/registration/pose_shape_least_squares.h>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -40,6 +40,19 @@ closestPoints (CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ>& est
     closest.distance[c.index_query] = std::sqrt (static_cast<double> (c.distance));
   }
   return closest;
+}
+
+/** The state of \a pose with \a samples about the preimage of \a centre, so that the solver's rotation and scaling
+ *  turn about \a centre; \a pivot is that preimage. */
+PoseShapeState
+aboutCentre (const PoseShapeLeastSquares& solver, const Eigen::Matrix4d& pose, const Eigen::Vector3d& centre,
+             const Eigen::Matrix3Xd& samples, Eigen::Vector3d& pivot)
+{
+  pivot = pose.topLeftCorner<3, 3> ().inverse () * (centre - pose.topRightCorner<3, 1> ());
+  PoseShapeState state = solver.state (pose, Eigen::VectorXd ());
+  state.translation = centre;
+  state.vertices = samples.colwise () - pivot;
+  return state;
 }
 } // namespace
 
@@ -92,41 +105,32 @@ refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, co
                   const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
                   int iterations, double inlier_fraction)
 {
+  const PoseShapeLeastSquares solver;
   // The samples move less each step, so the cached estimation skips most of the tree queries.
   CachedCorrespondenceEstimation<pcl::PointXYZ, pcl::PointXYZ> nearest;
   nearest.setInputTarget (tree->getInputCloud ());
   nearest.setSearchMethodTarget (tree, true);
+  std::vector<PoseShapeRow> rows;
   for (int iteration = 0; iteration < iterations; ++iteration) {
-    const Eigen::Matrix3Xd posed = transformed (pose, samples);
+    Eigen::Vector3d pivot;
+    PoseShapeState state = aboutCentre (solver, pose, centre, samples, pivot);
+    const Eigen::Matrix3Xd posed = state.posed ();
     if (!representable (posed))
       break;
     const Closest closest = closestPoints (nearest, posed);
     const double limit = trimmedLimit (closest.distance, inlier_fraction);
-    Eigen::Matrix<double, 7, 7> normal_matrix = Eigen::Matrix<double, 7, 7>::Zero ();
-    Eigen::Matrix<double, 7, 1> rhs = Eigen::Matrix<double, 7, 1>::Zero ();
+    rows.clear ();
     for (Eigen::Index i = 0; i < samples.cols (); ++i)
       if (closest.distance[i] <= limit) {
-        const Eigen::Vector3d y = posed.col (i) - centre;
         const Eigen::Vector3d n = normals.col (closest.index[i]);
-        Eigen::Matrix<double, 7, 1> row;
-        row << y.cross (n), n, n.dot (y);
-        normal_matrix += row * row.transpose ();
-        rhs -= row * n.dot (posed.col (i) - target.col (closest.index[i]));
+        rows.push_back ({static_cast<int> (i), target.col (closest.index[i]), n * n.transpose ()});
       }
-    const Eigen::Matrix<double, 7, 1> step = normal_matrix.ldlt ().solve (rhs);
-    if (!step.allFinite ())
-      break;
-    Eigen::Matrix4d update = Eigen::Matrix4d::Identity ();
-    const double angle = step.head<3> ().norm ();
-    const Eigen::Matrix3d rotation =
-        angle > 0.0 ? Eigen::AngleAxisd (angle, step.head<3> () / angle).toRotationMatrix () : Eigen::Matrix3d::Identity ();
-    update.topLeftCorner<3, 3> () = std::exp (step[6]) * rotation;
-    update.topRightCorner<3, 1> () = centre + step.segment<3> (3) - update.topLeftCorner<3, 3> () * centre;
-    const Eigen::Matrix4d updated = update * pose;
-    if (!representable (transformed (updated, samples)))
-      break;
-    pose = updated;
-    if (step.norm () < 1e-6)
+    if (rows.size () < 7 || !solver.step (state, rows) || !representable (state.posed ()))
+      break; // too few rows (see requireEnoughRows), singular or diverging: this hypothesis stops here
+    const double motion = (state.posed () - posed).colwise ().squaredNorm ().mean ();
+    pose = state.similarity ();
+    pose.topRightCorner<3, 1> () -= pose.topLeftCorner<3, 3> () * pivot;
+    if (motion < 1e-12)
       break;
   }
   return pose;

@@ -38,8 +38,9 @@ Closest
 closestPoints (const PointTree& tree, const Eigen::Matrix3Xd& points);
 
 /** Trimmed point-to-plane similarity-only ICP of \a samples onto \a target (the points of \a tree, with unit
- *  \a normals; their sign does not matter), from \a pose: \a iterations Gauss-Newton steps on rotation (about
- *  \a centre), translation and log-scale, each on the \a inlier_fraction closest pairs.
+ *  \a normals; their sign does not matter), from \a pose: up to \a iterations PoseShapeLeastSquares steps without
+ *  shape unknowns (rotation and scale about \a centre), each on the \a inlier_fraction closest pairs as rows with
+ *  the metric n n^T.
  */
 Eigen::Matrix4d
 refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& normals,

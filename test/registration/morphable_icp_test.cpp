@@ -250,8 +250,10 @@ TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
     Icp icp = makeIcp ();
     icp.setMaximumIterations (2);
     icp.setTargetLandmarks (scan.landmarks);
-    if (rejector)
+    if (rejector) { // a chain replaces the default one: keep the boundary rejector in front
+      icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
       icp.addCorrespondenceRejector (rejector);
+    }
     icp.setInputTarget (scan.cloud);
     std::function<Icp::UpdateVisualizerCallbackSignature> callback =
         [calls] (const pcl::PointCloud<pcl::PointNormal>&, const pcl::Indices& source,
@@ -302,6 +304,7 @@ TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
   Icp icp = makeIcp ();
   icp.setMaximumIterations (1);
   icp.setTargetLandmarks (scan.landmarks);
+  icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
   icp.addCorrespondenceRejector (trimmed);
   icp.addCorrespondenceRejector (trimmed_again);
   icp.setInputTarget (scan.cloud);
@@ -319,6 +322,7 @@ TEST_F (MorphableIcpTest, DistanceRejectorKeepsOnlyCloseCorrespondences)
   icp.setMaximumIterations (4);
   auto distance = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
   distance->setMaximumDistance (3.0f);
+  icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
   icp.addCorrespondenceRejector (distance);
   icp.setInputTarget (scan.cloud);
   int iterations_seen = 0;

@@ -76,6 +76,7 @@ registerIct (const pcl::PointCloud<pcl::PointNormal>::Ptr& target, const morphre
   icp.setPointToPlane (true, 0.1);
   icp.setShapePriorWeight (1.5);
   icp.setAreaWeighting (true);
+  icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ()); // kept in front of the chain
   icp.addCorrespondenceRejector (std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> ());
   icp.setTargetLandmarks (landmarks, 1.0);
   icp.setInitialisation (morphreg::IcpInitialisation::landmarks);

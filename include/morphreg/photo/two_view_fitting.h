@@ -7,16 +7,12 @@
 #include <morphreg/photo/frontal_view.h>
 #include <morphreg/photo/profile_view.h>
 #include <morphreg/photo/two_view_fit.h>
+#include <morphreg/registration/pose_shape_least_squares.h>
 
 #include <memory>
 
 namespace morphreg
 {
-namespace detail
-{
-struct ShapeProblem;
-}
-
 /** \brief Fits X = s R (mu + M m) + t to two photos in the normalised photo frame (PhotoNormalisation): the frontal
  *  photo is the projection along Z onto (X, Y), the profile photo the projection along X onto (Z, Y) with the face
  *  looking to +Z, i.e. to the right of the image. Model axes as the built-in heads: +Y up, +Z out of the face, +X
@@ -136,20 +132,12 @@ public:
   fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const;
 
 private:
-  /** The least-squares problem over \a vertices with this fitting's components and priors. */
-  detail::ShapeProblem
-  shapeProblem (std::vector<int> vertices) const;
-
   /** Both fits: without \a frontal the profile alone. */
   TwoViewFit
   fit (const ProfileView& profile, const FrontalView* frontal) const;
 
   MorphableModel::ConstPtr model_;
-  ComponentSelection selection_;
-  double lambda1_ = kDefaultSmoothnessWeight;
-  double lambda2_ = kDefaultShapePriorWeight;
-  ShapePrior prior_ = ShapePrior::inverse_std_dev;
-  double coefficient_limit_ = kDefaultCoefficientLimit;
+  PoseShapeSettings settings_; ///< components, priors and coefficient limit; costs in model units
   double frontal_weight_ = kDefaultFrontalWeight;
   double contour_weight_ = 0.0;
   double sagittal_weight_ = kDefaultSagittalWeight;

@@ -1,12 +1,17 @@
 #pragma once
 /** \file morphable_icp.h
- *  \brief ICP with shape parameters (METHOD.md section 3): registers a scan to a MorphableModel by a
+ *  \brief ICP with shape parameters: registers a scan to a MorphableModel by a
  *  similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
  */
 #include <morphreg/common/landmarks.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/registration/correspondence_rejection_target_boundary.h>
+#include <morphreg/registration/morphable_convergence.h>
+#include <morphreg/registration/pose_shape_least_squares.h>
 #include <morphreg/registration/registration_report.h>
+#include <morphreg/registration/robust_kernels.h>
+#include <morphreg/registration/target_surface.h>
 
 #include <pcl/PolygonMesh.h>
 #include <pcl/point_types.h>
@@ -19,14 +24,6 @@
 
 namespace morphreg
 {
-/** \brief Robust (IRLS) weighting of the correspondence residuals. */
-enum class RobustLoss
-{
-  none,  ///< plain least squares
-  huber, ///< weight min(1, c / d)
-  tukey  ///< weight (1 - (d / c)^2)^2 inside c, 0 beyond
-};
-
 /** \brief One phase of the shape stage: the components fitted and the smoothness weight lambda_1 used. */
 struct ShapePhase
 {
@@ -56,16 +53,21 @@ enum class IcpInitialisation
  *  pcl::IterativeClosestPoint: setMaximumIterations (total over both stages; default 50),
  *  setMaxCorrespondenceDistance, setTransformationEpsilon (here: mean squared vertex motion of one update,
  *  mm^2; 0 means 1e-4), setEuclideanFitnessEpsilon (absolute change of the cost per row between iterations, mm^2),
- *  addCorrespondenceRejector (every rejector, in order, each iteration), setCorrespondenceEstimation (default
+ *  addCorrespondenceRejector (every rejector, in order, each iteration; a chain added replaces the default chain,
+ *  which is getTargetBoundaryRejector when setRejectTargetBoundary is on), setCorrespondenceEstimation (default
  *  CachedCorrespondenceEstimation: PCL's nearest-neighbour correspondences with parallel, mostly cached queries, on
  *  the Registration's k-d tree, built once per target; estimations that need source normals, such as
  *  CorrespondenceEstimationNormalShooting, get the model's vertex normals) and
  *  registerVisualizationCallback (called each iteration with the deformed model in the target frame and the
- *  accepted correspondences). The cost is
+ *  accepted correspondences).
+ *
+ *  computeTransformation is PCL's ICP loop: per phase (the similarity stage, then each shape phase) and iteration,
+ *  correspondences (their distances measured to the TargetSurface's smoothed points), the rejector chain, IRLS
+ *  weights (robust_kernels.h), one PoseShapeLeastSquares step, and a MorphableConvergence that ends the phase
+ *  (budget, motion and fitness epsilons, divergence rules). Too few correspondences follow requireEnoughRows. The
+ *  cost is
  *  sum_i w_i |r_i|^2_W + landmark_weight sum_l |r_l|^2 + lambda_1^2 |Gamma m|^2 + lambda_2^2 |Lambda m|^2,
  *  with W the identity (point-to-point) or n n^T + tangential_weight (I - n n^T) (point-to-plane).
- *  The normal equations are summed per correspondence over the columns of that vertex's regions only
- *  (no 3N x P Jacobian), in parallel with OpenMP.
  *
  *  getFinalTransformation() is the similarity [sR | t]; align()'s output holds the fitted model vertices in the
  *  target frame (with vertex normals for point types that have normals). pcl::Registration::getFitnessScore() is not virtual and re-applies only the similarity to the
@@ -215,16 +217,27 @@ public:
     area_weighting_ = enabled;
   }
 
-  /** \brief Reject correspondences whose target point lies on the target's boundary (hole borders, isolated
-   *  outliers): the largest angular gap between a point's \a neighbours nearest neighbours, in their plane, exceeds
-   *  90 degrees. Computed lazily, once per target point when it first becomes a correspondence. On by default.
+  /** \brief Whether the default rejector chain (used when no rejector was added) holds
+   *  getTargetBoundaryRejector (on by default), and the size \a neighbours of the target surface's neighbourhoods
+   *  (boundary test, smoothing and estimated normals; >= 4, default 20).
    */
   void
   setRejectTargetBoundary (bool enabled, int neighbours = 20);
 
+  /** \brief The rejector of target boundary points on this registration's target surface (the smoothed points and
+   *  normals the rows use). It is the default chain; a chain of addCorrespondenceRejector replaces the default, so
+   *  add this one first to keep it: icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ()).
+   */
+  CorrespondenceRejectorTargetBoundary::Ptr
+  getTargetBoundaryRejector () const
+  {
+    return boundary_rejector_;
+  }
+
   /** \brief Residuals against each target point projected onto the least-squares plane of its neighbourhood
    *  (the k of setRejectTargetBoundary) instead of the raw point: scan noise then averages out instead of pulling
-   *  the model towards the nearest noisy points. On by default; the k-d tree still holds the raw points.
+   *  the model towards the nearest noisy points. On by default; the k-d tree still holds the raw points, and the
+   *  correspondences' distances are measured to the smoothed points before any rejector sees them.
    */
   void
   setTargetSmoothing (bool enabled);
@@ -320,9 +333,15 @@ protected:
   computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
 
 private:
-  struct State;
   struct Evaluation;
-  struct Problem;
+
+  /** One run of the loop: the similarity stage (no shape unknowns) or a shape phase. */
+  struct Phase
+  {
+    bool shape = false;
+    ShapePhase settings; ///< the shape phase's components and lambda_1
+    RobustLoss loss = RobustLoss::none;
+  };
 
   void
   validateInputs () const;
@@ -331,44 +350,69 @@ private:
   Eigen::Matrix4d
   initialTransformation (const Matrix4& guess);
 
-  /** Finds, rejects and weighs (IRLS weights of \a loss) the correspondences of the model at \a state. */
-  Evaluation
-  evaluate (const State& state, RobustLoss loss);
-
-  /** Target point, vertex and 3 x 3 weight of row \a c: a kept correspondence, then the landmarks. */
+  /** Hands the target to the correspondence estimation, the rejectors and the target surface; picks the rejector
+   *  chain (the user's, or the default one); the landmark rows. */
   void
-  row (long c, const Evaluation& ev, const Problem& problem, int& vertex, Eigen::Vector3d& q,
-       Eigen::Matrix3d& metric) const;
+  prepareEstimators ();
 
-  /** The cost at \a state for the correspondences of \a ev (with the shape prior in the shape stage). */
-  double
-  objective (const State& state, const Evaluation& ev, const Problem& problem) const;
+  /** The state at the initial similarity of \a guess, with the first phase's components at zero. */
+  PoseShapeState
+  initialState (const Matrix4& guess);
 
-  /** One Gauss-Newton step from \a state with backtracking on the objective (\a current at \a state); false if the
-   *  system could not be solved.
-   */
+  /** The similarity stage, then the shape phases of effectiveShapeSchedule (unless the shape stage is off). */
+  std::vector<Phase>
+  phases () const;
+
+  /** The solver of \a phase. */
+  PoseShapeLeastSquares
+  solver (const Phase& phase) const;
+
+  /** Restacks \a state for \a phase's components and starts it in \a convergence; false if no iterations are
+   *  left. */
   bool
-  step (State& state, const Evaluation& evaluation, const Problem& problem, double current) const;
+  startPhase (const Phase& phase, int phases_left, PoseShapeState& state, MorphableConvergence& convergence);
 
-  /** Sizes the per-target caches (smoothed points, normals, boundary flags); filled lazily. */
+  /** Iterates \a phase until \a convergence ends it; \a best is the phase's lowest-cost state. */
   void
-  prepareTarget ();
+  runPhase (const Phase& phase, const PoseShapeLeastSquares& solver, PoseShapeState& state, PoseShapeState& best,
+            MorphableConvergence& convergence);
 
-  /** Fills the caches for the target points of \a correspondences not seen yet on this target: only points that
-   *  become correspondences pay for their neighbourhood (k-NN, plane fit, boundary test).
-   */
-  void
-  prepareTargetPoints (const pcl::Correspondences& correspondences);
+  /** Correspondences, rejection and IRLS weights (kernel \a loss) at \a state. */
+  Evaluation
+  evaluate (const PoseShapeState& state, RobustLoss loss);
 
-  /** Halves the coefficient update of \a state from \a before if it reverses \a previous_change (both in prior
-   *  standard deviations); stores the update taken in \a previous_change.
-   */
+  /** The correspondence estimation's correspondences of \a ev's posed model, their distances on the target
+   *  surface's (smoothed) points. */
+  pcl::CorrespondencesPtr
+  findCorrespondences (Evaluation& ev);
+
+  /** \a correspondences through the rejector chain. */
+  pcl::CorrespondencesPtr
+  reject (pcl::CorrespondencesPtr correspondences, Evaluation& ev);
+
+  /** Distances, error and IRLS weights of \a ev's kept correspondences. */
   void
-  dampReversal (State& state, const Eigen::VectorXd& before, const Problem& problem,
-                Eigen::VectorXd& previous_change) const;
+  weigh (Evaluation& ev, RobustLoss loss) const;
+
+  /** The rows of \a ev: each kept correspondence with its weight and metric, then the landmarks. */
+  std::vector<PoseShapeRow>
+  rows (const Evaluation& ev) const;
+
+  /** The posed model with normals as a blob, for estimations and rejectors that need source normals. */
+  pcl::PCLPointCloud2::Ptr
+  sourceBlob (Evaluation& ev) const;
 
   void
-  finish (const State& state, PointCloudSource& output);
+  visualize (const Evaluation& ev) const;
+
+  /** The returned state (\a state, or \a best if its cost is lower), output, residuals and report. */
+  void
+  finish (PoseShapeState state, const PoseShapeState& best, const PoseShapeLeastSquares& solver,
+          const MorphableConvergence& convergence, PointCloudSource& output);
+
+  /** Output cloud, coefficients, vertices and transformation of \a state. */
+  void
+  store (const PoseShapeState& state, PointCloudSource& output);
 
   /** setTargetUnit's unit, or the guess from the target's size. */
   LengthUnitGuess
@@ -397,7 +441,6 @@ private:
   bool area_weighting_ = false;
   Eigen::VectorXd vertex_area_weights_; ///< per model vertex, mean 1 (setModel)
   bool reject_boundary_ = true;
-  int boundary_neighbours_ = 20;
   double max_sigma_ = 8.0;
   int rising_iterations_ = 3;
   LandmarkPositions landmarks_;
@@ -405,13 +448,11 @@ private:
   IcpInitialisation initialisation_ = IcpInitialisation::automatic;
   std::optional<LengthUnit> target_unit_;
 
-  bool smooth_target_ = true;
+  TargetSurface::Ptr target_surface_;
   bool target_prepared_ = false;
-  Eigen::Matrix3Xd target_points_;
-  std::vector<char> target_boundary_;
-  Eigen::Matrix3Xd target_normals_;
-  std::vector<char> target_has_normal_;
-  std::vector<char> target_point_ready_;
+  CorrespondenceRejectorTargetBoundary::Ptr boundary_rejector_;
+  std::vector<pcl::registration::CorrespondenceRejector::Ptr> chain_; ///< the rejectors of this align()
+  std::vector<PoseShapeRow> landmark_rows_;
 
   Eigen::VectorXd coefficients_;
   Eigen::Matrix3Xd fitted_vertices_;

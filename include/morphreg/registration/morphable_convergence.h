@@ -1,0 +1,132 @@
+#pragma once
+/** \file morphable_convergence.h
+ *  \brief When MorphableICP's phases stop, in the spirit of pcl::registration::DefaultConvergenceCriteria.
+ */
+#include <morphreg/registration/registration_report.h>
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <string>
+
+namespace morphreg
+{
+/** \brief The stopping rules of MorphableICP: an iteration budget over all phases and one per phase; per phase, the
+ *  mean squared vertex motion of an update below the motion epsilon or the change of the cost per row below the
+ *  fitness epsilon (converged); and the divergence rules: the normal equations could not be solved, a coefficient
+ *  left the prior (more than max_sigma standard deviations) or, where the phase checks it, the cost per row stayed
+ *  above 1.05 times the phase's best for rising_iterations iterations in a row.
+ *
+ *  Per iteration: checkCost with the cost at the current state (improved() then says whether it is the phase's
+ *  best), the step, update; hasConverged() ends the phase.
+ */
+class MorphableConvergence
+{
+public:
+  /** \param[in] max_iterations the budget over all phases
+   *  \param[in] motion_epsilon the mean squared vertex motion (mm^2) of a converged update
+   *  \param[in] fitness_epsilon the change of the cost per row (mm^2) of a converged iteration (<= 0: not checked)
+   *  \param[in] max_sigma the coefficients' limit in prior standard deviations (<= 0: none)
+   *  \param[in] rising_iterations iterations above the best that count as divergence
+   */
+  MorphableConvergence (int max_iterations, double motion_epsilon, double fitness_epsilon, double max_sigma,
+                        int rising_iterations);
+
+  /** \brief The iterations left over all phases. */
+  int
+  remaining () const
+  {
+    return max_iterations_ - iterations_;
+  }
+
+  /** \brief Starts a phase of \a budget iterations.
+   *  \param[in] budget the phase's iterations (at most remaining())
+   *  \param[in] check_rising whether a rising cost counts as divergence (the shape phases)
+   *  \param[in] sigma the prior standard deviations of the phase's coefficients (empty: not checked)
+   */
+  void
+  startPhase (int budget, bool check_rising, Eigen::VectorXd sigma);
+
+  /** \brief Records the cost per row at the state about to be updated.
+   *  \return false if it diverged (the cost rose too often)
+   */
+  bool
+  checkCost (double cost);
+
+  /** \brief Whether the last checkCost was the phase's best. */
+  bool
+  improved () const
+  {
+    return improved_;
+  }
+
+  double
+  bestCost () const
+  {
+    return best_cost_;
+  }
+
+  /** \brief Records an update: \a solved false marks divergence; else one iteration, its \a motion (mm^2) and the
+   *  \a coefficients reached. */
+  void
+  update (bool solved, double motion, const Eigen::VectorXd& coefficients);
+
+  /** \brief Whether the phase ends: converged, diverged or out of budget. */
+  bool
+  hasConverged () const;
+
+  bool
+  hasDiverged () const
+  {
+    return divergence_ != IcpDivergence::none;
+  }
+
+  int
+  iterations () const
+  {
+    return iterations_;
+  }
+
+  IcpTermination
+  termination () const
+  {
+    return hasDiverged () ? IcpTermination::diverged : termination_;
+  }
+
+  IcpDivergence
+  divergence () const
+  {
+    return divergence_;
+  }
+
+  const std::string&
+  message () const
+  {
+    return message_;
+  }
+
+private:
+  void
+  diverge (IcpDivergence why, std::string message);
+
+  int max_iterations_;
+  double motion_epsilon_;
+  double fitness_epsilon_;
+  double max_sigma_;
+  int rising_iterations_;
+
+  int iterations_ = 0;
+  int budget_ = 0;
+  int phase_iterations_ = 0;
+  bool check_rising_ = false;
+  Eigen::VectorXd sigma_;
+  int rising_ = 0;
+  bool improved_ = false;
+  double best_cost_ = std::numeric_limits<double>::infinity ();
+  double previous_cost_ = std::numeric_limits<double>::infinity ();
+  double cost_ = 0.0;
+  IcpTermination termination_ = IcpTermination::not_run;
+  IcpDivergence divergence_ = IcpDivergence::none;
+  std::string message_;
+};
+} // namespace morphreg
