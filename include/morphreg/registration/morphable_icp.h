@@ -98,6 +98,17 @@ public:
 
   MorphableICP ();
 
+  /** \brief Not copyable: the target surface (smoothed points and normals) and the boundary rejector that reads it
+   *  belong to one registration and its target; a copy would share them.
+   */
+  MorphableICP (const MorphableICP&) = delete;
+  MorphableICP&
+  operator= (const MorphableICP&) = delete;
+  /** \brief Movable: the moved-from registration is left without a target surface. */
+  MorphableICP (MorphableICP&&) = default;
+  MorphableICP&
+  operator= (MorphableICP&&) = default;
+
   // ---- model and shape ------------------------------------------------------------------------------------
 
   /** \brief Sets the model and makes its mean the source cloud; selects 10 components per region. Throws
