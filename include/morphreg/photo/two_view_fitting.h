@@ -38,44 +38,55 @@ namespace morphreg
 class TwoViewFitting
 {
 public:
-  using Ptr = std::shared_ptr<TwoViewFitting>;
-  using ConstPtr = std::shared_ptr<const TwoViewFitting>;
+  using Ptr = std::shared_ptr<TwoViewFitting>;            ///< shared pointer
+  using ConstPtr = std::shared_ptr<const TwoViewFitting>; ///< shared pointer to const
 
   /** Components fitted per region unless setComponentSelection says otherwise. */
   static constexpr int kDefaultComponents = 20;
-  static constexpr double kDefaultSmoothnessWeight = 0.5;
-  static constexpr double kDefaultShapePriorWeight = 0.3;
-  static constexpr double kDefaultCoefficientLimit = 3.0;
-  static constexpr double kDefaultFrontalWeight = 0.5;
-  static constexpr double kDefaultSagittalWeight = 1.0;
+  static constexpr double kDefaultSmoothnessWeight = 0.5; ///< default lambda_1 (setSmoothnessWeight)
+  static constexpr double kDefaultShapePriorWeight = 0.3; ///< default lambda_2 (setShapePriorWeight)
+  static constexpr double kDefaultCoefficientLimit = 3.0; ///< default coefficient clamp in sigmas (setCoefficientLimit)
+  static constexpr double kDefaultFrontalWeight = 0.5;    ///< default frontal landmark weight (setFrontalWeight)
+  static constexpr double kDefaultSagittalWeight = 1.0;   ///< default sagittal row weight (setSagittalWeight)
 
-  /** \brief Selects kDefaultComponents per region (or all a region has). Throws InvalidInputError for a null model, one without a profile
-   *  line (MorphableModel::setProfileLine) or without a nose_tip landmark.
+  /** \brief Selects kDefaultComponents per region (or all a region has). Throws InvalidInputError for a null model,
+   *  one without a profile line (MorphableModel::setProfileLine) or without a nose_tip landmark.
+   *  \param[in] model the model fitted (mm), with a profile line and landmarks
    */
   explicit TwoViewFitting (MorphableModel::ConstPtr model);
 
-  /** \brief The components fitted in the shape stage (validated against the model). */
+  /** \brief The components fitted in the shape stage (validated against the model).
+   *  \param[in] selection the number of components per region
+   */
   void
   setComponentSelection (const ComponentSelection& selection);
 
   /** \brief lambda_1, the weight of the smoothness prior across overlapping regions: finite and > 0
-   *  (kDefaultSmoothnessWeight). */
+   *  (kDefaultSmoothnessWeight).
+   *  \param[in] lambda1 the smoothness weight; it carries the shape into regions the photos do not constrain
+   */
   void
   setSmoothnessWeight (double lambda1);
 
-  /** \brief lambda_2 and the kind of Lambda (>= 0; kDefaultShapePriorWeight with inverse standard deviations). */
+  /** \brief lambda_2 and the kind of Lambda (>= 0; kDefaultShapePriorWeight with inverse standard deviations).
+   *  \param[in] lambda2 the weight of the shape regulariser
+   *  \param[in] prior Lambda: coefficients penalised in mm or in prior standard deviations
+   */
   void
   setShapePriorWeight (double lambda2, ShapePrior prior = ShapePrior::inverse_std_dev);
 
   /** \brief After every step each shape coefficient is clamped to +-\a sigmas prior standard deviations, so a fit
    *  never leaves the model's range however the photos pull (> 0, or infinity for no limit;
    *  kDefaultCoefficientLimit).
+   *  \param[in] sigmas the clamp in prior standard deviations
    */
   void
   setCoefficientLimit (double sigmas);
 
   /** \brief Weight of each frontal landmark's two rows relative to one profile correspondence (> 0,
-   *  kDefaultFrontalWeight). */
+   *  kDefaultFrontalWeight).
+   *  \param[in] weight the frontal landmark weight
+   */
   void
   setFrontalWeight (double weight);
 
@@ -84,6 +95,7 @@ public:
    *  listed in TwoViewFit::ignored_landmarks). The outline crosses the face where its surface turns away from the
    *  camera, which moves with the head's shape and pose, so pinning it to one model vertex pulls the fit (measured on
    *  photos of MediaPipe's face: the chin's mark lay 4 mm below ICT's chin vertex).
+   *  \param[in] weight the outline landmarks' weight, 0 to leave them out
    */
   void
   setContourLandmarkWeight (double weight);
@@ -93,22 +105,29 @@ public:
    *  and tilted by nothing, only nodding (a rotation about X keeps the plane X = 0): for a turned or tilted head,
    *  set 0 for fitJoint and let the frontal landmarks fix X (measured on 3 synthetic heads turned and tilted by
    *  3 degrees: vertex RMS 1.25 mm with 0, 4.80 mm with 1).
+   *  \param[in] weight the sagittal rows' weight
    */
   void
   setSagittalWeight (double weight);
 
   /** \brief Profile-line vertices farther than this (model mm, in the image) from the silhouette have no
    *  correspondence (> 0, default 20).
+   *  \param[in] millimetres the largest silhouette distance of a correspondence (model mm)
    */
   void
   setMaxCorrespondenceDistance (double millimetres);
 
-  /** \brief Iteration budgets of the similarity and the shape stage (>= 0 each; default 20 and 30). */
+  /** \brief Iteration budgets of the similarity and the shape stage (>= 0 each; default 20 and 30).
+   *  \param[in] similarity the similarity stage's iterations
+   *  \param[in] shape the shape stage's iterations
+   */
   void
   setIterations (int similarity, int shape);
 
   /** \brief Fits the profile alone (METHOD's profile fit). Throws InvalidInputError when the sagittal weight is 0
    *  or too few profile-line vertices find the silhouette.
+   *  \param[in] profile the profile photo's silhouette (normalised photo frame)
+   *  \return the fitted similarity, coefficients, meshes, residuals and iteration history
    */
   TwoViewFit
   fitProfile (const ProfileView& profile) const;
@@ -116,6 +135,9 @@ public:
   /** \brief Approach 1: the profile and the frontal landmarks in one Gauss-Newton. Throws InvalidInputError for a
    *  frontal landmark the model does not have (named), fewer than 3 frontal landmarks, or landmarks that are
    *  coincident or collinear in the photo.
+   *  \param[in] profile the profile photo's silhouette (normalised photo frame)
+   *  \param[in] frontal the frontal photo's named landmarks (normalised photo frame)
+   *  \return the fitted similarity, coefficients, meshes, residuals and iteration history
    */
   TwoViewFit
   fitJoint (const ProfileView& profile, const FrontalView& frontal) const;
@@ -127,6 +149,9 @@ public:
    *  the joint fit's image residuals (profile and landmarks together) decrease and the head stays plausible
    *  (isPlausibleShape); returns the best round. The history holds the profile fit's iterations, then one entry per
    *  round. Throws as fitProfile and fitJoint.
+   *  \param[in] profile the profile photo's silhouette (normalised photo frame)
+   *  \param[in] frontal the frontal photo's named landmarks (normalised photo frame)
+   *  \return the best round's fit: similarity, coefficients, meshes, residuals and history
    */
   TwoViewFit
   fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const;
