@@ -1,7 +1,8 @@
 #pragma once
 /** \file two_view_fitting.h
- *  \brief Fitting a morphable model to a profile and a frontal photo under orthographic projection (METHOD.md
- *  section 4: the profile fit, approach 1 "joint" and approach 2 "TPS-ICP").
+ *  \brief Fitting a morphable model to a profile and a frontal photo under orthographic projection
+ *  (docs/method.md, "Fitting to two orthogonal photographs": the profile fit, approach 1 "joint" and approach 2
+ *  "TPS-ICP").
  */
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/photo/frontal_view.h>
@@ -22,9 +23,9 @@ namespace morphreg
  *  Rows (each weighted by 1 / s^2 of the iteration, so residuals count in model millimetres and the priors weigh as
  *  in MorphableICP): every profile-line vertex whose projection lies within setMaxCorrespondenceDistance of the
  *  silhouette pulls (Z, Y) to the closest point of the polyline and, with setSagittalWeight, X to the sagittal
- *  plane X = 0 (METHOD's third equation; the nose tip, which centres the frame, is on it); every frontal landmark
- *  pulls (X, Y) to its marked position with setFrontalWeight (its depth row is dropped). Gauss-Newton over (log s,
- *  rotation, t) to convergence, then with the shape coefficients under the prior
+ *  plane X = 0 (docs/method.md, "Profile fit"; the nose tip, which centres the frame, is on it); every frontal
+ *  landmark pulls (X, Y) to its marked position with setFrontalWeight (its depth row is dropped). Gauss-Newton over
+ *  (log s, rotation, t) to convergence, then with the shape coefficients under the prior
  *  lambda_1^2 |Gamma m|^2 + lambda_2^2 |Lambda m|^2 (as MorphableICP). lambda_1 > 0 is required: regions the
  *  photos do not constrain (ears, eyes, cheeks) follow their neighbours through Gamma.
  *
@@ -93,18 +94,19 @@ public:
   /** \brief Weight of the frontal landmarks that are points of the photo's outline (isFrontalContourLandmarkId:
    *  jaw, chin, neck, head contour) rather than fixed points of the face (>= 0; default 0: they are left out and
    *  listed in TwoViewFit::ignored_landmarks). The outline crosses the face where its surface turns away from the
-   *  camera, which moves with the head's shape and pose, so pinning it to one model vertex pulls the fit (measured on
-   *  photos of MediaPipe's face: the chin's mark lay 4 mm below ICT's chin vertex).
+   *  camera, which moves with the head's shape and pose, so pinning it to one model vertex pulls the fit (on
+   *  photos of MediaPipe's face the chin's mark lies 4 mm below ICT's chin vertex).
    *  \param[in] weight the outline landmarks' weight, 0 to leave them out
    */
   void
   setContourLandmarkWeight (double weight);
 
-  /** \brief Weight of the profile rows that pull X to the sagittal plane (>= 0, default 1 as in METHOD; the
-   *  profile fit and TPS-ICP need > 0: nothing else fixes X there; kDefaultSagittalWeight). They assume the head in the photos is turned
-   *  and tilted by nothing, only nodding (a rotation about X keeps the plane X = 0): for a turned or tilted head,
-   *  set 0 for fitJoint and let the frontal landmarks fix X (measured on 3 synthetic heads turned and tilted by
-   *  3 degrees: vertex RMS 1.25 mm with 0, 4.80 mm with 1).
+  /** \brief Weight of the profile rows that pull X to the sagittal plane (>= 0, kDefaultSagittalWeight: one
+   *  equation per profile point as in docs/method.md, "Profile fit"; the profile fit and TPS-ICP need > 0: nothing
+   *  else fixes X there). They assume the head in the photos is turned and tilted by nothing, only nodding (a
+   *  rotation about X keeps the plane X = 0): for a turned or tilted head, set 0 for fitJoint and let the frontal
+   *  landmarks fix X (on 3 synthetic heads turned and tilted by 3 degrees the vertex RMS is 1.25 mm with 0,
+   *  4.80 mm with 1).
    *  \param[in] weight the sagittal rows' weight
    */
   void
@@ -124,8 +126,8 @@ public:
   void
   setIterations (int similarity, int shape);
 
-  /** \brief Fits the profile alone (METHOD's profile fit). Throws InvalidInputError when the sagittal weight is 0
-   *  or too few profile-line vertices find the silhouette.
+  /** \brief Fits the profile alone (docs/method.md, "Profile fit"). Throws InvalidInputError when the sagittal
+   *  weight is 0 or too few profile-line vertices find the silhouette.
    *  \param[in] profile the profile photo's silhouette (normalised photo frame)
    *  \return the fitted similarity, coefficients, meshes, residuals and iteration history
    */

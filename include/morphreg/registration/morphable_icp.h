@@ -1,7 +1,7 @@
 #pragma once
 /** \file morphable_icp.h
- *  \brief ICP with shape parameters: registers a scan to a MorphableModel by a
- *  similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
+ *  \brief ICP with shape parameters (docs/method.md, "ICP with shape parameters"): registers a scan to a
+ *  MorphableModel by a similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
  */
 #include <morphreg/common/landmarks.h>
 #include <morphreg/common/length_unit.h>
@@ -244,7 +244,7 @@ public:
    *  last Tukey's (off by default). Tukey gives weight 0 to a region of the model still far from the scan (a higher
    *  skull, a longer chin), which is then never pulled in; Huber keeps its pull until the last phase. For scans
    *  that cover the model's surface (up to holes); not where parts of the model have no counterpart in the target
-   *  (ICT-FaceKit against the fsaverage scalp: those parts then pull the fit off, median 0.64 -> 1.35 mm).
+   *  (ICT-FaceKit against the fsaverage scalp: those parts then pull the fit off, from a median of 0.64 to 1.35 mm).
    *  \param[in] enabled true for Huber weights before the last phase
    */
   void

@@ -1,8 +1,9 @@
 #pragma once
 /** \file surface_distance.h
- *  \brief How close a fitted model surface lies to a target surface without correspondence (issue 5's evaluation):
- *  area-uniform samples of the target, each to the closest point on the fitted surface (point-to-triangle),
- *  leaving out samples that only reach the fitted surface at its open boundary (target parts the model lacks).
+ *  \brief How close a fitted model surface lies to a target surface without known correspondence, the accuracy
+ *  measure for real targets: area-uniform samples of the target, each to the closest point on the fitted surface
+ *  (point-to-triangle), leaving out samples that only reach the fitted surface at its open boundary (target parts
+ *  the model lacks).
  */
 #include <morphreg/mesh/triangle_mesh.h>
 
