@@ -49,7 +49,7 @@ photoTestModel ()
   return built;
 }
 
-/** The generator's landmarks among the 40 frontal ones of LANDMARKS.md (thesis table 1). */
+/** The generator's landmarks among the 40 frontal ones of docs/landmarks.md (thesis table 1). */
 inline LandmarkVertices
 frontalLandmarks ()
 {

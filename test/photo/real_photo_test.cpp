@@ -80,8 +80,8 @@ TEST (RealPhotoTest, MediaPipeFace)
   for (const char* id : {"right_eye_outer", "right_eye_inner", "left_eye_inner", "left_eye_outer", "nose_tip",
                          "right_mouth_corner", "left_mouth_corner", "chin"})
     landmarks[id] = face.landmarks.at (id);
-  // Measured at the defaults: joint 0.69x, TPS-ICP 0.61x, profile 0.69x the mean head (0.824 mm); the bounds are the
-  // goals (0.7x for joint and TPS-ICP, 0.85x for the profile).
+  // At the defaults the fits reach joint 0.69x, TPS-ICP 0.61x, profile 0.69x the mean head (0.824 mm); the bounds
+  // are the required ratios (0.7x for joint and TPS-ICP, 0.85x for the profile).
   fitAndScore ("MediaPipe", face.mesh, landmarks, {0.7, 0.7, 0.85});
 }
 
@@ -92,13 +92,13 @@ TEST (RealPhotoTest, RealHeadScan)
   const nlohmann::json annotation =
       readJsonFile (std::string (MORPHREG_TEST_SOURCE_DIR) + "/photo/annotations/leeperrysmith_head_landmarks.json");
   const auto landmarks = annotation.at ("landmark_vertices").get<std::map<std::string, int>> ();
-  // The silhouette runs from the crown over the face down the chest (the scan's shoulders). Measured at the
-  // defaults: the mean head 3.28 mm; joint 0.61x, TPS-ICP 0.58x, profile 0.68x.
+  // The silhouette runs from the crown over the face down the chest (the scan's shoulders). At the defaults the
+  // mean head is at 3.28 mm; joint reaches 0.61x, TPS-ICP 0.58x, profile 0.68x.
   fitAndScore ("Lee Perry-Smith", leeHeadMesh (), LandmarkVertices (landmarks.begin (), landmarks.end ()),
                {0.7, 0.7, 0.85});
   // Hair (12 mm on everything 60 mm above the nose tip) traced as the outline, and the same photo traced from the
-  // hairline down, as the README advises. Measured: with the hair 0.85x, 0.83x, 1.02x (the profile fit takes the
-  // hair for the skull); from the hairline 0.55x, 0.81x, 0.67x (TPS-ICP loses the crown the outline no longer shows).
+  // hairline down, as the README advises. With the hair the fits reach 0.85x, 0.83x, 1.02x (the profile fit takes
+  // the hair for the skull); from the hairline 0.55x, 0.81x, 0.67x (TPS-ICP loses the crown the outline leaves out).
   OutlinePhotoSettings hair;
   hair.hair_thickness = 12.0;
   fitAndScore ("Lee Perry-Smith with hair", leeHeadMesh (), LandmarkVertices (landmarks.begin (), landmarks.end ()),

@@ -139,7 +139,7 @@ printFit (const std::string& name, const TwoViewFit& fit, const FitError& error)
 }
 
 /** Fits photos of each of \a heads and asserts that the fits are far better than the mean head on average, better
- *  for every head and within a measured bound, with small residuals and the known pose.
+ *  for every head and within a fixed bound, with small residuals and the known pose.
  */
 void
 expectJointFitsBeatTheMeanHead (const std::string& name, const std::vector<Eigen::Matrix3Xd>& heads)
@@ -236,8 +236,8 @@ TEST_F (PhotoFittingTest, TpsIcpFitsUnseenHeadsAndSeesTheWidth)
             << profile_sum.rms_x << " mm), mean head " << mean_sum << " mm\n";
   EXPECT_LT (tps_sum.rms, 0.6 * mean_sum);
   EXPECT_LT (tps_sum.rms_x, 0.8 * profile_sum.rms_x);
-  // Defaults chosen on real photos too may cost the synthetic suite at most 5 % of its figures before that choice
-  // (joint 1.23, TPS-ICP 1.42, profile 1.97 mm; measured now 1.13, 1.45, 1.99 mm).
+  // The defaults also suit real photos; on this synthetic suite they stay within 5 % of the figures of settings
+  // tuned on it alone (joint 1.23, TPS-ICP 1.42, profile 1.97 mm): they reach 1.13, 1.45 and 1.99 mm.
   EXPECT_LE (joint_sum, 1.05 * 1.23);
   EXPECT_LE (tps_sum.rms, 1.05 * 1.42);
   EXPECT_LE (profile_sum.rms, 1.05 * 1.97);
@@ -245,8 +245,8 @@ TEST_F (PhotoFittingTest, TpsIcpFitsUnseenHeadsAndSeesTheWidth)
 
 TEST_F (PhotoFittingTest, TurnedAndTiltedHeadsFitWithoutTheSagittalRows)
 {
-  // The head also turns and tilts by 3 degrees: its sagittal plane is no longer X = 0, so the joint fit drops
-  // METHOD's third profile equation and lets the frontal landmarks fix X.
+  // The head also turns and tilts by 3 degrees: its sagittal plane is not X = 0, so the joint fit drops the profile
+  // rows' X = 0 equation (docs/method.md, "Profile fit") and lets the frontal landmarks fix X.
   PhotoSimulator::Parameters camera = testCamera ();
   camera.rotation = (Eigen::AngleAxisd (3.0 * M_PI / 180.0, Eigen::Vector3d::UnitY ()) *
                      Eigen::AngleAxisd (3.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ ()))

@@ -1,5 +1,5 @@
-// Landmark-free registration of the real head-and-shoulders scan from random similarity poses (issue targets:
-// every pose succeeds: register's checks pass and the face median is at most 0.85 mm).
+// Landmark-free registration of the real head-and-shoulders scan from random similarity poses (required: every
+// pose succeeds: register's checks pass and the face median is at most 0.85 mm).
 #include "real_scan_support.h"
 
 #include <morphreg/registration/fit_plausibility.h>

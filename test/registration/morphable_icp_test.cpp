@@ -1,5 +1,6 @@
-// MorphableICP on the built-in synthetic population: accuracy against the posed truth under the issue's scan
-// protocol, agreement with pcl::IterativeClosestPoint when the shape is frozen, the PCL settings, and bad input.
+// MorphableICP on the built-in synthetic population: accuracy against the posed truth under the scan protocol of
+// scan_protocol.h, agreement with pcl::IterativeClosestPoint when the shape is frozen, the PCL settings, and bad
+// input.
 #include "scan_protocol.h"
 
 #include <morphreg/common/error.h>
@@ -85,7 +86,7 @@ protected:
 morphreg::synthetic::HeadGenerator* MorphableIcpTest::generator_ = nullptr;
 MorphableModel::ConstPtr* MorphableIcpTest::model_ = nullptr;
 
-/** A few well-spread landmarks of LANDMARKS.md that the synthetic heads have. */
+/** A few well-spread landmarks of docs/landmarks.md that the synthetic heads have. */
 morphreg::LandmarkVertices
 startLandmarks (const MorphableModel& model)
 {
@@ -103,7 +104,7 @@ TEST_F (MorphableIcpTest, HeadsWithinTheModelFitFromLandmarkAndCoarseStarts)
   const MorphableModel& model = **model_;
   const morphreg::ComponentSelection selection = model.firstComponents (10);
   std::mt19937_64 rng (7);
-  std::map<bool, int> over_target; // per start: heads above the issue's 1.0 mm
+  std::map<bool, int> over_target; // per start: heads above the required 1.0 mm
   for (int head = 0; head < kTestHeads; ++head) {
     const Eigen::VectorXd truth_m = model.sampleCoefficients (rng, selection);
     const morphreg::TriangleMesh mesh = model.generateMesh (truth_m, selection);
@@ -123,13 +124,14 @@ TEST_F (MorphableIcpTest, HeadsWithinTheModelFitFromLandmarkAndCoarseStarts)
       EXPECT_LE (report.history.size (), 50u);
     }
   }
-  // Issue target: <= 1.0 mm on every head from both starts, within 50 iterations. Measured: landmark start 20/20 at
-  // 0.43-0.96 mm, coarse start 19/20 at 0.44-0.77 mm, 14-34 iterations. The exception, head 16 from the coarse start
-  // (1.08 mm): its chin region's first component is +2.4 sigma and mostly moves the chin's underside, which the
-  // protocol's under-chin hole removes; without the chin landmark the prior pulls that component back (the landmark
-  // start reaches 0.96 mm). Before the landmark weight 1, the weak first-phase lambda_1, the halved reversing updates
-  // and the graduated loss: 1.33 mm (head 4, landmark start: its nose bent by the landmarks' 2 mm noise at weight 10)
-  // and 2.36 mm (head 16, coarse start: stalled under lambda_1 = 1, then the shape flipping between two states).
+  // Required: <= 1.0 mm on every head from both starts, within 50 iterations. At these settings the landmark start
+  // fits 20/20 at 0.43-0.96 mm, the coarse start 19/20 at 0.44-0.77 mm, in 14-34 iterations. The exception, head 16
+  // from the coarse start (1.08 mm): its chin region's first component is +2.4 sigma and mostly moves the chin's
+  // underside, which the protocol's under-chin hole removes; without the chin landmark the prior pulls that component
+  // back (the landmark start reaches 0.96 mm). The landmark weight 1 keeps head 4's nose from bending to the
+  // landmarks' 2 mm noise (1.33 mm at weight 10); the weak first-phase lambda_1, the halved reversing updates and the
+  // graduated loss keep head 16 from stalling under lambda_1 = 1 and its shape from flipping between two states
+  // (2.36 mm without them).
   EXPECT_EQ (over_target[true], 0) << "heads above 1.0 mm from the landmark start";
   EXPECT_LE (over_target[false], 1) << "heads above 1.0 mm from the coarse start";
 }
@@ -156,9 +158,9 @@ TEST_F (MorphableIcpTest, UnseenHeadsFitCloseToTheirModelFloor)
     within_twice_floor += rms <= 2.0 * floor ? 1 : 0;
     errors.push_back (rms);
   }
-  // Issue target: every head <= 2x its floor. Measured: 0.42-1.36 mm, 0.45-1.88x the floor (head 19: 1.09 mm,
-  // floor 0.58 mm), 17-29 iterations. Without the graduated loss, head 0 stays at 3.3x (2.02 mm): Tukey gives its
-  // skull, several mm higher than the mean's, weight 0.
+  // Required: every head <= 2x its floor. At these settings: 0.42-1.36 mm, 0.45-1.88x the floor (head 19: 1.09 mm,
+  // floor 0.58 mm), 17-29 iterations. The graduated loss is needed: with Tukey throughout, head 0 stays at 3.3x
+  // (2.02 mm), as Tukey gives its skull, several mm higher than the mean's, weight 0.
   EXPECT_EQ (within_twice_floor, kTestHeads) << "heads within twice their floor";
   std::nth_element (errors.begin (), errors.begin () + kTestHeads / 2, errors.end ());
   EXPECT_LE (errors[kTestHeads / 2], 2.0) << "median";
@@ -405,7 +407,7 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
     icp.setRobustLoss (loss);
     const double rms = fit (icp, scan);
     std::printf ("[ robust ] %s: RMS %.3f mm\n", loss == morphreg::RobustLoss::huber ? "huber" : "tukey", rms);
-    EXPECT_LE (rms, 2.5) << "measured 0.64 (Huber) and 0.62 mm (Tukey)";
+    EXPECT_LE (rms, 2.5) << "this scan fits to 0.64 (Huber) and 0.62 mm (Tukey)";
   }
   Icp icp = makeIcp ();
   icp.setPointToPlane (false);
@@ -414,7 +416,7 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
   const double rms = fit (icp, scan);
   std::printf ("[ point-to-point ] RMS %.3f mm after %zu iterations\n", rms,
                icp.getRegistrationReport ().history.size ());
-  EXPECT_LE (rms, 2.5) << "point-to-point rows converge more slowly (measured 1.31 mm after 50 iterations)";
+  EXPECT_LE (rms, 2.5) << "point-to-point rows converge more slowly (1.31 mm after 50 iterations on this scan)";
 }
 
 TEST_F (MorphableIcpTest, NormalShootingCorrespondenceEstimationFits)
@@ -433,7 +435,8 @@ TEST_F (MorphableIcpTest, NormalShootingCorrespondenceEstimationFits)
                                                                                      pcl::PointNormal>> ());
     const double rms = fit (icp, scan);
     std::printf ("[ estimation ] %s: RMS %.3f mm\n", shooting ? "normal shooting" : "nearest neighbour", rms);
-    EXPECT_LE (rms, 1.0) << (shooting ? "normal shooting" : "nearest neighbour") << " (measured 0.74 / 0.72 mm)";
+    EXPECT_LE (rms, 1.0) << (shooting ? "normal shooting" : "nearest neighbour")
+                         << " (this scan fits to 0.74 / 0.72 mm)";
     coefficients[shooting ? 1 : 0] = icp.getShapeCoefficients ();
   }
   EXPECT_GT ((coefficients[1] - coefficients[0]).norm (), 1e-6) << "the normal-shooting estimation takes part";
@@ -455,7 +458,7 @@ TEST_F (MorphableIcpTest, AreaWeightingFitsAndChangesTheWeights)
     coefficients[weighted] = icp.getShapeCoefficients ();
   }
   std::printf ("[ area weighting ] RMS %.3f mm (off), %.3f mm (on)\n", rms[0], rms[1]);
-  EXPECT_LE (rms[1], 1.5) << "measured 0.82 mm (0.74 mm unweighted: this model samples the surface evenly)";
+  EXPECT_LE (rms[1], 1.5) << "this scan fits to 0.82 mm (0.74 mm unweighted: this model samples the surface evenly)";
   EXPECT_GT ((coefficients[1] - coefficients[0]).norm (), 1e-6) << "the area weights take part in the fit";
 }
 

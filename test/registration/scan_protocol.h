@@ -1,5 +1,5 @@
 #pragma once
-// The issue-5 scan protocol for registration tests: a random similarity, an area-uniform scan with a crown cap and
+// The scan protocol of the registration accuracy tests: a random similarity, an area-uniform scan with a crown cap and
 // an under-chin hole, Gaussian noise, uniform outliers and noisy landmarks, with the posed truth kept.
 #include <morphreg/common/landmarks.h>
 #include <morphreg/mesh/mesh_normals.h>

@@ -1,4 +1,4 @@
-// The issue-5 surface distance on meshes with known answers: target samples to the closest fitted point, samples
+// surfaceDistance on meshes with known answers: target samples to the closest fitted point, samples
 // that only reach the fitted boundary dropped, statistics, and bad input.
 #include <morphreg/common/error.h>
 #include <morphreg/registration/surface_distance.h>

@@ -27,26 +27,38 @@ class CachedCorrespondenceEstimation
   : public pcl::registration::CorrespondenceEstimation<PointSource, PointTarget, Scalar>
 {
 public:
-  using Ptr = pcl::shared_ptr<CachedCorrespondenceEstimation>;
-  using ConstPtr = pcl::shared_ptr<const CachedCorrespondenceEstimation>;
+  using Ptr = pcl::shared_ptr<CachedCorrespondenceEstimation>;            ///< shared pointer
+  using ConstPtr = pcl::shared_ptr<const CachedCorrespondenceEstimation>; ///< shared pointer to const
+  /** \brief Shared pointer to PCL's estimation base, the type clone() returns. */
   using BasePtr = typename pcl::registration::CorrespondenceEstimationBase<PointSource, PointTarget, Scalar>::Ptr;
 
   /** Target points kept per source point: more widen the reach within which a moved point needs no query. */
   static constexpr int kCandidates = 8;
 
+  /** \brief An estimation with an empty cache, named "CachedCorrespondenceEstimation" in PCL's messages. */
   CachedCorrespondenceEstimation () { this->corr_name_ = "CachedCorrespondenceEstimation"; }
 
+  /** \brief Each source point's nearest target point, in source-index order, querying the tree only where the
+   *  cache cannot prove the nearest point.
+   *  \param[out] correspondences one per source point whose nearest target point lies within \a max_distance
+   *  \param[in] max_distance the largest accepted point distance (mm for mm clouds)
+   */
   void
   determineCorrespondences (pcl::Correspondences& correspondences,
                             double max_distance = std::numeric_limits<double>::max ()) override;
 
+  /** \brief A copy with the same input, tree and cache, for PCL registrations that clone their estimation.
+   *  \return the copy
+   */
   BasePtr
   clone () const override
   {
     return Ptr (new CachedCorrespondenceEstimation (*this));
   }
 
-  /** Tree queries made since construction (a query per source point per call without the cache). */
+  /** \brief Tree queries made since construction (a query per source point per call without the cache).
+   *  \return the number of k-d tree queries, to measure how many the cache saves
+   */
   long
   getTreeQueries () const
   {
@@ -80,9 +92,11 @@ private:
 
 } // namespace morphreg
 
+/// \cond
 #define MORPHREG_DECLARE_CACHED_ESTIMATION(T)                                                                       \
   extern template class morphreg::CachedCorrespondenceEstimation<T, T, float>;
 MORPHREG_DECLARE_CACHED_ESTIMATION (pcl::PointXYZ)
 MORPHREG_DECLARE_CACHED_ESTIMATION (pcl::PointNormal)
 MORPHREG_DECLARE_CACHED_ESTIMATION (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_CACHED_ESTIMATION
+/// \endcond

@@ -24,18 +24,24 @@ namespace morphreg
 class CorrespondenceRejectorTargetBoundary : public pcl::registration::CorrespondenceRejector
 {
 public:
-  using Ptr = std::shared_ptr<CorrespondenceRejectorTargetBoundary>;
-  using ConstPtr = std::shared_ptr<const CorrespondenceRejectorTargetBoundary>;
+  using Ptr = std::shared_ptr<CorrespondenceRejectorTargetBoundary>;            ///< shared pointer
+  using ConstPtr = std::shared_ptr<const CorrespondenceRejectorTargetBoundary>; ///< shared pointer to const
 
   /** \param[in] surface the target surface whose boundary flags decide (may be set later) */
   explicit CorrespondenceRejectorTargetBoundary (TargetSurface::Ptr surface = nullptr);
 
+  /** \brief Sets the surface whose boundary flags decide which correspondences are dropped.
+   *  \param[in] surface the target surface, holding the same points as the correspondences' target cloud
+   */
   void
   setTargetSurface (TargetSurface::Ptr surface)
   {
     surface_ = std::move (surface);
   }
 
+  /** \brief The surface whose boundary flags decide.
+   *  \return the target surface, or nullptr if none is set
+   */
   TargetSurface::Ptr
   getTargetSurface () const
   {
@@ -51,10 +57,13 @@ public:
   getRemainingCorrespondences (const pcl::Correspondences& original, pcl::Correspondences& remaining) override;
 
 protected:
+  /** \brief PCL's rejection hook: getRemainingCorrespondences applied to the input correspondences.
+   *  \param[out] correspondences the input correspondences whose target point is not a boundary point
+   */
   void
   applyRejection (pcl::Correspondences& correspondences) override;
 
 private:
-  TargetSurface::Ptr surface_;
+  TargetSurface::Ptr surface_; ///< the surface whose boundary flags decide
 };
 } // namespace morphreg

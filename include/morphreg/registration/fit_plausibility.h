@@ -15,11 +15,12 @@ namespace morphreg
 /** \brief Limits of checkFitPlausibility (the fit in mm: the scan converted to mm, the model in mm). */
 struct FitPlausibilitySettings
 {
-  /** Similarity scale range. The model's components carry the population's size variation (adult head lengths vary
-   *  by about 4 % per standard deviation, so +-8 % covers 95 %); a scale beyond 0.75-1.33 is a head a quarter
-   *  smaller or a third larger than the model can be, i.e. a wrong unit or the model fitted to the wrong object. */
+  /** \brief Smallest plausible similarity scale. The model's components carry the population's size variation
+   *  (adult head lengths vary by about 4 % per standard deviation, so +-8 % covers 95 %); a scale beyond 0.75-1.33
+   *  is a head a quarter smaller or a third larger than the model can be, i.e. a wrong unit or the model fitted to
+   *  the wrong object. */
   double min_scale = 0.75;
-  double max_scale = 1.33;
+  double max_scale = 1.33;               ///< largest plausible similarity scale (see min_scale)
   double min_correspondence_share = 0.2; ///< share of model vertices with an accepted correspondence
   double max_sigma = 5.0;                ///< no shape coefficient beyond this many prior standard deviations
   double min_thickness_ratio = 0.25;     ///< smallest principal spread of the fitted vertices over the largest
@@ -29,14 +30,21 @@ struct FitPlausibilitySettings
 /** \brief The verdict: plausible, or one sentence with the numbers per failed check. */
 struct FitPlausibility
 {
-  bool plausible = true;
-  std::vector<std::string> failures;
+  bool plausible = true;             ///< true if every check passed
+  std::vector<std::string> failures; ///< one sentence with the numbers per failed check (empty if plausible)
 };
 
 /** \brief Checks a finished fit: \a scale (of the similarity), \a fitted_vertices (3 x N, mm), \a vertex_residuals
  *  (per model vertex, NaN without a correspondence), \a coefficients_in_sigma (the shape coefficients divided by
  *  their prior standard deviations) and \a report (the median residual; a divergence other than the cost rising
  *  above its best, which is the normal end of a settled fit). Throws InvalidInputError for mismatched sizes.
+ *  \param[in] scale the scale of the fitted similarity (1: the model's own size)
+ *  \param[in] fitted_vertices the fitted model vertices (3 x N, mm)
+ *  \param[in] vertex_residuals the scan-to-model distance per model vertex (mm; NaN without a correspondence)
+ *  \param[in] coefficients_in_sigma the shape coefficients divided by their prior standard deviations
+ *  \param[in] report the fit's report: its median residual and how it ended
+ *  \param[in] settings the limits of the checks
+ *  \return the verdict, with a sentence per failed check
  */
 FitPlausibility
 checkFitPlausibility (double scale, const Eigen::Matrix3Xd& fitted_vertices, const Eigen::VectorXd& vertex_residuals,

@@ -65,6 +65,11 @@ struct GlobalAlignment
  *     truncated distance (wrong normals count as far) and a scale within the searched radius range wins.
  *  Throws InvalidInputError for an invalid mesh, fewer than 10 scan points, non-finite points, normals of the
  *  wrong size or bad settings.
+ *  \param[in] model_mean the model's mean mesh (mm), the shape searched for in the scan
+ *  \param[in] scan the scan points (3 x N, mm)
+ *  \param[in] scan_normals the scan normals (3 x N), or empty to estimate them
+ *  \param[in] settings the search and refinement settings
+ *  \return the pose (model frame to scan frame), its confidence and how it was chosen
  */
 GlobalAlignment
 alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,

@@ -14,6 +14,9 @@ namespace morphreg
 {
 /** \brief The least-squares similarity [sR | t] (Umeyama) mapping \a source onto \a target (3 x K, K >= 3 pairs).
  *  Throws InvalidInputError for fewer than 3 pairs, mismatched sizes, non-finite values or collinear points.
+ *  \param[in] source the source landmarks (3 x K, e.g. the model's)
+ *  \param[in] target the corresponding target landmarks (3 x K, e.g. the scan's, mm)
+ *  \return the 4 x 4 similarity mapping source onto target
  */
 Eigen::Matrix4d
 similarityFromLandmarks (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target);
@@ -24,6 +27,10 @@ similarityFromLandmarks (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd&
  *  axes matched in order of extent, each signed to agree with the source's. The orientation is assumed roughly
  *  known: if the axes imply a rotation above \a max_rotation_deg (ambiguous extents, e.g. a round object),
  *  the rotation is left at identity. Throws InvalidInputError for fewer than 4 points or non-finite values.
+ *  \param[in] source the points mapped (3 x N)
+ *  \param[in] target the points mapped onto (3 x M)
+ *  \param[in] max_rotation_deg the largest rotation (degrees) the principal axes may imply
+ *  \return the 4 x 4 similarity mapping source onto target
  */
 Eigen::Matrix4d
 coarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target, double max_rotation_deg = 45.0);
@@ -49,6 +56,10 @@ struct CoarseAlignmentSettings
  *  settings.refine_iterations steps and are scored again. Among them the lowest score wins, and among scores within
  *  settings.tie_tolerance of it the smallest rotation (scans in roughly known orientation). Returns the refined
  *  winner. Throws InvalidInputError for fewer than 4 points, non-finite values, no spread or bad settings.
+ *  \param[in] source the points mapped (3 x N, e.g. the model's mean)
+ *  \param[in] target the points mapped onto (3 x M, e.g. the scan)
+ *  \param[in] settings the hypotheses, refinement and scoring
+ *  \return the refined winning similarity (4 x 4), source onto target
  */
 Eigen::Matrix4d
 robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
@@ -62,6 +73,11 @@ using TargetNeighbourSearch =
 
 /** \brief robustCoarseSimilarity with the target's neighbourhoods from a search the caller already has (e.g. a
  *  registration's target k-d tree), so the target's tree is not built a second time.
+ *  \param[in] source the points mapped (3 x N)
+ *  \param[in] target the points mapped onto (3 x M)
+ *  \param[in] target_neighbours the k-nearest-neighbour search over \a target
+ *  \param[in] settings the hypotheses, refinement and scoring
+ *  \return the refined winning similarity (4 x 4), source onto target
  */
 Eigen::Matrix4d
 robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,

@@ -32,7 +32,9 @@ public:
   MorphableConvergence (int max_iterations, double motion_epsilon, double fitness_epsilon, double max_sigma,
                         int rising_iterations);
 
-  /** \brief The iterations left over all phases. */
+  /** \brief The iterations left over all phases.
+   *  \return the budget over all phases minus the iterations run, the most the next phase may take
+   */
   int
   remaining () const
   {
@@ -48,18 +50,24 @@ public:
   startPhase (int budget, bool check_rising, Eigen::VectorXd sigma);
 
   /** \brief Records the cost per row at the state about to be updated.
+   *  \param[in] cost the cost per row (mm^2) at the current state
    *  \return false if it diverged (the cost rose too often)
    */
   bool
   checkCost (double cost);
 
-  /** \brief Whether the last checkCost was the phase's best. */
+  /** \brief Whether the last checkCost was the phase's best.
+   *  \return true if the state just checked is the best of the phase, the one to keep
+   */
   bool
   improved () const
   {
     return improved_;
   }
 
+  /** \brief The lowest cost per row of the phase so far.
+   *  \return the best cost per row (mm^2); infinity before the first checkCost
+   */
   double
   bestCost () const
   {
@@ -67,38 +75,59 @@ public:
   }
 
   /** \brief Records an update: \a solved false marks divergence; else one iteration, its \a motion (mm^2) and the
-   *  \a coefficients reached. */
+   *  \a coefficients reached.
+   *  \param[in] solved whether the normal equations were solved
+   *  \param[in] motion the mean squared vertex motion of the update (mm^2)
+   *  \param[in] coefficients the shape coefficients after the update, checked against the prior
+   */
   void
   update (bool solved, double motion, const Eigen::VectorXd& coefficients);
 
-  /** \brief Whether the phase ends: converged, diverged or out of budget. */
+  /** \brief Whether the phase ends: converged, diverged or out of budget.
+   *  \return true if the phase should stop iterating
+   */
   bool
   hasConverged () const;
 
+  /** \brief Whether a divergence rule fired.
+   *  \return true if the run diverged (see divergence())
+   */
   bool
   hasDiverged () const
   {
     return divergence_ != IcpDivergence::none;
   }
 
+  /** \brief The iterations run over all phases.
+   *  \return the number of recorded updates
+   */
   int
   iterations () const
   {
     return iterations_;
   }
 
+  /** \brief Why the last phase stopped, for the report.
+   *  \return IcpTermination::diverged after a divergence, else the phase's convergence or budget reason
+   */
   IcpTermination
   termination () const
   {
     return hasDiverged () ? IcpTermination::diverged : termination_;
   }
 
+  /** \brief Which divergence rule fired.
+   *  \return the rule, or IcpDivergence::none
+   */
   IcpDivergence
   divergence () const
   {
     return divergence_;
   }
 
+  /** \brief What diverged, in words, for the report.
+   *  \return the divergence's sentence, empty if none
+   */
   const std::string&
   message () const
   {

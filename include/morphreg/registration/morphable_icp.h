@@ -1,7 +1,7 @@
 #pragma once
 /** \file morphable_icp.h
- *  \brief ICP with shape parameters: registers a scan to a MorphableModel by a
- *  similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
+ *  \brief ICP with shape parameters (docs/method.md, "ICP with shape parameters"): registers a scan to a
+ *  MorphableModel by a similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
  */
 #include <morphreg/common/landmarks.h>
 #include <morphreg/common/length_unit.h>
@@ -88,14 +88,17 @@ template <typename PointTarget, typename Scalar = float>
 class MorphableICP : public pcl::Registration<PointTarget, PointTarget, Scalar>
 {
 public:
-  using Base = pcl::Registration<PointTarget, PointTarget, Scalar>;
-  using Ptr = std::shared_ptr<MorphableICP>;
-  using ConstPtr = std::shared_ptr<const MorphableICP>;
+  using Base = pcl::Registration<PointTarget, PointTarget, Scalar>; ///< the PCL registration it extends
+  using Ptr = std::shared_ptr<MorphableICP>;                        ///< shared pointer
+  using ConstPtr = std::shared_ptr<const MorphableICP>;             ///< shared pointer to const
   using typename Base::Matrix4;
   using typename Base::PointCloudSource;
   using typename Base::PointCloudTarget;
   using typename Base::PointCloudTargetConstPtr;
 
+  /** \brief A registration with the defaults above: 50 iterations, CachedCorrespondenceEstimation and the
+   *  target boundary rejector on its own target surface.
+   */
   MorphableICP ();
 
   /** \brief Not copyable: the target surface (smoothed points and normals) and the boundary rejector that reads it
@@ -106,6 +109,9 @@ public:
   operator= (const MorphableICP&) = delete;
   /** \brief Movable: the moved-from registration is left without a target surface. */
   MorphableICP (MorphableICP&&) = default;
+  /** \brief Move assignment: the moved-from registration is left without a target surface.
+   *  \return this registration
+   */
   MorphableICP&
   operator= (MorphableICP&&) = default;
 
@@ -113,20 +119,29 @@ public:
 
   /** \brief Sets the model and makes its mean the source cloud; selects 10 components per region. Throws
    *  InvalidInputError for a null model.
+   *  \param[in] model the model fitted to the target (mm)
    */
   void
   setModel (const MorphableModel::ConstPtr& model);
 
+  /** \brief The model fitted.
+   *  \return the model of setModel, or nullptr
+   */
   MorphableModel::ConstPtr
   getModel () const
   {
     return model_;
   }
 
-  /** \brief The components fitted in the shape stage (validated against the model). */
+  /** \brief The components fitted in the shape stage (validated against the model).
+   *  \param[in] selection the number of components per region
+   */
   void
   setComponentSelection (const ComponentSelection& selection);
 
+  /** \brief The components fitted in the shape stage.
+   *  \return the selection; the shape coefficients are stacked like it
+   */
   const ComponentSelection&
   getComponentSelection () const
   {
@@ -136,6 +151,7 @@ public:
   /** \brief lambda_1: weight of the smoothness prior Gamma across overlapping regions (>= 0) in the first
    *  phase of the default shape schedule (default 0.1: a strong Gamma, e.g. 1, holds a region whose coefficients
    *  must differ from its neighbours' in the overlaps, and the first phase then stalls short of the scan).
+   *  \param[in] lambda1 the smoothness weight of the first phase
    */
   void
   setSmoothnessWeight (double lambda1);
@@ -143,6 +159,7 @@ public:
   /** \brief lambda_1 of the default schedule's second (refinement) phase (>= 0; default 0.1). A larger first-phase
    *  lambda_1 keeps the regions consistent while the correspondences settle; a small one here lets each region fit
    *  its own data (region coefficients need not agree exactly in the overlaps).
+   *  \param[in] lambda1 the smoothness weight of the refinement phase
    */
   void
   setRefinementSmoothnessWeight (double lambda1);
@@ -151,41 +168,55 @@ public:
    *  changing lambda_1); coefficients carry over between phases. Every phase's components must fit within
    *  getComponentSelection() (checked in align()). Empty (the default): two phases over the selection, with
    *  setSmoothnessWeight, then with setRefinementSmoothnessWeight.
+   *  \param[in] phases the shape phases in order, or empty for the default two
    */
   void
   setShapeSchedule (std::vector<ShapePhase> phases);
 
+  /** \brief The shape phases of setShapeSchedule.
+   *  \return the phases given, empty for the default schedule
+   */
   const std::vector<ShapePhase>&
   getShapeSchedule () const
   {
     return schedule_;
   }
 
-  /** \brief The phases align() runs: setShapeSchedule's, or the default two (see setShapeSchedule). */
+  /** \brief The phases align() runs: setShapeSchedule's, or the default two (see setShapeSchedule).
+   *  \return the shape phases in the order they run
+   */
   std::vector<ShapePhase>
   effectiveShapeSchedule () const;
 
   /** \brief lambda_2 and Lambda: weight and kind of the shape regulariser (>= 0, default 3 with inverse standard
    *  deviations; a huge value freezes the shape).
+   *  \param[in] lambda2 the weight of the shape regulariser
+   *  \param[in] prior Lambda: coefficients penalised in mm or in prior standard deviations
    */
   void
   setShapePriorWeight (double lambda2, ShapePrior prior = ShapePrior::inverse_std_dev);
 
-  /** \brief Skip the shape stage (a similarity-only ICP). */
+  /** \brief Skip the shape stage (a similarity-only ICP).
+   *  \param[in] enabled false to fit the similarity only (default true)
+   */
   void
   setShapeStage (bool enabled)
   {
     shape_stage_ = enabled;
   }
 
-  /** \brief Estimate the scale (default) or keep s = 1 (a rigid ICP). */
+  /** \brief Estimate the scale (default) or keep s = 1 (a rigid ICP).
+   *  \param[in] estimate false to keep s = 1
+   */
   void
   setEstimateScale (bool estimate)
   {
     estimate_scale_ = estimate;
   }
 
-  /** \brief At most this many of the iterations go to the similarity stage (default 20). */
+  /** \brief At most this many of the iterations go to the similarity stage (default 20).
+   *  \param[in] iterations the similarity stage's budget, out of setMaximumIterations
+   */
   void
   setSimilarityIterations (int iterations);
 
@@ -194,6 +225,8 @@ public:
   /** \brief Point-to-plane rows, with \a tangential_weight in [0, 1] of the point-to-point term kept along the
    *  tangent plane (0 = pure point-to-plane). Uses the target's normals, or for targets without normals (or with
    *  invalid ones) normals estimated from the k-neighbourhood of setRejectTargetBoundary.
+   *  \param[in] enabled true for point-to-plane rows (default false: point-to-point)
+   *  \param[in] tangential_weight the share of the point-to-point term kept along the tangent plane
    */
   void
   setPointToPlane (bool enabled, double tangential_weight = 0.02);
@@ -201,6 +234,8 @@ public:
   /** \brief IRLS weights on the residual distances (default Tukey, automatic width); \a scale (mm) is the kernel
    *  width c, or <= 0 for c from the
    *  residuals' median absolute value (1.345 resp. 4.685 times 1.4826 MAD).
+   *  \param[in] loss the kernel (RobustLoss::none: plain least squares)
+   *  \param[in] scale the kernel width c (mm), or <= 0 for the automatic width
    */
   void
   setRobustLoss (RobustLoss loss, double scale = 0.0);
@@ -209,7 +244,8 @@ public:
    *  last Tukey's (off by default). Tukey gives weight 0 to a region of the model still far from the scan (a higher
    *  skull, a longer chin), which is then never pulled in; Huber keeps its pull until the last phase. For scans
    *  that cover the model's surface (up to holes); not where parts of the model have no counterpart in the target
-   *  (ICT-FaceKit against the fsaverage scalp: those parts then pull the fit off, median 0.64 -> 1.35 mm).
+   *  (ICT-FaceKit against the fsaverage scalp: those parts then pull the fit off, from a median of 0.64 to 1.35 mm).
+   *  \param[in] enabled true for Huber weights before the last phase
    */
   void
   setGraduatedRobustLoss (bool enabled)
@@ -221,6 +257,7 @@ public:
    *  triangles' areas, normalised to mean 1), so that the fit balances area, not vertex count. Off by default; for
    *  models with very uneven vertex density (ICT-FaceKit: a dense face, a sparse skull) against targets that cover
    *  the sparse parts too (a whole scalp).
+   *  \param[in] enabled true to weight correspondences by vertex area
    */
   void
   setAreaWeighting (bool enabled)
@@ -231,6 +268,8 @@ public:
   /** \brief Whether the default rejector chain (used when no rejector was added) holds
    *  getTargetBoundaryRejector (on by default), and the size \a neighbours of the target surface's neighbourhoods
    *  (boundary test, smoothing and estimated normals; >= 4, default 20).
+   *  \param[in] enabled whether the default chain rejects target boundary points
+   *  \param[in] neighbours the neighbourhood size k of the target surface
    */
   void
   setRejectTargetBoundary (bool enabled, int neighbours = 20);
@@ -238,6 +277,7 @@ public:
   /** \brief The rejector of target boundary points on this registration's target surface (the smoothed points and
    *  normals the rows use). It is the default chain; a chain of addCorrespondenceRejector replaces the default, so
    *  add this one first to keep it: icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ()).
+   *  \return the boundary rejector bound to this registration's target surface
    */
   CorrespondenceRejectorTargetBoundary::Ptr
   getTargetBoundaryRejector () const
@@ -249,6 +289,7 @@ public:
    *  (the k of setRejectTargetBoundary) instead of the raw point: scan noise then averages out instead of pulling
    *  the model towards the nearest noisy points. On by default; the k-d tree still holds the raw points, and the
    *  correspondences' distances are measured to the smoothed points before any rejector sees them.
+   *  \param[in] enabled false to use the raw target points
    */
   void
   setTargetSmoothing (bool enabled);
@@ -257,6 +298,8 @@ public:
    *  (<= 0: never; default 8) or, in a shape phase, the cost per row stayed above 1.05 times the phase's best for
    *  \a rising_iterations iterations in a row (default 3). The similarity stage is not checked for a rising cost:
    *  while its correspondences settle, the IRLS weights change and its cost per row may rise on a good path.
+   *  \param[in] max_sigma the coefficients' limit in prior standard deviations (<= 0: none)
+   *  \param[in] rising_iterations iterations with a rising cost that count as divergence
    */
   void
   setDivergenceGuard (double max_sigma, int rising_iterations = 3);
@@ -269,10 +312,15 @@ public:
    *  regions around it (nose, eyes) away from the scan.
    *  Throws InvalidInputError for non-finite positions, a negative weight, or (once a model is set) names the
    *  model does not have.
+   *  \param[in] landmarks target position (mm, the target's frame) per model landmark name
+   *  \param[in] weight how many correspondences one landmark row counts as (>= 0)
    */
   void
   setTargetLandmarks (const LandmarkPositions& landmarks, double weight = 1.0);
 
+  /** \brief How the start is found when align() is given the identity guess (default automatic).
+   *  \param[in] initialisation the start mode
+   */
   void
   setInitialisation (IcpInitialisation initialisation)
   {
@@ -284,6 +332,7 @@ public:
    *  The fit runs in mm (a scaled copy of the target; landmarks and the guess are scaled too); the transformation,
    *  align()'s output and getFittedVertices() are returned in the target's unit, the residuals and the report's
    *  fitness in mm. The unit used and why are in getRegistrationReport().
+   *  \param[in] unit the target's length unit, or std::nullopt to guess it
    */
   void
   setTargetUnit (std::optional<LengthUnit> unit)
@@ -293,26 +342,33 @@ public:
 
   // ---- results --------------------------------------------------------------------------------------------
 
-  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()). */
+  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()).
+   *  \return the coefficients (mm along the orthonormal basis)
+   */
   const Eigen::VectorXd&
   getShapeCoefficients () const
   {
     return coefficients_;
   }
 
-  /** \brief The fitted model as a mesh in the model topology, in the target frame. */
+  /** \brief The fitted model as a mesh in the model topology, in the target frame.
+   *  \return the mesh, in the target's unit
+   */
   pcl::PolygonMesh
   getFittedMesh () const;
 
-  /** \brief The fitted model vertices (3 x N, target frame). */
+  /** \brief The fitted model vertices (3 x N, target frame).
+   *  \return the vertices, in the target's unit
+   */
   const Eigen::Matrix3Xd&
   getFittedVertices () const
   {
     return fitted_vertices_;
   }
 
-  /** \brief Per model vertex: distance (mm, whatever the target's unit) to its accepted correspondence at the returned state, NaN where it
-   *  has none.
+  /** \brief Per model vertex: distance (mm, whatever the target's unit) to its accepted correspondence at the
+   *  returned state, NaN where it has none.
+   *  \return one residual per model vertex (mm)
    */
   const Eigen::VectorXd&
   getVertexResiduals () const
@@ -320,6 +376,9 @@ public:
     return vertex_residuals_;
   }
 
+  /** \brief What the last align() did: why it stopped, its iterations, its start and the fit quality.
+   *  \return the report (fitness in mm); use it instead of pcl::Registration::getFitnessScore()
+   */
   const IcpReport&
   getRegistrationReport () const
   {
@@ -329,17 +388,29 @@ public:
   /** \brief Validates the inputs (model, target, landmarks), then runs pcl::Registration::align. Throws
    *  InvalidInputError for a missing model or target, an empty target or one with non-finite points, unknown
    *  landmark names, or fewer correspondences than unknowns.
+   *  \param[out] output the fitted model vertices in the target frame
    */
   void
   align (PointCloudSource& output);
 
+  /** \brief As align (output), starting from \a guess (the identity: the setInitialisation start).
+   *  \param[out] output the fitted model vertices in the target frame
+   *  \param[in] guess the start similarity, model frame to target frame, in the target's unit
+   */
   void
   align (PointCloudSource& output, const Matrix4& guess);
 
+  /** \brief Sets the target cloud; its surface and tree are prepared again on the next align().
+   *  \param[in] cloud the scan (any unit, see setTargetUnit)
+   */
   void
   setInputTarget (const PointCloudTargetConstPtr& cloud) override;
 
 protected:
+  /** \brief PCL's registration hook: the phases of the fit, in mm.
+   *  \param[out] output the fitted model vertices in the target frame
+   *  \param[in] guess the start similarity (the identity: the setInitialisation start)
+   */
   void
   computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
 

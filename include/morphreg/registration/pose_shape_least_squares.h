@@ -19,7 +19,7 @@ struct PoseShapeSettings
   ComponentSelection components;  ///< the shape unknowns (none selected, or no regions: similarity only)
   double smoothness_weight = 0.1; ///< lambda_1: Gamma across overlapping regions (>= 0)
   double prior_weight = 3.0;      ///< lambda_2: weight of Lambda (>= 0)
-  ShapePrior prior = ShapePrior::inverse_std_dev;
+  ShapePrior prior = ShapePrior::inverse_std_dev; ///< Lambda: coefficients penalised in mm or in standard deviations
   /** Trust region: one update moves no coefficient by more than this many prior standard deviations (> 0), so a
    *  step on the first, still sliding correspondences cannot throw the shape far outside the prior. */
   double max_step_sigma = 3.0;
@@ -34,7 +34,9 @@ struct PoseShapeSettings
   bool damp_reversals = false;
 
   /** \brief Throws InvalidInputError, naming \a who, unless the weights are finite and >= 0 and the trust region
-   *  and the coefficient limit > 0. */
+   *  and the coefficient limit > 0.
+   *  \param[in] who the fit the settings belong to, for the message
+   */
   void
   validate (const std::string& who) const;
 };
@@ -51,22 +53,29 @@ requirePriorWeight (double weight, const std::string& what);
  *  vertices (mu + M m) of the solver's slots. */
 struct PoseShapeState
 {
-  double log_scale = 0.0;
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity ();
-  Eigen::Vector3d translation = Eigen::Vector3d::Zero ();
-  ComponentSelection selection;
-  Eigen::VectorXd coefficients;
-  Eigen::Matrix3Xd vertices;
+  double log_scale = 0.0;                                  ///< log s: the scale stays positive through any update
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity (); ///< R
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero ();  ///< t (mm for mm data)
+  ComponentSelection selection;                            ///< the components the coefficients belong to
+  Eigen::VectorXd coefficients;                            ///< m, stacked as \a selection (mm along the basis)
+  Eigen::Matrix3Xd vertices;                               ///< mu + M m of each solver slot (3 x slots, model frame)
   Eigen::VectorXd last_step; ///< the last accepted coefficient update, in prior standard deviations (damping)
 
+  /** \brief The similarity's scale.
+   *  \return s = exp (log_scale)
+   */
   double
   scale () const;
 
-  /** \brief s R v + t of every slot's vertex. */
+  /** \brief s R v + t of every slot's vertex.
+   *  \return the posed vertices (3 x slots), where the fit places them in the data frame
+   */
   Eigen::Matrix3Xd
   posed () const;
 
-  /** \brief The similarity [s R | t]. */
+  /** \brief The similarity [s R | t].
+   *  \return the 4 x 4 matrix mapping the model frame to the data frame
+   */
   Eigen::Matrix4d
   similarity () const;
 };
@@ -75,9 +84,9 @@ struct PoseShapeState
  *  (weight times identity, per-axis weights on the diagonal, or a point-to-plane n n^T). */
 struct PoseShapeRow
 {
-  int slot;
-  Eigen::Vector3d target;
-  Eigen::Matrix3d metric;
+  int slot;               ///< the solver slot whose vertex is pulled
+  Eigen::Vector3d target; ///< where it is pulled to (data frame)
+  Eigen::Matrix3d metric; ///< W: the 3 x 3 weight of the residual r = posed vertex - target
 };
 
 /** \brief Gauss-Newton over (log s, rotation increment, t, m) for the cost
@@ -102,40 +111,60 @@ public:
    */
   PoseShapeLeastSquares (const MorphableModel& model, std::vector<int> slots, const PoseShapeSettings& settings);
 
-  /** \brief The model vertex of each slot. */
+  /** \brief The model vertex of each slot.
+   *  \return the model vertex indices, in slot order
+   */
   const std::vector<int>&
   slots () const
   {
     return slots_;
   }
 
-  /** \brief Prior standard deviations of the fitted coefficients. */
+  /** \brief Prior standard deviations of the fitted coefficients.
+   *  \return one sigma per selected component (empty for a similarity-only solver)
+   */
   const Eigen::VectorXd&
   sigma () const
   {
     return sigma_;
   }
 
+  /** \brief The unknowns and priors the solver was built with.
+   *  \return the validated settings
+   */
   const PoseShapeSettings&
   settings () const
   {
     return settings_;
   }
 
-  /** \brief The model-frame vertices of the slots for \a coefficients of the settings' components. */
+  /** \brief The model-frame vertices of the slots for \a coefficients of the settings' components.
+   *  \param[in] coefficients the stacked coefficients of the settings' components (mm)
+   *  \return mu + M m of each slot (3 x slots)
+   */
   Eigen::Matrix3Xd
   vertices (const Eigen::VectorXd& coefficients) const;
 
-  /** \brief A state at the similarity \a similarity with \a coefficients (stacked as the components). */
+  /** \brief A state at the similarity \a similarity with \a coefficients (stacked as the components).
+   *  \param[in] similarity the start [s R | t], model frame to data frame
+   *  \param[in] coefficients the start coefficients of the settings' components (mm)
+   *  \return the state, its slot vertices generated
+   */
   PoseShapeState
   state (const Eigen::Matrix4d& similarity, const Eigen::VectorXd& coefficients) const;
 
   /** \brief The cost of \a state for \a rows (weighted by \a inverse_scale2 when model_units; <= 0: from \a state).
+   *  \param[in] state the state evaluated
+   *  \param[in] rows the residual blocks
+   *  \param[in] inverse_scale2 1 / s^2 weighting the data rows with model_units (<= 0: taken from \a state)
+   *  \return the data term plus the priors' terms (mm^2 for mm data)
    */
   double
   cost (const PoseShapeState& state, const std::vector<PoseShapeRow>& rows, double inverse_scale2 = 0.0) const;
 
   /** \brief One update of \a state for fixed \a rows; the state is unchanged if no step length lowers the cost.
+   *  \param[in,out] state the state updated in place
+   *  \param[in] rows the residual blocks, fixed for the step
    *  \return false if the normal equations could not be solved
    */
   bool

@@ -35,18 +35,24 @@ enum class IcpDivergence
   unsolvable      ///< the normal equations could not be solved
 };
 
-/** \brief Lower-case name of \a termination (e.g. "transformation_converged"). */
+/** \brief Lower-case name of \a termination (e.g. "transformation_converged"), for reports and logs.
+ *  \param[in] termination the reason a run stopped
+ *  \return the enumerator's name
+ */
 std::string
 toString (IcpTermination termination);
 
-/** \brief Lower-case name of \a stage ("similarity" or "shape"). */
+/** \brief Lower-case name of \a stage ("similarity" or "shape"), for reports and logs.
+ *  \param[in] stage the fit stage
+ *  \return the enumerator's name
+ */
 std::string
 toString (IcpStage stage);
 
 /** \brief One Gauss-Newton iteration. */
 struct IcpIteration
 {
-  IcpStage stage;
+  IcpStage stage;      ///< the stage the iteration belongs to
   double error;        ///< mean squared distance (mm^2) over the accepted correspondences, before the update
   int correspondences; ///< correspondences found (before rejection)
   int kept;            ///< correspondences left after every rejector (landmarks not counted)
@@ -56,13 +62,13 @@ struct IcpIteration
 /** \brief The report of the last MorphableICP::align(). */
 struct IcpReport
 {
-  IcpTermination termination = IcpTermination::not_run;
+  IcpTermination termination = IcpTermination::not_run; ///< why the run stopped
   std::string message;              ///< human-readable detail (e.g. what diverged)
   IcpDivergence divergence = IcpDivergence::none; ///< what diverged, with IcpTermination::diverged
-  std::vector<IcpIteration> history;
-  int similarity_iterations = 0;
-  int shape_iterations = 0;
-  /** The similarity the iterations started from (the guess, the landmark, the coarse or the global start). */
+  std::vector<IcpIteration> history; ///< every iteration, in order
+  int similarity_iterations = 0;     ///< iterations of the similarity stage
+  int shape_iterations = 0;          ///< iterations of the shape stage
+  /** \brief The similarity the iterations started from (the guess, the landmark, the coarse or the global start). */
   Eigen::Matrix4d initial_transformation = Eigen::Matrix4d::Identity ();
   std::string initialisation;         ///< how it was found: "guess", "landmarks", "coarse" or "global"
   std::string initialisation_detail;  ///< for the global start: how it chose (GlobalAlignment::method)
@@ -70,12 +76,12 @@ struct IcpReport
   int head_points = -1;               ///< target points the global start found on the head (-1: not searched)
   std::string target_unit = "mm";     ///< the target's length unit (given or guessed); the fit ran in mm
   std::string target_unit_reason;     ///< why that unit: "given", or guessLengthUnit's sentence
-  /** Fit quality at the returned state: scan-to-model distances (mm, whatever the target's unit) over the accepted
-   *  correspondences. */
+  /** \brief Accepted correspondences at the returned state, over which the fitness figures below are taken
+   *  (scan-to-model distances in mm, whatever the target's unit). */
   int correspondences = 0;
-  double fitness_mean = 0.0;
-  double fitness_median = 0.0;
-  double fitness_rms = 0.0;
+  double fitness_mean = 0.0;   ///< mean scan-to-model distance (mm) at the returned state
+  double fitness_median = 0.0; ///< median scan-to-model distance (mm) at the returned state
+  double fitness_rms = 0.0;    ///< RMS scan-to-model distance (mm) at the returned state
 };
 
 } // namespace morphreg

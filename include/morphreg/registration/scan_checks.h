@@ -12,6 +12,8 @@ namespace morphreg
  *  head model: fewer than 100 points, a non-finite coordinate, all points identical, collinear, or flat (the
  *  smallest principal spread below 1e-3 of the largest: a head scan is three-dimensional). Each case has its own
  *  message with the numbers.
+ *  \param[in] points the scan points (3 x N)
+ *  \param[in] name what the points are (e.g. the file), for the message
  */
 void
 requireRegistrableScan (const Eigen::Matrix3Xd& points, const std::string& name);

@@ -1,8 +1,9 @@
 #pragma once
 /** \file surface_distance.h
- *  \brief How close a fitted model surface lies to a target surface without correspondence (issue 5's evaluation):
- *  area-uniform samples of the target, each to the closest point on the fitted surface (point-to-triangle),
- *  leaving out samples that only reach the fitted surface at its open boundary (target parts the model lacks).
+ *  \brief How close a fitted model surface lies to a target surface without known correspondence, the accuracy
+ *  measure for real targets: area-uniform samples of the target, each to the closest point on the fitted surface
+ *  (point-to-triangle), leaving out samples that only reach the fitted surface at its open boundary (target parts
+ *  the model lacks).
  */
 #include <morphreg/mesh/triangle_mesh.h>
 
@@ -26,16 +27,21 @@ struct SurfaceDistance
   std::vector<int> fitted_triangles; ///< per kept sample: the fitted triangle its closest point lies on
   int samples = 0;               ///< samples drawn (before dropping)
   int dropped_on_boundary = 0;   ///< samples whose closest fitted point lies on the fitted boundary
-  double mean = 0.0;
-  double median = 0.0;
-  double percentile95 = 0.0;
-  double rms = 0.0;
-  double max = 0.0;
+  double mean = 0.0;             ///< mean distance (mm) of the kept samples
+  double median = 0.0;           ///< median distance (mm)
+  double percentile95 = 0.0;     ///< 95th percentile of the distances (mm)
+  double rms = 0.0;              ///< root mean square distance (mm)
+  double max = 0.0;              ///< largest distance (mm)
 };
 
 /** \brief Samples \a target (without the triangles flagged in \a excluded_target, e.g. a scanner's closing cap)
  *  and measures each sample's distance to the closest point of \a fitted. Throws InvalidInputError for invalid
  *  meshes or settings, a wrongly sized \a excluded_target, or when no sample is left.
+ *  \param[in] target the surface sampled (mm)
+ *  \param[in] fitted the fitted model surface the samples are measured to (mm)
+ *  \param[in] excluded_target one flag per target triangle, true to leave it unsampled; or empty
+ *  \param[in] settings the sampling density, seed and boundary rule
+ *  \return the kept samples' distances (mm), the fitted triangle each lands on, and their statistics
  */
 SurfaceDistance
 surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
@@ -44,6 +50,10 @@ surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
 /** \brief The statistics of the kept samples whose closest point lies on a fitted triangle flagged in
  *  \a triangles (one flag per fitted triangle), e.g. the face of a head model; \a distance as surfaceDistance
  *  returned it. Throws InvalidInputError for a wrongly sized \a triangles or when no sample lands on them.
+ *  \param[in] distance a result of surfaceDistance on the same fitted mesh
+ *  \param[in] triangles one flag per fitted triangle, true for the part measured
+ *  \return the samples landing on the flagged triangles and their statistics (mm); samples and
+ *  dropped_on_boundary as in \a distance
  */
 SurfaceDistance
 surfaceDistanceOver (const SurfaceDistance& distance, const std::vector<bool>& triangles);

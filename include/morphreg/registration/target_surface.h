@@ -24,9 +24,9 @@ namespace morphreg
 class TargetSurface
 {
 public:
-  using Ptr = std::shared_ptr<TargetSurface>;
-  using ConstPtr = std::shared_ptr<const TargetSurface>;
-  /** The k nearest target points of target point \a index (its indices and squared distances). */
+  using Ptr = std::shared_ptr<TargetSurface>;            ///< shared pointer
+  using ConstPtr = std::shared_ptr<const TargetSurface>; ///< shared pointer to const
+  /** \brief The k nearest target points of target point \a index (its indices and squared distances). */
   using NeighbourSearch = std::function<void (pcl::index_t index, int k, pcl::Indices&, std::vector<float>&)>;
 
   /** \brief Sets the target and forgets what was computed.
@@ -37,10 +37,15 @@ public:
   void
   setInputTarget (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, NeighbourSearch search);
 
-  /** \brief The neighbourhood size k (>= 4; default 20); forgets what was computed when it changes. */
+  /** \brief The neighbourhood size k (>= 4; default 20); forgets what was computed when it changes.
+   *  \param[in] k the target points each plane is fitted to: more smooth more and flag fewer boundary points
+   */
   void
   setNeighbours (int k);
 
+  /** \brief The neighbourhood size k.
+   *  \return the target points each plane is fitted to
+   */
   int
   getNeighbours () const
   {
@@ -48,10 +53,15 @@ public:
   }
 
   /** \brief Project the points onto their neighbourhood's plane (default on); forgets what was computed when it
-   *  changes. */
+   *  changes.
+   *  \param[in] enabled true to average out scan noise, false to keep the raw points
+   */
   void
   setSmoothing (bool enabled);
 
+  /** \brief Whether the points are projected onto their neighbourhood's plane.
+   *  \return true if smoothing is on
+   */
   bool
   getSmoothing () const
   {
@@ -66,31 +76,46 @@ public:
   void
   compute (pcl::Correspondences& correspondences, const Eigen::Matrix3Xd& source);
 
-  /** \brief Computes the target points of \a correspondences not computed yet (distances untouched). */
+  /** \brief Computes the target points of \a correspondences not computed yet (distances untouched).
+   *  \param[in] correspondences the correspondences whose index_match points are needed
+   */
   void
   compute (const pcl::Correspondences& correspondences);
 
-  /** \brief The (smoothed) target point \a index; valid once computed. */
+  /** \brief The (smoothed) target point \a index; valid once computed.
+   *  \param[in] index the target point
+   *  \return its position, projected onto its plane when smoothing is on
+   */
   Eigen::Vector3d
   point (pcl::index_t index) const
   {
     return points_.col (index);
   }
 
-  /** \brief The unit normal of target point \a index; valid where hasNormal. */
+  /** \brief The unit normal of target point \a index; valid where hasNormal.
+   *  \param[in] index the target point
+   *  \return the given normal where valid, else its plane's normal
+   */
   Eigen::Vector3d
   normal (pcl::index_t index) const
   {
     return normals_.col (index);
   }
 
+  /** \brief Whether target point \a index has a finite normal (given or from its plane); valid once computed.
+   *  \param[in] index the target point
+   *  \return true if normal(index) may be used, e.g. for point-to-plane rows
+   */
   bool
   hasNormal (pcl::index_t index) const
   {
     return has_normal_[static_cast<size_t> (index)] != 0;
   }
 
-  /** \brief Whether target point \a index is a boundary point (or has no normal). */
+  /** \brief Whether target point \a index is a boundary point (or has no normal); valid once computed.
+   *  \param[in] index the target point
+   *  \return true if the point lies on a hole border, a scan edge or is isolated, so its pull is not trusted
+   */
   bool
   isBoundary (pcl::index_t index) const
   {
