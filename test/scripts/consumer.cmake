@@ -1,5 +1,42 @@
-# PackageTest: a tiny external project builds against the installed morphreg package.
-add_test(NAME PackageTest.ConsumerBuildsAgainstInstalledPackage
-  COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${CMAKE_BINARY_DIR} -DSOURCE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/consumer
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/consumer -P ${CMAKE_CURRENT_SOURCE_DIR}/consumer/run_consumer.cmake)
-set_tests_properties(PackageTest.ConsumerBuildsAgainstInstalledPackage PROPERTIES TIMEOUT 600)
+# PackageTest: morphreg is installed into a temporary prefix, then a tiny external project per component builds
+# against it (find_package(morphreg COMPONENTS <c>), linking morphreg::<c> alone) and runs; one more uses the whole
+# package (morphreg::morphreg). Only the visualization consumer may load VTK's rendering or pcl_visualization.
+set(consumer_dir ${CMAKE_CURRENT_BINARY_DIR}/consumer)
+set(consumer_script ${CMAKE_CURRENT_SOURCE_DIR}/consumer/run_consumer.cmake)
+set(rendering_libs "libvtkRendering[A-Za-z0-9]*-" "libpcl_visualization")
+add_test(NAME PackageTest.Install
+  COMMAND ${CMAKE_COMMAND} -DMODE=install -DBUILD_DIR=${CMAKE_BINARY_DIR} -DPREFIX=${consumer_dir}/prefix
+          -P ${consumer_script})
+set_tests_properties(PackageTest.Install PROPERTIES FIXTURES_SETUP morphreg_installed TIMEOUT 300)
+
+# package_consumer_test(<name> <component or ""> [REQUIRE_LIBS ...] [FORBID_LIBS ...] [RUN_PREFIX ...] [RUN_ARGS ...]):
+# see consumer/run_consumer.cmake.
+function(package_consumer_test name component)
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "REQUIRE_LIBS;FORBID_LIBS;RUN_PREFIX;RUN_ARGS")
+  set(definitions "-DCOMPONENT=${component}")
+  foreach(list REQUIRE_LIBS FORBID_LIBS RUN_PREFIX RUN_ARGS)
+    string(REPLACE ";" "$<SEMICOLON>" escaped "${arg_${list}}")
+    list(APPEND definitions "-D${list}=${escaped}")
+  endforeach()
+  add_test(NAME PackageTest.${name}
+    COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${CMAKE_CURRENT_SOURCE_DIR}/consumer -DPREFIX=${consumer_dir}/prefix
+            -DWORK_DIR=${consumer_dir}/${name} ${definitions} -P ${consumer_script})
+  set_tests_properties(PackageTest.${name} PROPERTIES FIXTURES_REQUIRED morphreg_installed TIMEOUT 600)
+endfunction()
+
+package_consumer_test(CoreConsumer core REQUIRE_LIBS "libmorphreg_core" "libpcl_registration"
+  FORBID_LIBS ${rendering_libs} "libmorphreg_(photo|synthetic|visualization)")
+package_consumer_test(PhotoConsumer photo REQUIRE_LIBS "libmorphreg_photo"
+  FORBID_LIBS ${rendering_libs} "libmorphreg_(synthetic|visualization)")
+package_consumer_test(SyntheticConsumer synthetic REQUIRE_LIBS "libmorphreg_synthetic"
+  FORBID_LIBS ${rendering_libs} "libmorphreg_visualization")
+find_program(XVFB_RUN xvfb-run)
+if(XVFB_RUN)
+  package_consumer_test(VisualizationConsumer visualization REQUIRE_LIBS "libmorphreg_visualization" "libvtkRenderingCore"
+    FORBID_LIBS "libmorphreg_(photo|synthetic)" RUN_PREFIX ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" RUN_ARGS --render)
+  set_tests_properties(PackageTest.VisualizationConsumer PROPERTIES RESOURCE_LOCK xvfb)
+else()
+  package_consumer_test(VisualizationConsumer visualization REQUIRE_LIBS "libmorphreg_visualization" "libvtkRenderingCore"
+    FORBID_LIBS "libmorphreg_(photo|synthetic)")
+endif()
+package_consumer_test(WholePackageConsumer "" REQUIRE_LIBS "libmorphreg_core" "libmorphreg_visualization")
