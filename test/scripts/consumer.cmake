@@ -9,8 +9,8 @@ add_test(NAME PackageTest.Install
           -P ${consumer_script})
 set_tests_properties(PackageTest.Install PROPERTIES FIXTURES_SETUP morphreg_installed TIMEOUT 300)
 
-# package_consumer_test(<name> <component or ""> [REQUIRE_LIBS ...] [FORBID_LIBS ...] [RUN_PREFIX ...] [RUN_ARGS ...]):
-# see consumer/run_consumer.cmake.
+# package_consumer_test(<name> <component or ""> [REQUIRE_LIBS ...] [FORBID_LIBS ...] [RUN_PREFIX ...]
+#                       [RUN_ARGS ...]): see consumer/run_consumer.cmake.
 function(package_consumer_test name component)
   cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "REQUIRE_LIBS;FORBID_LIBS;RUN_PREFIX;RUN_ARGS")
   set(definitions "-DCOMPONENT=${component}")
@@ -30,13 +30,13 @@ package_consumer_test(PhotoConsumer photo REQUIRE_LIBS "libmorphreg_photo"
   FORBID_LIBS ${rendering_libs} "libmorphreg_(synthetic|visualization)")
 package_consumer_test(SyntheticConsumer synthetic REQUIRE_LIBS "libmorphreg_synthetic"
   FORBID_LIBS ${rendering_libs} "libmorphreg_visualization")
+# The visualization consumer draws offscreen when a virtual X server is at hand.
 find_program(XVFB_RUN xvfb-run)
+set(render_arguments "")
 if(XVFB_RUN)
-  package_consumer_test(VisualizationConsumer visualization REQUIRE_LIBS "libmorphreg_visualization" "libvtkRenderingCore"
-    FORBID_LIBS "libmorphreg_(photo|synthetic)" RUN_PREFIX ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" RUN_ARGS --render)
-  set_tests_properties(PackageTest.VisualizationConsumer PROPERTIES RESOURCE_LOCK xvfb)
-else()
-  package_consumer_test(VisualizationConsumer visualization REQUIRE_LIBS "libmorphreg_visualization" "libvtkRenderingCore"
-    FORBID_LIBS "libmorphreg_(photo|synthetic)")
+  set(render_arguments RUN_PREFIX ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" RUN_ARGS --render)
 endif()
+package_consumer_test(VisualizationConsumer visualization
+  REQUIRE_LIBS "libmorphreg_visualization" "libvtkRenderingCore" FORBID_LIBS "libmorphreg_(photo|synthetic)" ${render_arguments})
+set_tests_properties(PackageTest.VisualizationConsumer PROPERTIES RESOURCE_LOCK xvfb)
 package_consumer_test(WholePackageConsumer "" REQUIRE_LIBS "libmorphreg_core" "libmorphreg_visualization")
