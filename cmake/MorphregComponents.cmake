@@ -13,7 +13,8 @@ function(morphreg_add_component name)
   set(target morphreg_${name})
   add_library(${target} SHARED ${sources})
   add_library(morphreg::${name} ALIAS ${target})
-  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name}
+  # Installed, each component finds the ones it needs next to itself.
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} INSTALL_RPATH "$ORIGIN"
     VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR})
   target_include_directories(${target} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>

@@ -2,7 +2,8 @@
 # MODE=install: installs morphreg's build tree BUILD_DIR into PREFIX.
 # MODE=consumer: configures and builds test/consumer (SOURCE_DIR) in WORK_DIR against PREFIX for COMPONENT (empty:
 # the whole package), runs it (with RUN_PREFIX before it, e.g. xvfb-run, and RUN_ARGS after), and checks the
-# libraries it loads (ldd): each of REQUIRE_LIBS must match one, none may match FORBID_LIBS.
+# libraries it loads (ldd): each of REQUIRE_LIBS must match one of them, none may match FORBID_LOADED, and its link
+# command may match none of FORBID_LINKED.
 function(run_step)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
@@ -27,13 +28,19 @@ message(STATUS "consumer (${COMPONENT}): ${step_output}")
 
 run_step(ldd "${WORK_DIR}/consumer")
 set(libraries "${step_output}")
+file(READ "${WORK_DIR}/CMakeFiles/consumer.dir/link.txt" link_command)
 foreach(pattern ${REQUIRE_LIBS})
   if(NOT libraries MATCHES "${pattern}")
     message(FATAL_ERROR "the ${COMPONENT} consumer does not load ${pattern}:\n${libraries}")
   endif()
 endforeach()
-foreach(pattern ${FORBID_LIBS})
+foreach(pattern ${FORBID_LOADED})
   if(libraries MATCHES "${pattern}")
     message(FATAL_ERROR "the ${COMPONENT} consumer loads ${pattern} (${CMAKE_MATCH_0}):\n${libraries}")
+  endif()
+endforeach()
+foreach(pattern ${FORBID_LINKED})
+  if(link_command MATCHES "${pattern}")
+    message(FATAL_ERROR "the ${COMPONENT} consumer links ${pattern} (${CMAKE_MATCH_0}):\n${link_command}")
   endif()
 endforeach()
