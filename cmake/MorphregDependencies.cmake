@@ -1,7 +1,8 @@
 # Dependencies, all from Debian's packages (scripts/install-deps.sh installs them).
 # Quirk of Debian's PCL/VTK: MPI must be found before PCL, or VTK's MPI target is missing.
 find_package(MPI QUIET COMPONENTS C)
-find_package(PCL 1.13 REQUIRED COMPONENTS common io kdtree search registration features surface visualization)
+find_package(PCL 1.13 REQUIRED COMPONENTS common io kdtree search registration visualization)
+include(morphregPclTargets)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(OpenMP REQUIRED COMPONENTS CXX)
 find_package(HDF5 REQUIRED COMPONENTS C CXX)

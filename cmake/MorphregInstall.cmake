@@ -1,16 +1,13 @@
-# install() rules and the exported CMake package: find_package(morphreg) + morphreg::morphreg.
+# install() rules and the exported CMake package: find_package(morphreg [COMPONENTS core photo synthetic
+# visualization]) defines morphreg::<component>; with no components, every one and morphreg::morphreg.
+# The components' export files are written by morphreg_add_component (cmake/MorphregComponents.cmake).
 include(CMakePackageConfigHelpers)
-set(MORPHREG_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/morphreg")
 
-install(TARGETS morphreg EXPORT morphregTargets
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY include/morphreg DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 if(TARGET morphreg_hdf5)
-  install(TARGETS morphreg_hdf5 EXPORT morphregTargets)
+  install(TARGETS morphreg_hdf5 EXPORT morphreg_coreTargets)
 endif()
+install(TARGETS morphreg EXPORT morphregTargets)
 install(EXPORT morphregTargets NAMESPACE morphreg:: DESTINATION ${MORPHREG_CMAKE_DIR})
 
 configure_package_config_file(cmake/morphregConfig.cmake.in
@@ -19,4 +16,5 @@ write_basic_package_version_file("${CMAKE_CURRENT_BINARY_DIR}/morphregConfigVers
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
 install(FILES "${CMAKE_CURRENT_BINARY_DIR}/morphregConfig.cmake"
               "${CMAKE_CURRENT_BINARY_DIR}/morphregConfigVersion.cmake"
+              "${CMAKE_CURRENT_SOURCE_DIR}/cmake/morphregPclTargets.cmake"
         DESTINATION ${MORPHREG_CMAKE_DIR})

@@ -1,5 +1,5 @@
-// Uses the installed morphreg: generate heads, build a global model, scan an unseen head and register the scan
-// behind a PCL rejector, as the README shows. Exit 0 on success.
+// The all-in-one package (find_package(morphreg), morphreg::morphreg): generate heads, build a global model, scan an
+// unseen head and register the scan behind a PCL rejector, as the README shows. Exit 0 on success.
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/model/model_builder.h>
 #include <morphreg/registration/morphable_icp.h>
