@@ -69,7 +69,8 @@ synthetic ()
     for (const auto& head : generator.population (kSamples, 1))
       p.meshes.push_back (head.mesh);
     for (int j = 0; j < morphreg::synthetic::kNumHeadRegions; ++j)
-      p.regions.names.push_back (morphreg::synthetic::headRegionName (static_cast<morphreg::synthetic::HeadRegion> (j)));
+      p.regions.names.push_back (
+          morphreg::synthetic::headRegionName (static_cast<morphreg::synthetic::HeadRegion> (j)));
     for (const auto label : generator.regionLabels ())
       p.regions.labels.push_back (static_cast<int> (label));
     p.centred = centredMatrix (p.meshes, false);
@@ -89,8 +90,8 @@ ict ()
     const auto model = morphreg::loadIctFaceKit (kIctDirectory);
     std::mt19937_64 rng (1);
     for (int s = 0; s < kSamples; ++s)
-      p.meshes.push_back (model->generateMesh (model->sampleCoefficients (rng, model->allComponents ()),
-                                               model->allComponents ()));
+      p.meshes.push_back (
+          model->generateMesh (model->sampleCoefficients (rng, model->allComponents ()), model->allComponents ()));
     p.regions = morphreg::segmentByLandmarkGroups (model->meanMesh (), morphreg::ictRegionGroups (*model));
     p.centred = centredMatrix (p.meshes, false);
     p.aligned_centred = centredMatrix (p.meshes, true);

@@ -100,7 +100,12 @@ BM_MorphableIcpAlign (benchmark::State& state)
   state.counters["ms_per_similarity_iteration"] = 1e3 * similarity / std::max (1, report.similarity_iterations);
   state.counters["ms_per_shape_iteration"] = 1e3 * shape / std::max (1, report.shape_iterations);
 }
-BENCHMARK (BM_MorphableIcpAlign)->ArgName ("coarse_start")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_MorphableIcpAlign)
+    ->ArgName ("coarse_start")
+    ->Arg (0)
+    ->Arg (1)
+    ->Unit (benchmark::kMillisecond)
+    ->UseRealTime ();
 
 } // namespace
 

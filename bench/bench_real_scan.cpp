@@ -40,10 +40,10 @@ fixture ()
   return f;
 }
 
-#define REQUIRE_DATA(state)                                                                                    \
-  if (!realScanDataAvailable ()) {                                                                             \
-    state.SkipWithError ("../shared/data (real head scan, ICT-FaceKit) is absent");                           \
-    return;                                                                                                    \
+#define REQUIRE_DATA(state)                                                                                            \
+  if (!realScanDataAvailable ()) {                                                                                     \
+    state.SkipWithError ("../shared/data (real head scan, ICT-FaceKit) is absent");                                    \
+    return;                                                                                                            \
   }
 
 /** The baseline: PCL's rigid ICP of the posed cloud back onto the original, from the true pose. */

@@ -101,8 +101,8 @@ BM_EvaluateMorphreg (benchmark::State& state)
     const Eigen::Matrix3Xd warped = tps.evaluate (queries);
     benchmark::DoNotOptimize (warped.data ());
   }
-  state.counters["pairs/s"] =
-      benchmark::Counter (double (state.range (0)) * double (state.range (1)), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["pairs/s"] = benchmark::Counter (double (state.range (0)) * double (state.range (1)),
+                                                  benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void
@@ -120,22 +120,36 @@ BM_EvaluateVtk (benchmark::State& state)
     transform->TransformPoints (queries, warped);
     benchmark::DoNotOptimize (warped->GetPoint (0));
   }
-  state.counters["pairs/s"] =
-      benchmark::Counter (double (state.range (0)) * double (state.range (1)), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["pairs/s"] = benchmark::Counter (double (state.range (0)) * double (state.range (1)),
+                                                  benchmark::Counter::kIsIterationInvariantRate);
 }
 } // namespace
 
-BENCHMARK (BM_FitMorphreg)->Arg (66)->Arg (500)->Arg (1000)->Arg (2000)->Arg (5000)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_FitMorphreg)
+    ->Arg (66)
+    ->Arg (500)
+    ->Arg (1000)
+    ->Arg (2000)
+    ->Arg (5000)
+    ->Unit (benchmark::kMillisecond)
+    ->UseRealTime ();
 BENCHMARK (BM_FitVtk)->Arg (66)->Unit (benchmark::kMillisecond)->UseRealTime ();
 BENCHMARK (BM_FitVtk)->Arg (500)->Arg (1000)->Iterations (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
 BENCHMARK (BM_EvaluateMorphreg)
     ->ArgsProduct ({{66, 500, 1000}, {16384, 1 << 20}})
-    ->Unit (benchmark::kMillisecond)->UseRealTime ();
-BENCHMARK (BM_EvaluateVtk)->Args ({66, 16384})->Args ({500, 16384})->Args ({1000, 16384})->Unit (benchmark::kMillisecond)->UseRealTime ();
+    ->Unit (benchmark::kMillisecond)
+    ->UseRealTime ();
+BENCHMARK (BM_EvaluateVtk)
+    ->Args ({66, 16384})
+    ->Args ({500, 16384})
+    ->Args ({1000, 16384})
+    ->Unit (benchmark::kMillisecond)
+    ->UseRealTime ();
 BENCHMARK (BM_EvaluateVtk)
     ->Args ({66, 1 << 20})
     ->Args ({500, 1 << 20})
     ->Args ({1000, 1 << 20})
     ->Iterations (1)
-    ->Unit (benchmark::kMillisecond)->UseRealTime ();
+    ->Unit (benchmark::kMillisecond)
+    ->UseRealTime ();
 BENCHMARK_MAIN ();

@@ -32,8 +32,7 @@ printVariance (const std::string& name, std::size_t vertices, const Eigen::Vecto
   const Eigen::Index k = variances.size ();
   std::printf ("%-12s %6zu vertices  %3ld components  first %5.1f %%  first 5 %5.1f %%  95 %% with %d\n", name.c_str (),
                vertices, static_cast<long> (k), 100.0 * explained[0],
-               100.0 * explained[std::min<Eigen::Index> (4, k - 1)],
-               morphreg::componentsToKeep (variances, 0, 0.95));
+               100.0 * explained[std::min<Eigen::Index> (4, k - 1)], morphreg::componentsToKeep (variances, 0, 0.95));
 }
 
 void
@@ -54,8 +53,8 @@ buildModel (int argc, char** argv)
   std::printf ("%zu training meshes of %ld vertices\n", meshes.size (), static_cast<long> (meshes[0].numVertices ()));
 
   const morphreg::ModelBuilder builder; // Procrustes alignment, two blending rings, every component kept
-  const bool head_topology = meshes[0].triangles.cols () == generator.triangles ().cols () &&
-                             meshes[0].triangles == generator.triangles ();
+  const bool head_topology =
+      meshes[0].triangles.cols () == generator.triangles ().cols () && meshes[0].triangles == generator.triangles ();
   const morphreg::MorphableModel::Ptr model =
       head_topology ? builder.build (meshes, generator.regions ()) : builder.buildGlobal (meshes);
   if (head_topology) {

@@ -96,9 +96,16 @@ fitSyntheticPhotos (const morphreg::synthetic::HeadGenerator& generator, int hea
 void
 fitPhotos (int argc, char** argv)
 {
-  const samples::Options options (argc, argv, {{"--profile", ""}, {"--frontal", ""}, {"--model", ""},
-                                               {"--out", "fitted.ply"}, {"--report", ""}, {"--scale", "5"},
-                                               {"--heads", "30"}, {"--approach", "joint"}, {"--photo", ""}});
+  const samples::Options options (argc, argv,
+                                  {{"--profile", ""},
+                                   {"--frontal", ""},
+                                   {"--model", ""},
+                                   {"--out", "fitted.ply"},
+                                   {"--report", ""},
+                                   {"--scale", "5"},
+                                   {"--heads", "30"},
+                                   {"--approach", "joint"},
+                                   {"--photo", ""}});
   const std::string approach = options.text ("--approach");
   if (approach != "joint" && approach != "tps")
     throw samples::UsageError ("--approach is joint or tps, got '" + approach + "'");
@@ -120,9 +127,9 @@ fitPhotos (int argc, char** argv)
     const morphreg::MorphableModel::ConstPtr model = morphreg::loadModel (options.text ("--model"));
     fit = fitFiles (morphreg::TwoViewFitting (model), approach, options.text ("--profile"), options.text ("--frontal"));
     if (!options.text ("--photo").empty ()) {
-      const morphreg::VertexTexture texture =
-          morphreg::frontalTexture (fit.image_mesh, morphreg::loadFrontalView (options.text ("--frontal")).normalisation (),
-                                    morphreg::loadRgbImage (options.text ("--photo")));
+      const morphreg::VertexTexture texture = morphreg::frontalTexture (
+          fit.image_mesh, morphreg::loadFrontalView (options.text ("--frontal")).normalisation (),
+          morphreg::loadRgbImage (options.text ("--photo")));
       std::printf ("texture: %d of %ld vertices seen in %s\n", texture.visibleCount (),
                    static_cast<long> (fit.image_mesh.numVertices ()), options.text ("--photo").c_str ());
       colours = texture.colours;
@@ -137,8 +144,8 @@ fitPhotos (int argc, char** argv)
   }
   const morphreg::TwoViewIteration& final_residuals = fit.final_residuals;
   std::printf ("fit (%s): %zu iterations; profile RMS %.3f mm over %d profile-line vertices, landmark RMS %.3f mm\n",
-               approach.c_str (), fit.history.size (), final_residuals.profile_rms, final_residuals.profile_correspondences,
-               final_residuals.landmark_rms);
+               approach.c_str (), fit.history.size (), final_residuals.profile_rms,
+               final_residuals.profile_correspondences, final_residuals.landmark_rms);
   if (colours.size () > 0) {
     morphreg::savePolygonMesh (out, morphreg::toPolygonMesh (fit.model_mesh, colours));
     if (from_files)

@@ -26,8 +26,8 @@ const char* const kUsage = "usage: sample_live_viewer [--frames DIR] [--iteratio
 void
 liveViewer (int argc, char** argv)
 {
-  const samples::Options options (argc, argv, {{"--frames", ""}, {"--iterations", "30"}, {"--width", "800"},
-                                               {"--height", "600"}});
+  const samples::Options options (argc, argv,
+                                  {{"--frames", ""}, {"--iterations", "30"}, {"--width", "800"}, {"--height", "600"}});
   const std::string frames = options.text ("--frames");
   const int width = options.integer ("--width", 16), height = options.integer ("--height", 16);
   const int iterations = options.integer ("--iterations", 1);
@@ -70,8 +70,9 @@ liveViewer (int argc, char** argv)
   const morphreg::IcpReport& report = icp.getRegistrationReport ();
   const double rms = std::sqrt ((icp.getFittedVertices () - unseen.truth).colwise ().squaredNorm ().mean ());
   std::printf ("scan of %zu points: %zu iterations (%s), fitness RMS %.3f mm, error against the true head RMS "
-               "%.3f mm\n", unseen.scan.cloud->size (), report.history.size (),
-               morphreg::toString (report.termination).c_str (), report.fitness_rms, rms);
+               "%.3f mm\n",
+               unseen.scan.cloud->size (), report.history.size (), morphreg::toString (report.termination).c_str (),
+               report.fitness_rms, rms);
   if (!frames.empty ()) {
     std::printf ("wrote %d frames (%dx%d) to %s\n", written, width, height, frames.c_str ());
     return;

@@ -37,8 +37,13 @@ const char* const kUsage =
 void
 registerScan (int argc, char** argv)
 {
-  const samples::Options options (argc, argv, {{"--scan", ""}, {"--model", ""}, {"--out", "fitted.ply"},
-                                               {"--iterations", "40"}, {"--scale", "3"}, {"--heads", "30"}},
+  const samples::Options options (argc, argv,
+                                  {{"--scan", ""},
+                                   {"--model", ""},
+                                   {"--out", "fitted.ply"},
+                                   {"--iterations", "40"},
+                                   {"--scale", "3"},
+                                   {"--heads", "30"}},
                                   {"--no-rejectors"});
   if (options.text ("--scan").empty () != options.text ("--model").empty ())
     throw samples::UsageError ("--scan and --model go together");
@@ -85,8 +90,7 @@ registerScan (int argc, char** argv)
   const morphreg::IcpReport& report = icp.getRegistrationReport ();
   const Eigen::Matrix4d transform = icp.getFinalTransformation ().cast<double> ();
   std::printf ("termination: %s after %d similarity + %d shape iterations\n",
-               morphreg::toString (report.termination).c_str (), report.similarity_iterations,
-               report.shape_iterations);
+               morphreg::toString (report.termination).c_str (), report.similarity_iterations, report.shape_iterations);
   std::printf ("scale %.4f, %d correspondences kept of %d found in the last iteration\n",
                std::cbrt (transform.topLeftCorner<3, 3> ().determinant ()), report.history.back ().kept,
                report.history.back ().correspondences);
@@ -96,7 +100,8 @@ registerScan (int argc, char** argv)
     const Eigen::VectorXd error = (icp.getFittedVertices () - unseen->truth).colwise ().norm ().transpose ();
     const Eigen::ArrayXd seen = icp.getVertexResiduals ().array ().isFinite ().cast<double> ();
     std::printf ("error against the true head: RMS %.3f mm (max %.3f mm) over all vertices, RMS %.3f mm over the "
-                 "%d the scan saw\n", std::sqrt (error.squaredNorm () / error.size ()), error.maxCoeff (),
+                 "%d the scan saw\n",
+                 std::sqrt (error.squaredNorm () / error.size ()), error.maxCoeff (),
                  std::sqrt ((error.array ().square () * seen).sum () / seen.sum ()), static_cast<int> (seen.sum ()));
   }
 

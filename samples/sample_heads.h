@@ -29,8 +29,7 @@ buildHeadModel (const synthetic::HeadGenerator& generator, int count, int compon
 {
   morphreg::ModelBuilderSettings settings;
   settings.max_components = components;
-  auto model =
-      morphreg::ModelBuilder (settings).build (populationMeshes (generator, count, 1), generator.regions ());
+  auto model = morphreg::ModelBuilder (settings).build (populationMeshes (generator, count, 1), generator.regions ());
   model->setLandmarks (generator.landmarks ());
   model->setProfileLine (generator.profileLine ());
   return model;

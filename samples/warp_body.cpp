@@ -44,8 +44,8 @@ report (const morphreg::MakeHumanBodies& bodies, const WarpCase& c, const std::s
         const TriangleMesh& warped, const std::string& out)
 {
   const morphreg::WarpQuality q = morphreg::evaluateWarp (warped, c.truth, bodies.segmentLabels (), 100.0, &c.source);
-  std::printf ("%-42s %-8s mean %6.2f mm  max %6.1f mm  seam %.3f  band %.3f  folded near seams %d\n",
-               c.name.c_str (), method.c_str (), q.mean_error, q.max_error, q.seam, q.band, q.folded_in_band);
+  std::printf ("%-42s %-8s mean %6.2f mm  max %6.1f mm  seam %.3f  band %.3f  folded near seams %d\n", c.name.c_str (),
+               method.c_str (), q.mean_error, q.max_error, q.seam, q.band, q.folded_in_band);
   const Eigen::VectorXd error = (warped.vertices - c.truth.vertices).colwise ().norm ().transpose ();
   const std::string file = out + "/" + c.file_stem + "_" + method + ".ply";
   morphreg::savePolygonMesh (file, morphreg::toPolygonMesh (warped, morphreg::residualColours (error, 30.0)));
@@ -96,7 +96,9 @@ warpBodies (int argc, char** argv)
   if (!options.text ("--subject").empty ())
     subjects = {options.text ("--subject")};
   for (const auto& subject : subjects) {
-    WarpCase c{subject + " standing->seated", subject + "_seated", bodies.loadMesh (subject, BodyPose::standing),
+    WarpCase c{subject + " standing->seated",
+               subject + "_seated",
+               bodies.loadMesh (subject, BodyPose::standing),
                bodies.loadMesh (subject, BodyPose::seated),
                bodies.joints (subject, BodyPose::standing, bodies.majorJoints ()),
                bodies.joints (subject, BodyPose::seated, bodies.majorJoints ())};
@@ -111,8 +113,10 @@ warpBodies (int argc, char** argv)
   for (const auto& subject : subjects) {
     if (subject == "base")
       continue;
-    const WarpCase c{"base->" + subject + " (" + std::to_string (joints.size ()) + " joints)", "base_to_" + subject,
-                     bodies.loadMesh ("base", BodyPose::standing), bodies.loadMesh (subject, BodyPose::standing),
+    const WarpCase c{"base->" + subject + " (" + std::to_string (joints.size ()) + " joints)",
+                     "base_to_" + subject,
+                     bodies.loadMesh ("base", BodyPose::standing),
+                     bodies.loadMesh (subject, BodyPose::standing),
                      bodies.joints ("base", BodyPose::standing, joints),
                      bodies.joints (subject, BodyPose::standing, joints)};
     // Between subjects the trunk segments follow every joint and each arm only its own (see the test).

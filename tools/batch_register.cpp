@@ -127,9 +127,9 @@ public:
     const double rate = finished / std::max (minutes, 1e-9);
     const long eta = std::lround ((total_ - finished) / std::max (rate, 1e-9) * 60.0);
     std::cerr << "\rregistering [" << finished << '/' << total_ << "] " << ok_ << " ok, " << failed_ << " failed, "
-              << std::fixed << std::setprecision (1) << rate << " scans/min, ETA " << eta / 3600 << ':'
-              << std::setw (2) << std::setfill ('0') << eta / 60 % 60 << ':' << std::setw (2) << eta % 60
-              << std::setfill (' ') << std::defaultfloat << "    " << std::flush;
+              << std::fixed << std::setprecision (1) << rate << " scans/min, ETA " << eta / 3600 << ':' << std::setw (2)
+              << std::setfill ('0') << eta / 60 % 60 << ':' << std::setw (2) << eta % 60 << std::setfill (' ')
+              << std::defaultfloat << "    " << std::flush;
   }
 
   void
@@ -153,7 +153,7 @@ registerTask (const Task& task, const MorphableModel::Ptr& model)
   const auto start = Clock::now ();
   for (const std::string& output : {task.options.out, reportPath (task.options)})
     std::remove (partialPath (output).c_str ()); // left by a run killed mid-write
-  std::ostringstream log; // per-scan chatter would interleave between threads
+  std::ostringstream log;                        // per-scan chatter would interleave between threads
   try {
     return registerScan (task.options, model, nullptr, 0.0, log, log);
   }
@@ -176,8 +176,7 @@ registerTask (const Task& task, const MorphableModel::Ptr& model)
  *  Returns each task's report (null for one not started).
  */
 std::vector<nlohmann::json>
-runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int jobs, int threads_per_fit,
-          bool quiet)
+runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int jobs, int threads_per_fit, bool quiet)
 {
   std::vector<nlohmann::json> reports (tasks.size ());
   std::atomic<std::size_t> next{0};
@@ -205,14 +204,22 @@ addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batc
       "--scans", options.scans,
       "batch mode: a folder of scans (each with <name>_landmarks.json/.pp/.csv/.pts if present) or a manifest CSV "
       "(rows scan[,landmarks[,id]])");
-  command->add_option ("--out-dir", batch.out_dir, "batch mode: folder of the outputs <id>.ply, <id>.json and "
-                                                   "summary.csv / summary.json")
+  command
+      ->add_option ("--out-dir", batch.out_dir,
+                    "batch mode: folder of the outputs <id>.ply, <id>.json and "
+                    "summary.csv / summary.json")
       ->needs (scans);
-  command->add_option ("--jobs", batch.jobs, "batch mode: scans registered at once (0: one per core; each fit "
-                                             "gets cores/jobs threads)")
-      ->check (CLI::Range (0, 4096))->needs (scans)->capture_default_str ();
-  command->add_option ("--shard", batch.shard, "batch mode: take share I of N of the scans (I/N, 0-based), or "
-                                               "auto from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT")
+  command
+      ->add_option ("--jobs", batch.jobs,
+                    "batch mode: scans registered at once (0: one per core; each fit "
+                    "gets cores/jobs threads)")
+      ->check (CLI::Range (0, 4096))
+      ->needs (scans)
+      ->capture_default_str ();
+  command
+      ->add_option ("--shard", batch.shard,
+                    "batch mode: take share I of N of the scans (I/N, 0-based), or "
+                    "auto from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT")
       ->needs (scans);
   command->add_flag ("--retry-failed", batch.retry_failed, "batch mode: register again the scans that failed")
       ->needs (scans);
@@ -265,9 +272,9 @@ pendingTasks (const ScanManifest& scans, const RegisterOptions& options, const B
 std::string
 summaryBase (const BatchOptions& batch, const Shard& shard)
 {
-  const std::string name = shard.count > 1 ? "summary.shard-" + std::to_string (shard.index) + "-of-" +
-                                                 std::to_string (shard.count)
-                                           : std::string ("summary");
+  const std::string name = shard.count > 1
+                               ? "summary.shard-" + std::to_string (shard.index) + "-of-" + std::to_string (shard.count)
+                               : std::string ("summary");
   return (fs::path (batch.out_dir) / name).string ();
 }
 

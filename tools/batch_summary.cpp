@@ -38,8 +38,9 @@ struct FieldPointers
 };
 
 /** In a register report (or the failure record of a scan that threw). */
-const FieldPointers kReportFields = {"/status",          "/residuals_mm/scan_to_model/rms", "/iterations/total",
-                                     "/timings_s/total", "/timings_s/fit",                  "/failure"};
+const FieldPointers kReportFields = {"/status",           "/residuals_mm/scan_to_model/rms",
+                                     "/iterations/total", "/timings_s/total",
+                                     "/timings_s/fit",    "/failure"};
 /** In a row of summary.json. */
 const FieldPointers kSummaryFields = {"/status", "/rms_mm", "/iterations", "/seconds", "/fit_seconds", "/reason"};
 
@@ -133,9 +134,8 @@ void
 writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard)
 {
   std::sort (rows.begin (), rows.end (), [] (const ScanSummary& a, const ScanSummary& b) { return a.id < b.id; });
-  writeAtomically (base + ".json", [&] (const std::string& partial) {
-    writeJsonFile (partial, summaryJson (rows, shard));
-  });
+  writeAtomically (base + ".json",
+                   [&] (const std::string& partial) { writeJsonFile (partial, summaryJson (rows, shard)); });
   writeAtomically (base + ".csv", [&] (const std::string& partial) {
     std::ofstream stream (partial, std::ios::trunc);
     stream << csvText (rows);

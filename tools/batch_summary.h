@@ -19,7 +19,7 @@ struct ScanSummary
   int iterations = -1;
   double seconds = std::numeric_limits<double>::quiet_NaN ();     ///< the scan's whole registration
   double fit_seconds = std::numeric_limits<double>::quiet_NaN (); ///< the fit alone
-  std::string reason; ///< why it failed
+  std::string reason;                                             ///< why it failed
 };
 
 /** The summary line of a register report (or of the failure record written for a scan that threw). */

@@ -49,8 +49,10 @@ readMeshFolder (const std::string& directory)
         folder.profile_line = manifest.at ("profile_line").get<std::vector<int>> ();
     }
     catch (const nlohmann::json::exception& e) {
-      throw FormatError (manifest_path + ": expected {\"heads\": [{\"file\": mesh file}, ...], \"profile_line\": "
-                         "[vertex, ...]} (" + e.what () + ")");
+      throw FormatError (manifest_path +
+                         ": expected {\"heads\": [{\"file\": mesh file}, ...], \"profile_line\": "
+                         "[vertex, ...]} (" +
+                         e.what () + ")");
     }
     return folder;
   }
@@ -122,7 +124,8 @@ buildFromIct (const BuildModelOptions& options, nlohmann::json& summary)
     std::cerr << "loading the ICT-FaceKit model from " << options.ict_directory << " and sampling "
               << options.ict_samples << " heads\n";
   const MorphableModel::Ptr ict = loadIctFaceKit (options.ict_directory);
-  summary["source"] = {{"ict_facekit", options.ict_directory}, {"samples", options.ict_samples}, {"seed", options.seed}};
+  summary["source"] = {
+      {"ict_facekit", options.ict_directory}, {"samples", options.ict_samples}, {"seed", options.seed}};
   return buildIctRegionModel (*ict, options.ict_samples, options.seed, options.settings);
 }
 
@@ -131,8 +134,8 @@ runBuildModel (const BuildModelOptions& options)
 {
   const nlohmann::json summary = buildModelFile (options);
   std::cout << "wrote " << options.out << ": " << summary["vertices"] << " vertices, " << summary["regions"].size ()
-            << " region(s), components per region " << summary["components"].dump () << ", "
-            << summary["landmarks"] << " landmarks (" << summary["seconds"] << " s)\n";
+            << " region(s), components per region " << summary["components"].dump () << ", " << summary["landmarks"]
+            << " landmarks (" << summary["seconds"] << " s)\n";
 }
 } // namespace
 
@@ -165,14 +168,18 @@ buildModelFile (const BuildModelOptions& options)
 void
 addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
 {
-  command->add_option ("--components", settings.max_components,
-                       "at most this many components per region (0 = no limit)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--variance", settings.explained_variance,
-                       "keep the fewest components explaining this fraction of each region's variance")
-      ->check (CLI::Range (1e-6, 1.0))->capture_default_str ();
+  command
+      ->add_option ("--components", settings.max_components, "at most this many components per region (0 = no limit)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--variance", settings.explained_variance,
+                    "keep the fewest components explaining this fraction of each region's variance")
+      ->check (CLI::Range (1e-6, 1.0))
+      ->capture_default_str ();
   command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
 }
 
@@ -180,18 +187,21 @@ void
 registerBuildModelCommand (CLI::App& app)
 {
   auto options = std::make_shared<BuildModelOptions> ();
-  CLI::App* command = app.add_subcommand ("build-model", "build a (multi-region) PCA model from meshes in correspondence");
+  CLI::App* command =
+      app.add_subcommand ("build-model", "build a (multi-region) PCA model from meshes in correspondence");
   auto* meshes = command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable");
   auto* directory = command->add_option ("-d,--dir", options->directory,
                                          "folder of meshes (the heads of its population.json if present)");
-  command->add_option ("--regions", options->regions,
-                       "region per vertex, JSON {\"regions\": [names], \"labels\": [...]} (default: one global region)");
+  command->add_option (
+      "--regions", options->regions,
+      "region per vertex, JSON {\"regions\": [names], \"labels\": [...]} (default: one global region)");
   command->add_option ("--landmark-vertices", options->landmark_vertices,
                        "landmark vertices, JSON {\"landmark_vertices\": {\"nose_tip\": 123, ...}}");
   auto* ict = command->add_option ("--from-ict", options->ict_directory,
                                    "build the 7-region model from the ICT-FaceKit folder instead of meshes");
   command->add_option ("--samples", options->ict_samples, "heads drawn from the ICT model (with --from-ict)")
-      ->check (CLI::Range (2, 100000))->capture_default_str ();
+      ->check (CLI::Range (2, 100000))
+      ->capture_default_str ();
   command->add_option ("--seed", options->seed, "seed of the ICT samples")->capture_default_str ();
   command->add_option ("-o,--out", options->out, "model file to write (HDF5, statismo layout)")->capture_default_str ();
   addModelBuilderOptions (command, options->settings);

@@ -101,15 +101,18 @@ void
 registerDemoCommand (CLI::App& app)
 {
   auto options = std::make_shared<DemoOptions> ();
-  CLI::App* command = app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out");
+  CLI::App* command =
+      app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out");
   command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
-  command->add_option ("-n,--count", options->count, "population size")->check (CLI::Range (2, 5000))
+  command->add_option ("-n,--count", options->count, "population size")
+      ->check (CLI::Range (2, 5000))
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "population seed")->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
       ->capture_default_str ();
   command->add_option ("--model-components", options->model_components, "components per region kept in the model")
-      ->check (CLI::PositiveNumber)->capture_default_str ();
+      ->check (CLI::PositiveNumber)
+      ->capture_default_str ();
   command->add_flag ("--no-screenshot{false}", options->screenshot, "skip the PNG overlay (runs without X)");
   command->add_flag ("--use-landmarks", options->use_landmarks,
                      "start the registration from the scan's true landmarks instead of the coarse alignment");

@@ -73,7 +73,8 @@ loadPhotoTruth (const std::string& path)
   if (pose.size () != 16)
     throw FormatError (path + ": head_to_photo has " + std::to_string (pose.size ()) + " numbers, not 16");
   truth.head_to_photo = Eigen::Map<const Eigen::Matrix4d> (pose.data ());
-  if (!truth.head_to_photo.allFinite () || !(std::abs (truth.head_to_photo.topLeftCorner<3, 3> ().determinant ()) > 0.0))
+  if (!truth.head_to_photo.allFinite () ||
+      !(std::abs (truth.head_to_photo.topLeftCorner<3, 3> ().determinant ()) > 0.0))
     throw FormatError (path + ": head_to_photo is not an invertible similarity");
   truth.head = loadTriangleMesh ((std::filesystem::path (path).parent_path () / head_file).string ());
   return truth;
@@ -108,10 +109,10 @@ fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model
 {
   if (model->profileLine ().empty ())
     throw InvalidInputError (options.model + ": the model has no profile line; build it with `build-model --dir` on "
-                             "the output of synth or demo (their population.json holds it)");
+                                             "the output of synth or demo (their population.json holds it)");
   TwoViewFitting fitting (model);
   fitting.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
-                                                                  : model->firstComponents (options.components));
+                                                                 : model->firstComponents (options.components));
   fitting.setSmoothnessWeight (options.lambda1);
   fitting.setShapePriorWeight (options.lambda2);
   fitting.setCoefficientLimit (options.coefficient_limit);
@@ -164,10 +165,11 @@ settingsJson (const FitPhotosOptions& options)
 void
 printFitSummary (const FitPhotosOptions& options, const TwoViewFit& fit, bool with_frontal)
 {
-  std::cout << "fit (" << options.approach << (fit.returned == options.approach || fit.returned == "tps_icp"
-                                                     ? std::string ()
-                                                     : ", returned the " + fit.returned + " fit: no TPS-ICP round "
-                                                       "lowered the image error")
+  std::cout << "fit (" << options.approach
+            << (fit.returned == options.approach || fit.returned == "tps_icp" ? std::string ()
+                                                                              : ", returned the " + fit.returned +
+                                                                                    " fit: no TPS-ICP round "
+                                                                                    "lowered the image error")
             << "): " << fit.history.size () << " iterations, profile RMS " << fit.final_residuals.profile_rms
             << " mm over " << fit.final_residuals.profile_correspondences << " profile-line vertices";
   if (with_frontal)
@@ -242,34 +244,50 @@ registerFitPhotosCommand (CLI::App& app)
       ->required ();
   command->add_option ("--frontal", options->frontal,
                        "frontal annotation (JSON: named landmarks, pixels); needed by --approach joint and tps");
-  command->add_option ("-m,--model", options->model, "model file with a profile line and landmarks (HDF5)")->required ();
-  command->add_option ("--approach", options->approach,
-                       "joint (one Gauss-Newton over both photos), tps (TPS-ICP) or profile (the silhouette alone)")
-      ->check (CLI::IsMember ({"joint", "tps", "profile"}))->capture_default_str ();
+  command->add_option ("-m,--model", options->model, "model file with a profile line and landmarks (HDF5)")
+      ->required ();
+  command
+      ->add_option ("--approach", options->approach,
+                    "joint (one Gauss-Newton over both photos), tps (TPS-ICP) or profile (the silhouette alone)")
+      ->check (CLI::IsMember ({"joint", "tps", "profile"}))
+      ->capture_default_str ();
   command->add_option ("--photo", options->photo, "frontal photo (PNG/JPEG): colour the fitted head from it");
   command->add_option ("--truth", options->truth,
                        "true head and pose (JSON of `synth --photos`): report the fit's error, colour by it");
   command->add_option ("--smoothness", options->lambda1, "lambda_1, the smoothness prior across regions (> 0)")
-      ->check (CLI::PositiveNumber)->capture_default_str ();
-  command->add_option ("--shape-prior", options->lambda2,
-                       "lambda_2, the shape prior (coefficients in prior standard deviations, >= 0)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--components", options->components,
-                       "shape components per region: one count for all, or one per region")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--coefficient-limit", options->coefficient_limit,
-                       "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
-      ->check (CLI::PositiveNumber)->capture_default_str ();
+      ->check (CLI::PositiveNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--shape-prior", options->lambda2,
+                    "lambda_2, the shape prior (coefficients in prior standard deviations, >= 0)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--components", options->components,
+                    "shape components per region: one count for all, or one per region")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--coefficient-limit", options->coefficient_limit,
+                    "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
+      ->check (CLI::PositiveNumber)
+      ->capture_default_str ();
   command->add_option ("--frontal-weight", options->frontal_weight, "weight of each frontal landmark's rows (> 0)")
-      ->check (CLI::PositiveNumber)->capture_default_str ();
-  command->add_option ("--contour-weight", options->contour_weight,
-                       "weight of the frontal outline landmarks (jaw, chin, neck, head contour; 0 leaves them out)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--sagittal-weight", options->sagittal_weight,
-                       "weight of the rows that keep the profile in the plane X = 0 (0 for a turned or tilted head)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+      ->check (CLI::PositiveNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--contour-weight", options->contour_weight,
+                    "weight of the frontal outline landmarks (jaw, chin, neck, head contour; 0 leaves them out)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--sagittal-weight", options->sagittal_weight,
+                    "weight of the rows that keep the profile in the plane X = 0 (0 for a turned or tilted head)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command->add_option ("--colour-max", options->colour_max, "error (mm) at the top of the colour scale with --truth")
-      ->check (CLI::PositiveNumber)->capture_default_str ();
+      ->check (CLI::PositiveNumber)
+      ->capture_default_str ();
   command->add_option ("-o,--out", options->out, "fitted head to write (PLY, model frame, mm)")->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write");
   command->add_flag ("-q,--quiet", options->quiet, "less output");

@@ -86,7 +86,8 @@ runMerge (const MergeOptions& options)
   const std::vector<ScanSummary> rows = mergeShards (files);
   const std::string base = (fs::path (options.out_dir) / "summary").string ();
   writeSummary (base, rows, "all");
-  const auto failed = std::count_if (rows.begin (), rows.end (), [] (const ScanSummary& r) { return r.status != "ok"; });
+  const auto failed =
+      std::count_if (rows.begin (), rows.end (), [] (const ScanSummary& r) { return r.status != "ok"; });
   std::cout << "merged " << files.size () << " shard summaries: " << rows.size () << " scans, " << failed
             << " not ok; wrote " << base << ".csv and " << base << ".json\n";
 }
@@ -98,11 +99,14 @@ registerMergeSummariesCommand (CLI::App& app)
   auto options = std::make_shared<MergeOptions> ();
   CLI::App* command = app.add_subcommand ("merge-summaries", "combine the shard summaries of register --scans "
                                                              "--shard into one summary.csv / summary.json");
-  command->add_option ("--out-dir", options->out_dir, "folder of the merged summary (and, without files, of the "
-                                                      "shard summaries)")
+  command
+      ->add_option ("--out-dir", options->out_dir,
+                    "folder of the merged summary (and, without files, of the "
+                    "shard summaries)")
       ->required ();
-  command->add_option ("summaries", options->summaries, "shard summaries (default: every "
-                                                        "OUT/summary.shard-I-of-N.json)");
+  command->add_option ("summaries", options->summaries,
+                       "shard summaries (default: every "
+                       "OUT/summary.shard-I-of-N.json)");
   command->callback ([options] () { runMerge (*options); });
 }
 

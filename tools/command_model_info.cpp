@@ -39,18 +39,18 @@ describeModel (const std::string& path, const MorphableModel& model)
                         {"vertices", region.vertices.size ()},
                         {"components", region.variances.size ()},
                         {"variances_mm2", toStdVector (region.variances)}});
-  return {{"file", path},
-          {"units", model.units ()},
-          {"vertices", model.numVertices ()},
-          {"triangles", model.triangles ().cols ()},
-          {"regions", regions},
-          {"global_pca",
-           {{"components", model.globalVariances ().size ()},
-            {"variances_mm2", toStdVector (model.globalVariances ())}}},
-          {"noise_variance_mm2", model.noiseVariance ()},
-          {"profile_line_vertices", model.profileLine ().size ()},
-          {"landmarks", model.landmarks ()},
-          {"metadata", model.metadata ()}};
+  return {
+      {"file", path},
+      {"units", model.units ()},
+      {"vertices", model.numVertices ()},
+      {"triangles", model.triangles ().cols ()},
+      {"regions", regions},
+      {"global_pca",
+       {{"components", model.globalVariances ().size ()}, {"variances_mm2", toStdVector (model.globalVariances ())}}},
+      {"noise_variance_mm2", model.noiseVariance ()},
+      {"profile_line_vertices", model.profileLine ().size ()},
+      {"landmarks", model.landmarks ()},
+      {"metadata", model.metadata ()}};
 }
 
 /** "12.5 3.1 ... (40 in all)": the first few variances of a list. */
@@ -76,8 +76,8 @@ printText (const nlohmann::json& info)
             << "regions (" << info["regions"].size () << "):\n";
   for (const auto& region : info["regions"])
     std::cout << "  " << region["name"].get<std::string> () << ": " << region["vertices"] << " vertices, "
-              << region["components"] << " components, variances (mm^2) "
-              << varianceList (region["variances_mm2"]) << '\n';
+              << region["components"] << " components, variances (mm^2) " << varianceList (region["variances_mm2"])
+              << '\n';
   std::cout << "global PCA: " << info["global_pca"]["components"] << " components, variances (mm^2) "
             << varianceList (info["global_pca"]["variances_mm2"]) << '\n'
             << "landmarks (" << info["landmarks"].size () << "):";

@@ -87,8 +87,7 @@ loadScan (const std::string& path)
   dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
-  requireRegistrableScan (pointsOf (*scan),
-                          path);
+  requireRegistrableScan (pointsOf (*scan), path);
   scan->is_dense = true;
   return scan;
 }
@@ -103,8 +102,7 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
     const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
     const Eigen::Vector3d centroid = mean.rowwise ().mean ();
     const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
-    unit = guessLengthUnit (pointsOf (scan),
-                            model_radius);
+    unit = guessLengthUnit (pointsOf (scan), model_radius);
   }
   else {
     unit.unit = parseLengthUnit (options.units);
@@ -139,13 +137,14 @@ modelLandmarks (const RegisterOptions& options, const MorphableModel& model, std
   for (auto it = landmarks.begin (); it != landmarks.end ();)
     if (model.landmarks ().count (it->first)) {
       ++it;
-    } else {
+    }
+    else {
       skipped += " " + it->first;
       it = landmarks.erase (it);
     }
   if (!skipped.empty () && !options.quiet)
     warnings << options.landmarks << ": the model has no landmark" << skipped << "; using the other "
-              << landmarks.size () << '\n';
+             << landmarks.size () << '\n';
   if (landmarks.empty ())
     throw InvalidInputError (options.landmarks + ": none of its landmarks is on the model " + options.model);
   return landmarks;
@@ -156,7 +155,7 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
 {
   icp.setModel (model);
   icp.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
-                                                              : model->firstComponents (options.components));
+                                                             : model->firstComponents (options.components));
   icp.setMaximumIterations (options.iterations);
   icp.setSimilarityIterations (options.similarity_iterations);
   if (options.max_distance > 0.0)
@@ -196,14 +195,16 @@ showIterations (Icp& icp, const Progress& progress)
 {
   auto iteration = std::make_shared<int> (0);
   std::function<Icp::UpdateVisualizerCallbackSignature> callback = [&progress, iteration] (
-      const pcl::PointCloud<pcl::PointNormal>& source, const pcl::Indices& source_indices,
-      const pcl::PointCloud<pcl::PointNormal>& target, const pcl::Indices& target_indices) {
+                                                                       const pcl::PointCloud<pcl::PointNormal>& source,
+                                                                       const pcl::Indices& source_indices,
+                                                                       const pcl::PointCloud<pcl::PointNormal>& target,
+                                                                       const pcl::Indices& target_indices) {
     if (source_indices.empty ())
       return; // PCL's registerVisualizationCallback calls once at registration, before any iteration
     double squares = 0.0;
     for (std::size_t k = 0; k < source_indices.size (); ++k)
-      squares += (source[source_indices[k]].getVector3fMap () - target[target_indices[k]].getVector3fMap ())
-                     .squaredNorm ();
+      squares +=
+          (source[source_indices[k]].getVector3fMap () - target[target_indices[k]].getVector3fMap ()).squaredNorm ();
     std::ostringstream detail;
     detail << ' ' << source_indices.size () << " correspondences, RMS " << std::fixed << std::setprecision (3)
            << std::sqrt (squares / std::max<std::size_t> (source_indices.size (), 1)) << " mm";
@@ -289,17 +290,18 @@ truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const E
   report["covered_by_scan"] = distanceStatistics (covered);
   report["file"] = options.truth;
   out << "vertex RMS against the truth " << options.truth << ": " << std::fixed << std::setprecision (3)
-            << report["rms"].get<double> () << " mm (mean " << report["mean"].get<double> () << ", max "
-            << report["max"].get<double> () << "); over the " << report["covered_by_scan"]["count"]
-            << " vertices the scan covers: RMS " << report["covered_by_scan"]["rms"].get<double> () << " mm\n"
-            << std::defaultfloat;
+      << report["rms"].get<double> () << " mm (mean " << report["mean"].get<double> () << ", max "
+      << report["max"].get<double> () << "); over the " << report["covered_by_scan"]["count"]
+      << " vertices the scan covers: RMS " << report["covered_by_scan"]["rms"].get<double> () << " mm\n"
+      << std::defaultfloat;
   return report;
 }
 
 /** Scan points and the fitted model coloured by residual, seen from the fitted face's front-left. */
 void
-saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options, const pcl::PointCloud<pcl::PointNormal>& scan,
-             const TriangleMesh& fitted, const Eigen::VectorXd& residuals, double scale, const Eigen::Matrix4d& pose)
+saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options,
+             const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
+             const Eigen::VectorXd& residuals, double scale, const Eigen::Matrix4d& pose)
 {
   viewer.addTargetCloud (scan, "scan", 0, 1.0);
   viewer.addResidualHeatMap (fitted, residuals, scale);
@@ -360,12 +362,9 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
 nlohmann::json
 scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
 {
-  return {{"file", options.scan},
-          {"points", scan_points},
-          {"units", toString (unit.unit)},
-          {"unit_detection", options.units == "auto" ? "auto" : "given"},
-          {"unit_reason", unit.reason},
-          {"scale_to_mm", millimetresPer (unit.unit)}};
+  return {{"file", options.scan},          {"points", scan_points},
+          {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
+          {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
 }
 
 /** The report's residual statistics: scan to model over the correspondences, and per model vertex. */
@@ -415,8 +414,8 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
 {
   const std::string report_path = reportPath (options);
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
-      << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS "
-      << icp_report.fitness_rms << " mm over " << icp_report.correspondences << " correspondences\n"
+      << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
+      << " mm over " << icp_report.correspondences << " correspondences\n"
       << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
       << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
@@ -493,52 +492,70 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
 void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options)
 {
-  command->add_option ("--width", options.width, "screenshot width (pixels)")->check (CLI::Range (16, 8192))
+  command->add_option ("--width", options.width, "screenshot width (pixels)")
+      ->check (CLI::Range (16, 8192))
       ->capture_default_str ();
-  command->add_option ("--height", options.height, "screenshot height (pixels)")->check (CLI::Range (16, 8192))
+  command->add_option ("--height", options.height, "screenshot height (pixels)")
+      ->check (CLI::Range (16, 8192))
       ->capture_default_str ();
   command->add_option ("--iterations", options.iterations, "ICP iterations, similarity and shape stages together")
-      ->check (CLI::Range (1, 10000))->capture_default_str ();
-  command->add_option ("--similarity-iterations", options.similarity_iterations,
-                       "at most this many iterations fit the similarity alone before the shape joins")
-      ->check (CLI::Range (1, 10000))->capture_default_str ();
+      ->check (CLI::Range (1, 10000))
+      ->capture_default_str ();
+  command
+      ->add_option ("--similarity-iterations", options.similarity_iterations,
+                    "at most this many iterations fit the similarity alone before the shape joins")
+      ->check (CLI::Range (1, 10000))
+      ->capture_default_str ();
   command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--components", options.components,
-                       "shape components per region: one count for all, or one per region")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--components", options.components,
+                    "shape components per region: one count for all, or one per region")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
                      "point-to-plane residuals along the scan normals (default) or point-to-point");
-  command->add_option ("--tangential-weight", options.tangential_weight,
-                       "share of the point-to-point term kept along the tangent plane (point-to-plane)")
-      ->check (CLI::Range (0.0, 1.0))->capture_default_str ();
-  command->add_option ("--shape-prior", options.shape_prior,
-                       "weight of the shape prior (coefficients in prior standard deviations)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--landmark-weight", options.landmark_weight,
-                       "one landmark counts as this many correspondences")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command
+      ->add_option ("--tangential-weight", options.tangential_weight,
+                    "share of the point-to-point term kept along the tangent plane (point-to-plane)")
+      ->check (CLI::Range (0.0, 1.0))
+      ->capture_default_str ();
+  command
+      ->add_option ("--shape-prior", options.shape_prior,
+                    "weight of the shape prior (coefficients in prior standard deviations)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command->add_option ("--landmark-weight", options.landmark_weight, "one landmark counts as this many correspondences")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command->add_flag ("--target-smoothing,!--no-target-smoothing", options.target_smoothing,
                      "fit to each scan point projected onto its neighbours' plane (default; off for sparse or curved "
                      "real scans)");
   command->add_option ("--units", options.units, "the scan's length unit: auto (from its size), mm, cm, m or in")
-      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))->capture_default_str ();
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
+      ->capture_default_str ();
   command->add_flag ("--area-weighting", options.area_weighting,
                      "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
   command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")
-      ->check (CLI::IsMember ({"none", "huber", "tukey"}))->capture_default_str ();
+      ->check (CLI::IsMember ({"none", "huber", "tukey"}))
+      ->capture_default_str ();
   command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
-  command->add_option ("--reject-distance", options.reject_distance,
-                       "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
+  command
+      ->add_option ("--reject-distance", options.reject_distance,
+                    "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
       ->check (CLI::PositiveNumber);
-  command->add_option ("--reject-median", options.reject_median,
-                       "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
+  command
+      ->add_option ("--reject-median", options.reject_median,
+                    "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
       ->check (CLI::PositiveNumber);
   command->add_flag ("--reject-one-to-one", options.reject_one_to_one,
                      "keep one correspondence per scan point (CorrespondenceRejectorOneToOne)");
-  command->add_option ("--reject-trimmed", options.reject_trimmed,
-                       "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
+  command
+      ->add_option ("--reject-trimmed", options.reject_trimmed,
+                    "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
       ->check (CLI::Range (0.01, 1.0));
 }
 
@@ -547,12 +564,14 @@ registerRegisterCommand (CLI::App& app)
 {
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
-  auto* scan = command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
+  auto* scan =
+      command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
-  command->add_option ("--screenshot", options->screenshot, "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
+  command->add_option ("--screenshot", options->screenshot,
+                       "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
   command->add_option ("-l,--landmarks", options->landmarks,
                        "landmarks on the scan (.pp .json .csv .pts) to start from (Umeyama on >= 3)");
   command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");

@@ -66,23 +66,28 @@ void
 registerRenderCommand (CLI::App& app)
 {
   auto options = std::make_shared<RenderOptions> ();
-  CLI::App* command = app.add_subcommand ("render", "write a PNG of meshes, clouds and landmarks (run under xvfb-run -a)");
+  CLI::App* command =
+      app.add_subcommand ("render", "write a PNG of meshes, clouds and landmarks (run under xvfb-run -a)");
   command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable")
       ->check (CLI::ExistingFile);
   command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj), repeatable")
       ->check (CLI::ExistingFile);
-  command->add_option ("-l,--landmarks", options->landmarks,
-                       "landmark file (.pp .json .csv); the first is drawn as target, others as source")
+  command
+      ->add_option ("-l,--landmarks", options->landmarks,
+                    "landmark file (.pp .json .csv); the first is drawn as target, others as source")
       ->check (CLI::ExistingFile);
   command->add_option ("-o,--out", options->out, "PNG to write")->capture_default_str ();
-  command->add_option ("--width", options->width, "image width (pixels)")->check (CLI::Range (16, 8192))
+  command->add_option ("--width", options->width, "image width (pixels)")
+      ->check (CLI::Range (16, 8192))
       ->capture_default_str ();
-  command->add_option ("--height", options->height, "image height (pixels)")->check (CLI::Range (16, 8192))
+  command->add_option ("--height", options->height, "image height (pixels)")
+      ->check (CLI::Range (16, 8192))
       ->capture_default_str ();
   command->add_option ("--view", options->view, "camera: front, back, left, right, oblique")
       ->check (CLI::IsMember ({"front", "back", "left", "right", "oblique"}))
       ->capture_default_str ();
-  command->add_option ("--opacity", options->opacity, "mesh opacity")->check (CLI::Range (0.0, 1.0))
+  command->add_option ("--opacity", options->opacity, "mesh opacity")
+      ->check (CLI::Range (0.0, 1.0))
       ->capture_default_str ();
   command->callback ([options] () { runRender (*options); });
 }

@@ -72,19 +72,24 @@ void
 registerSynthCommand (CLI::App& app)
 {
   auto options = std::make_shared<SynthOptions> ();
-  CLI::App* command = app.add_subcommand ("synth", "generate synthetic heads (PLY + population.json) and scans of them");
+  CLI::App* command =
+      app.add_subcommand ("synth", "generate synthetic heads (PLY + population.json) and scans of them");
   command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
-  command->add_option ("-n,--count", options->count, "number of heads")->check (CLI::Range (1, 5000))
+  command->add_option ("-n,--count", options->count, "number of heads")
+      ->check (CLI::Range (1, 5000))
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "seed of the first head (head i uses seed + i)")
       ->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
       ->capture_default_str ();
-  command->add_option ("--scans", options->scans, "simulate scans of the first N heads")->check (CLI::NonNegativeNumber)
+  command->add_option ("--scans", options->scans, "simulate scans of the first N heads")
+      ->check (CLI::NonNegativeNumber)
       ->capture_default_str ();
-  command->add_option ("--photos", options->photos,
-                       "annotated profile and frontal photos of the first N heads (for fit-photos)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+  command
+      ->add_option ("--photos", options->photos,
+                    "annotated profile and frontal photos of the first N heads (for fit-photos)")
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
   addScannerOptions (command, options->scanner);
   command->callback ([options] () {

@@ -125,11 +125,13 @@ runWarp (const WarpOptions& options)
   const TriangleMesh warped = warpMesh (options, mesh, report);
   if (options.truth.empty ()) {
     saveTriangleMesh (options.out, warped);
-  } else {
+  }
+  else {
     const TriangleMesh truth = loadTriangleMesh (options.truth);
     requireSameTopology (mesh, truth, options.truth);
     const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
-    savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
+    savePolygonMesh (options.out,
+                     toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
     std::vector<int> labels (static_cast<std::size_t> (mesh.numVertices ()), 0);
     if (!options.labels.empty ())
       labels = loadRegionLabels (options.labels, mesh.numVertices ()).labels;
@@ -157,7 +159,8 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
   command->add_option ("-o,--out", options->out, "warped mesh to write")->capture_default_str ();
-  command->add_option ("--labels", options->labels, "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
+  command->add_option ("--labels", options->labels,
+                       "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
   command
       ->add_option ("--blend", options->blend,
                     "how far each segment's warp reaches into its neighbours along the mesh (mm; one value, or one "
@@ -173,7 +176,8 @@ registerWarpCommand (CLI::App& app)
       ->check (nonNegativeOrInfinite ())
       ->capture_default_str ();
   command->add_option ("--lambda", options->lambda, "TPS regularisation (0 = exact interpolation)")
-      ->check (CLI::NonNegativeNumber)->capture_default_str ();
+      ->check (CLI::NonNegativeNumber)
+      ->capture_default_str ();
   command->add_option ("--truth", options->truth, "true target mesh (same topology): report the warp's error");
   command->add_option ("--report", options->report, "JSON report to write");
   command->add_flag ("-q,--quiet", options->quiet, "less output");

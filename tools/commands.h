@@ -13,15 +13,24 @@ constexpr int kExitBadArguments = 2;
 constexpr int kExitInternalError = 3;
 constexpr int kExitFitFailedChecks = 4;
 
-void registerSynthCommand (CLI::App& app);
-void registerDemoCommand (CLI::App& app);
-void registerRenderCommand (CLI::App& app);
-void registerWarpCommand (CLI::App& app);
-void registerBuildModelCommand (CLI::App& app);
-void registerRegisterCommand (CLI::App& app);
-void registerFitPhotosCommand (CLI::App& app);
-void registerModelInfoCommand (CLI::App& app);
-void registerMergeSummariesCommand (CLI::App& app);
+void
+registerSynthCommand (CLI::App& app);
+void
+registerDemoCommand (CLI::App& app);
+void
+registerRenderCommand (CLI::App& app);
+void
+registerWarpCommand (CLI::App& app);
+void
+registerBuildModelCommand (CLI::App& app);
+void
+registerRegisterCommand (CLI::App& app);
+void
+registerFitPhotosCommand (CLI::App& app);
+void
+registerModelInfoCommand (CLI::App& app);
+void
+registerMergeSummariesCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void

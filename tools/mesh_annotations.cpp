@@ -31,8 +31,8 @@ loadRegionLabels (const std::string& path, Eigen::Index num_vertices)
         regions.names.push_back ("region_" + std::to_string (k));
   }
   catch (const nlohmann::json::exception& e) {
-    throw FormatError (path + ": expected {\"regions\": [names], \"labels\": [region index per vertex]} (" +
-                       e.what () + ")");
+    throw FormatError (path + ": expected {\"regions\": [names], \"labels\": [region index per vertex]} (" + e.what () +
+                       ")");
   }
   try {
     validateRegionLabels (regions, num_vertices);

@@ -22,11 +22,11 @@ namespace tools
 /** Inputs and settings of `morphreg build-model`. */
 struct BuildModelOptions
 {
-  std::vector<std::string> meshes;   ///< mesh files in correspondence
-  std::string directory;             ///< a folder of meshes (population.json's heads if present, else every mesh)
-  std::string regions;               ///< region label file; empty: one global region
-  std::string landmark_vertices;     ///< landmark vertex file; empty: none
-  std::string ict_directory;         ///< ICT-FaceKit folder: the 7-region ICT model instead of meshes
+  std::vector<std::string> meshes; ///< mesh files in correspondence
+  std::string directory;           ///< a folder of meshes (population.json's heads if present, else every mesh)
+  std::string regions;             ///< region label file; empty: one global region
+  std::string landmark_vertices;   ///< landmark vertex file; empty: none
+  std::string ict_directory;       ///< ICT-FaceKit folder: the 7-region ICT model instead of meshes
   int ict_samples = 300;
   std::uint64_t seed = 1;
   std::string out = "model.h5";
@@ -53,7 +53,7 @@ struct RegisterOptions
   std::string landmarks, truth;
   int iterations = 100;
   int similarity_iterations = 60; ///< at most this many of the iterations fit the similarity alone
-  double max_distance = 0.0; ///< mm, 0 = no limit
+  double max_distance = 0.0;      ///< mm, 0 = no limit
   std::vector<int> components{10};
   bool point_to_plane = true;
   double tangential_weight = 0.02; ///< point-to-point share kept along the tangent plane
@@ -66,8 +66,8 @@ struct RegisterOptions
   double reject_median = 0.0;
   bool reject_one_to_one = false;
   double reject_trimmed = 0.0;
-  double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
-  std::string units = "auto";  ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
+  double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
+  std::string units = "auto";   ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
   bool target_smoothing = true; ///< fit to the scan points projected onto their neighbourhood's plane
   bool quiet = false;
 };

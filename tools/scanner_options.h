@@ -13,8 +13,7 @@ inline void
 addScannerOptions (CLI::App* command, synthetic::ScanSimulator::Parameters& parameters)
 {
   command->add_option ("--noise", parameters.noise_sigma, "scanner range noise sigma (mm)")->capture_default_str ();
-  command->add_option ("--outliers", parameters.outlier_fraction, "fraction of outlier points")
-      ->capture_default_str ();
+  command->add_option ("--outliers", parameters.outlier_fraction, "fraction of outlier points")->capture_default_str ();
   command->add_option ("--angular-samples", parameters.angular_samples, "scanner rays per turn")
       ->capture_default_str ();
   command->add_option ("--row-spacing", parameters.row_spacing, "scanner row spacing (mm)")->capture_default_str ();

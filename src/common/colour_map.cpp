@@ -34,8 +34,8 @@ viridis (double t)
   const double fraction = position - static_cast<double> (lower);
   Rgb8 colour;
   for (int c = 0; c < 3; ++c)
-    colour[c] = static_cast<unsigned char> (std::lround ((1.0 - fraction) * kViridisStops[lower][c] +
-                                                         fraction * kViridisStops[lower + 1][c]));
+    colour[c] = static_cast<unsigned char> (
+        std::lround ((1.0 - fraction) * kViridisStops[lower][c] + fraction * kViridisStops[lower + 1][c]));
   return colour;
 }
 
@@ -48,8 +48,8 @@ residualColours (const Eigen::VectorXd& values, double max_value)
   VertexColours colours (3, values.size ());
   for (Eigen::Index i = 0; i < values.size (); ++i) {
     if (values[i] < 0.0 || std::isinf (values[i]))
-      throw InvalidInputError ("residual colours: value " + std::to_string (i) + " is " +
-                               std::to_string (values[i]) + "; residuals must be non-negative and finite (or NaN)");
+      throw InvalidInputError ("residual colours: value " + std::to_string (i) + " is " + std::to_string (values[i]) +
+                               "; residuals must be non-negative and finite (or NaN)");
     colours.col (i) = viridis (values[i] / max_value);
   }
   return colours;

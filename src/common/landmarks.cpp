@@ -12,33 +12,48 @@ namespace
 std::vector<std::string>
 makeKnownLandmarkIds ()
 {
-  std::vector<std::string> ids = {
-      "right_eyebrow",      "right_eye_outer",   "right_eye_inner",    "left_eyebrow",
-      "left_eye_outer",     "left_eye_inner",    "right_nose_wing",    "nose_tip",
-      "left_nose_wing",     "right_mouth_corner", "left_mouth_corner", "upper_lip_center",
-      "mouth_center",       "lower_lip_center",  "right_philtrum",     "left_philtrum",
-      "right_lower_lip",    "left_lower_lip"};
+  std::vector<std::string> ids = {"right_eyebrow",   "right_eye_outer",    "right_eye_inner",   "left_eyebrow",
+                                  "left_eye_outer",  "left_eye_inner",     "right_nose_wing",   "nose_tip",
+                                  "left_nose_wing",  "right_mouth_corner", "left_mouth_corner", "upper_lip_center",
+                                  "mouth_center",    "lower_lip_center",   "right_philtrum",    "left_philtrum",
+                                  "right_lower_lip", "left_lower_lip"};
   for (const char* side : {"right", "left"})
     for (const char* part : {"ear_attachment_top", "ear_top", "ear_middle", "earlobe", "earlobe_attachment"})
       ids.push_back (std::string (side) + "_" + part);
-  const std::vector<std::string> rest = {
-      "right_jaw",          "right_jaw_middle",  "right_chin",         "left_jaw",
-      "left_jaw_middle",    "left_chin",         "right_neck_top",     "right_neck_contour",
-      "left_neck_top",      "left_neck_contour", "right_head_contour", "left_head_contour",
-      "nasion",             "chin",              "forehead",           "right_tragus",
-      "left_tragus"};
+  const std::vector<std::string> rest = {"right_jaw",
+                                         "right_jaw_middle",
+                                         "right_chin",
+                                         "left_jaw",
+                                         "left_jaw_middle",
+                                         "left_chin",
+                                         "right_neck_top",
+                                         "right_neck_contour",
+                                         "left_neck_top",
+                                         "left_neck_contour",
+                                         "right_head_contour",
+                                         "left_head_contour",
+                                         "nasion",
+                                         "chin",
+                                         "forehead",
+                                         "right_tragus",
+                                         "left_tragus"};
   ids.insert (ids.end (), rest.begin (), rest.end ());
   return ids;
 }
 
 /** BFM-2017 landmark ids (metadata/landmarks/json) with a project equivalent. */
-const std::map<std::string, std::string> kBfmLandmarkIds = {
-    {"center.nose.tip", "nose_tip"},           {"center.chin.tip", "chin"},
-    {"left.eye.corner_outer", "left_eye_outer"}, {"left.eye.corner_inner", "left_eye_inner"},
-    {"right.eye.corner_outer", "right_eye_outer"}, {"right.eye.corner_inner", "right_eye_inner"},
-    {"left.lips.corner", "left_mouth_corner"}, {"right.lips.corner", "right_mouth_corner"},
-    {"left.nose.wing.tip", "left_nose_wing"},  {"right.nose.wing.tip", "right_nose_wing"},
-    {"center.lips.upper.outer", "upper_lip_center"}, {"center.lips.lower.outer", "lower_lip_center"}};
+const std::map<std::string, std::string> kBfmLandmarkIds = {{"center.nose.tip", "nose_tip"},
+                                                            {"center.chin.tip", "chin"},
+                                                            {"left.eye.corner_outer", "left_eye_outer"},
+                                                            {"left.eye.corner_inner", "left_eye_inner"},
+                                                            {"right.eye.corner_outer", "right_eye_outer"},
+                                                            {"right.eye.corner_inner", "right_eye_inner"},
+                                                            {"left.lips.corner", "left_mouth_corner"},
+                                                            {"right.lips.corner", "right_mouth_corner"},
+                                                            {"left.nose.wing.tip", "left_nose_wing"},
+                                                            {"right.nose.wing.tip", "right_nose_wing"},
+                                                            {"center.lips.upper.outer", "upper_lip_center"},
+                                                            {"center.lips.lower.outer", "lower_lip_center"}};
 } // namespace
 
 const std::vector<std::string>&

@@ -197,8 +197,7 @@ Writer::group (const std::string& name)
 }
 
 void
-Writer::floats (const std::string& name, const std::vector<hsize_t>& dims, const double* values,
-                bool double_precision)
+Writer::floats (const std::string& name, const std::vector<hsize_t>& dims, const double* values, bool double_precision)
 {
   guarded (name, [&] {
     const H5::DataSpace space (static_cast<int> (dims.size ()), dims.data ());

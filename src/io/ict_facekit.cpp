@@ -17,14 +17,31 @@ namespace
 constexpr double kCentimetresToMillimetres = 10.0;
 
 /** Project landmark ids (docs/landmarks.md) and their iBUG-68 numbers. */
-const std::vector<std::pair<std::string, int>> kIbugLandmarks = {
-    {"right_eyebrow", 19},      {"right_eye_outer", 36},   {"right_eye_inner", 39},  {"left_eyebrow", 24},
-    {"left_eye_outer", 45},     {"left_eye_inner", 42},    {"right_nose_wing", 31},  {"nose_tip", 30},
-    {"left_nose_wing", 35},     {"right_mouth_corner", 48}, {"left_mouth_corner", 54}, {"upper_lip_center", 51},
-    {"mouth_center", 62},       {"lower_lip_center", 57},  {"right_philtrum", 50},   {"left_philtrum", 52},
-    {"right_lower_lip", 58},    {"left_lower_lip", 56},    {"right_jaw", 3},         {"right_jaw_middle", 5},
-    {"right_chin", 7},          {"left_jaw", 13},          {"left_jaw_middle", 11},  {"left_chin", 9},
-    {"chin", 8}};
+const std::vector<std::pair<std::string, int>> kIbugLandmarks = {{"right_eyebrow", 19},
+                                                                 {"right_eye_outer", 36},
+                                                                 {"right_eye_inner", 39},
+                                                                 {"left_eyebrow", 24},
+                                                                 {"left_eye_outer", 45},
+                                                                 {"left_eye_inner", 42},
+                                                                 {"right_nose_wing", 31},
+                                                                 {"nose_tip", 30},
+                                                                 {"left_nose_wing", 35},
+                                                                 {"right_mouth_corner", 48},
+                                                                 {"left_mouth_corner", 54},
+                                                                 {"upper_lip_center", 51},
+                                                                 {"mouth_center", 62},
+                                                                 {"lower_lip_center", 57},
+                                                                 {"right_philtrum", 50},
+                                                                 {"left_philtrum", 52},
+                                                                 {"right_lower_lip", 58},
+                                                                 {"left_lower_lip", 56},
+                                                                 {"right_jaw", 3},
+                                                                 {"right_jaw_middle", 5},
+                                                                 {"right_chin", 7},
+                                                                 {"left_jaw", 13},
+                                                                 {"left_jaw_middle", 11},
+                                                                 {"left_chin", 9},
+                                                                 {"chin", 8}};
 
 /** Landmarks ICT does not provide, picked on the mean mesh by geometry. */
 const std::vector<std::pair<std::string, int>> kGeometricLandmarks = {
@@ -114,7 +131,7 @@ loadIctFaceKit (const std::string& directory)
     throw FormatError (eigen_path + ": negative eigenvalue");
   // [k, N, 3] in C order: component c occupies 3N consecutive values, interleaved x, y, z.
   Eigen::MatrixXd columns = Eigen::Map<const Eigen::MatrixXf> (basis.data.data (), static_cast<Eigen::Index> (3 * n),
-                                                                static_cast<Eigen::Index> (k))
+                                                               static_cast<Eigen::Index> (k))
                                 .cast<double> ();
   for (Eigen::Index c = 0; c < columns.cols (); ++c)
     if (std::abs (columns.col (c).norm () - 1.0) > 1e-3)

@@ -181,9 +181,10 @@ readPts (const std::string& path)
     }
   }
   if (declared != 68)
-    throw FormatError (path + ": " + (declared < 0 ? std::string ("no 'n_points:' line")
-                                                   : "n_points is " + std::to_string (declared)) +
-                       "; iBUG-68 files have 68 points");
+    throw FormatError (
+        path + ": " +
+        (declared < 0 ? std::string ("no 'n_points:' line") : "n_points is " + std::to_string (declared)) +
+        "; iBUG-68 files have 68 points");
   if (!closed)
     throw FormatError (path + ": the points are not enclosed in '{' ... '}'");
   if (entries.size () != 68)
@@ -230,8 +231,7 @@ readJsonLandmark (const nlohmann::json& item, const std::string& where, double s
   for (int axis = 0; axis < Dim; ++axis) {
     const auto& value = (*position)[axis];
     if (!value.is_number ())
-      throw FormatError (entry.where + ": coordinate " + kAxisNames[axis] + " (" + value.dump () +
-                         ") is not a number");
+      throw FormatError (entry.where + ": coordinate " + kAxisNames[axis] + " (" + value.dump () + ") is not a number");
     entry.position[axis] = scale * value.get<double> ();
   }
   return entry;

@@ -85,8 +85,8 @@ MakeHumanBodies::loadMesh (const std::string& subject, BodyPose pose) const
   jointTable (subject, pose); // validates the subject
   TriangleMesh mesh = loadTriangleMesh (directory_ + "/mh_" + poseKey (subject, pose) + ".ply");
   if (mesh.numVertices () != num_vertices_)
-    throw FormatError (directory_ + "/mh_" + poseKey (subject, pose) + ".ply: " +
-                       std::to_string (mesh.numVertices ()) + " vertices, expected " + std::to_string (num_vertices_));
+    throw FormatError (directory_ + "/mh_" + poseKey (subject, pose) + ".ply: " + std::to_string (mesh.numVertices ()) +
+                       " vertices, expected " + std::to_string (num_vertices_));
   mesh.vertices *= kMillimetresPerUnit;
   return mesh;
 }

@@ -11,8 +11,8 @@ constexpr Eigen::Index kFaceMeshVertices = 468;
 
 /** Project landmark ids and their MediaPipe Face Mesh ids (docs/landmarks.md). */
 const std::vector<std::pair<std::string, int>> kMediaPipeLandmarks = {
-    {"right_eye_outer", 33},     {"right_eye_inner", 133},    {"left_eye_outer", 263}, {"left_eye_inner", 362},
-    {"nose_tip", 4},             {"right_mouth_corner", 61}, {"left_mouth_corner", 291}, {"chin", 152},
+    {"right_eye_outer", 33}, {"right_eye_inner", 133},   {"left_eye_outer", 263},    {"left_eye_inner", 362},
+    {"nose_tip", 4},         {"right_mouth_corner", 61}, {"left_mouth_corner", 291}, {"chin", 152},
     {"forehead", 10}};
 } // namespace
 

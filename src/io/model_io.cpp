@@ -107,7 +107,8 @@ readStatismo (const hdf5::Reader& file, const std::string& prefix)
 
   const std::string mean_name = joinPath (prefix, "model/mean");
   const auto mean = file.readFloats (mean_name, 1);
-  requireDims (file, mean_name, mean.dims, {3 * n}, "[3N] = [" + std::to_string (3 * n) + "] (N from representer/points)");
+  requireDims (file, mean_name, mean.dims, {3 * n},
+               "[3N] = [" + std::to_string (3 * n) + "] (N from representer/points)");
   part.mean = toVector (mean);
 
   const std::string variance_name = joinPath (prefix, "model/pcaVariance");
@@ -137,7 +138,8 @@ readStatismo (const hdf5::Reader& file, const std::string& prefix)
   }
   for (Eigen::Index k = 0; k < part.basis.cols (); ++k)
     if (std::abs (part.basis.col (k).norm () - 1.0) > 1e-3)
-      file.fail (basis_name, "column " + std::to_string (k) + " has norm " + std::to_string (part.basis.col (k).norm ()) +
+      file.fail (basis_name, "column " + std::to_string (k) + " has norm " +
+                                 std::to_string (part.basis.col (k).norm ()) +
                                  ", expected orthonormal columns (a v0.8 scaled basis labelled v0.9?)");
   return part;
 }
@@ -263,9 +265,8 @@ writeStatismo (hdf5::Writer& file, const MorphableModel& model)
   const Eigen::Map<const Eigen::Matrix3Xd> points (model.mean ().data (), 3, model.numVertices ());
   file.floats ("representer/points", {3, n}, rowMajor (points).data (), false);
   std::vector<int> cells (model.triangles ().size ());
-  Eigen::Map<Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> (cells.data (), 3,
-                                                                                   model.triangles ().cols ()) =
-      model.triangles ();
+  Eigen::Map<Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> (
+      cells.data (), 3, model.triangles ().cols ()) = model.triangles ();
   file.integers ("representer/cells", {3, static_cast<hsize_t> (model.triangles ().cols ())}, cells.data ());
 
   file.group ("version");

@@ -120,8 +120,7 @@ void
 requireNpyShape (const NpyArray& array, const std::vector<std::size_t>& expected_shape, const std::string& path)
 {
   if (array.shape != expected_shape)
-    throw FormatError (path + ": array shape " + shapeText (array.shape) + ", expected " +
-                       shapeText (expected_shape));
+    throw FormatError (path + ": array shape " + shapeText (array.shape) + ", expected " + shapeText (expected_shape));
 }
 
 } // namespace morphreg

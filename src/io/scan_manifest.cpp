@@ -79,8 +79,7 @@ loadScanManifest (const std::string& path)
       continue; // the header
     const std::string where = path + ":" + std::to_string (line_number);
     if (fields.size () > 3)
-      throw FormatError (where + ": " + std::to_string (fields.size ()) +
-                         " fields, expected scan[,landmarks[,id]]");
+      throw FormatError (where + ": " + std::to_string (fields.size ()) + " fields, expected scan[,landmarks[,id]]");
     if (fields[0].empty ())
       throw FormatError (where + ": the scan path is empty");
     ScanEntry entry;

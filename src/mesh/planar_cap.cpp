@@ -56,7 +56,8 @@ findPlanarCap (const TriangleMesh& mesh, const PlanarCapSettings& settings)
   bool any = false;
   for (Eigen::Index t = 0; t < m; ++t) {
     centroids.col (t) = (mesh.vertices.col (mesh.triangles (0, t)) + mesh.vertices.col (mesh.triangles (1, t)) +
-                         mesh.vertices.col (mesh.triangles (2, t))) / 3.0;
+                         mesh.vertices.col (mesh.triangles (2, t))) /
+                        3.0;
     cap[static_cast<size_t> (t)] = normals.col (t).dot (direction) > settings.seed_cosine;
     any = any || cap[static_cast<size_t> (t)];
   }

@@ -51,7 +51,8 @@ fromPolygonMesh (const pcl::PolygonMesh& mesh, const std::string& name)
     const auto& vertices = mesh.polygons[t].vertices;
     if (vertices.size () != 3) {
       std::ostringstream msg;
-      msg << name << ": polygon " << t << " has " << vertices.size () << " vertices; only triangle meshes are supported";
+      msg << name << ": polygon " << t << " has " << vertices.size ()
+          << " vertices; only triangle meshes are supported";
       throw InvalidInputError (msg.str ());
     }
     for (int c = 0; c < 3; ++c)

@@ -16,8 +16,8 @@ sampleSurfaceUniformly (const TriangleMesh& mesh, double area_per_sample, std::u
     throw InvalidInputError ("sampleSurfaceUniformly: the area per sample must be positive and finite, got " +
                              std::to_string (area_per_sample));
   if (!excluded.empty () && excluded.size () != static_cast<size_t> (mesh.numTriangles ()))
-    throw InvalidInputError ("sampleSurfaceUniformly: " + std::to_string (excluded.size ()) +
-                             " exclusion flags for " + std::to_string (mesh.numTriangles ()) + " triangles");
+    throw InvalidInputError ("sampleSurfaceUniformly: " + std::to_string (excluded.size ()) + " exclusion flags for " +
+                             std::to_string (mesh.numTriangles ()) + " triangles");
   Eigen::VectorXd weights = triangleAreas (mesh);
   for (size_t t = 0; t < excluded.size (); ++t)
     if (excluded[t])
@@ -41,7 +41,8 @@ sampleSurfaceUniformly (const TriangleMesh& mesh, double area_per_sample, std::u
       b = 1.0 - b;
     }
     samples.points.col (i) = (1.0 - a - b) * mesh.vertices.col (mesh.triangles (0, t)) +
-                             a * mesh.vertices.col (mesh.triangles (1, t)) + b * mesh.vertices.col (mesh.triangles (2, t));
+                             a * mesh.vertices.col (mesh.triangles (1, t)) +
+                             b * mesh.vertices.col (mesh.triangles (2, t));
     samples.triangles[static_cast<size_t> (i)] = t;
   }
   return samples;

@@ -95,7 +95,8 @@ TriangleLocator::TriangleLocator (const TriangleMesh& mesh) : mesh_ (mesh)
   Eigen::Matrix3Xd centroids (3, m);
   for (Eigen::Index t = 0; t < m; ++t)
     centroids.col (t) = (mesh_.vertices.col (mesh_.triangles (0, t)) + mesh_.vertices.col (mesh_.triangles (1, t)) +
-                         mesh_.vertices.col (mesh_.triangles (2, t))) / 3.0;
+                         mesh_.vertices.col (mesh_.triangles (2, t))) /
+                        3.0;
   order_.resize (static_cast<size_t> (m));
   std::iota (order_.begin (), order_.end (), 0);
   nodes_.reserve (static_cast<size_t> (2 * m / kLeafSize + 2));

@@ -23,8 +23,8 @@ validateMesh (const TriangleMesh& mesh, const std::string& name)
       const int v = mesh.triangles (c, t);
       if (v < 0 || v >= mesh.numVertices ()) {
         std::ostringstream msg;
-        msg << name << ": triangle " << t << " references vertex " << v << ", but the mesh has "
-            << mesh.numVertices () << " vertices";
+        msg << name << ": triangle " << t << " references vertex " << v << ", but the mesh has " << mesh.numVertices ()
+            << " vertices";
         throw InvalidInputError (msg.str ());
       }
     }

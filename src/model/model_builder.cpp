@@ -41,9 +41,8 @@ ModelBuilder::prepareData (const std::vector<TriangleMesh>& meshes, Eigen::Vecto
   // Identical meshes (after the alignment) leave nothing to learn: say so instead of building an empty basis.
   const double extent = mean.cwiseAbs ().maxCoeff ();
   if (!(centred.cwiseAbs ().maxCoeff () > 1e-9 * std::max (extent, 1.0)))
-    throw InvalidInputError ("ModelBuilder: the " + std::to_string (meshes.size ()) +
-                             " training meshes are identical" + (settings_.align ? " after alignment" : "") +
-                             ": there is no shape variation to model");
+    throw InvalidInputError ("ModelBuilder: the " + std::to_string (meshes.size ()) + " training meshes are identical" +
+                             (settings_.align ? " after alignment" : "") + ": there is no shape variation to model");
 }
 
 PcaBasis

@@ -23,11 +23,10 @@ regionLabel (const ModelRegion& region, int index)
 
 MorphableModel::MorphableModel (TriangleMesh::Triangles triangles, Eigen::VectorXd mean,
                                 std::vector<ModelRegion> regions)
-: triangles_ (std::move (triangles)), mean_ (std::move (mean)), regions_ (std::move (regions))
+  : triangles_ (std::move (triangles)), mean_ (std::move (mean)), regions_ (std::move (regions))
 {
   if (mean_.size () == 0 || mean_.size () % 3 != 0)
-    throw InvalidInputError ("MorphableModel: mean has " + std::to_string (mean_.size ()) +
-                             " values, expected 3N > 0");
+    throw InvalidInputError ("MorphableModel: mean has " + std::to_string (mean_.size ()) + " values, expected 3N > 0");
   if (!mean_.allFinite ())
     throw InvalidInputError ("MorphableModel: mean has non-finite values");
   TriangleMesh mesh;
@@ -83,8 +82,8 @@ MorphableModel::validateRegion (const ModelRegion& region, int index) const
     throw InvalidInputError (label + ": blending weights must be finite and in [0, 1]");
   if (region.basis.rows () != 3 * b || region.basis.cols () != region.variances.size ())
     throw InvalidInputError (label + ": basis is " + std::to_string (region.basis.rows ()) + " x " +
-                             std::to_string (region.basis.cols ()) + ", expected " + std::to_string (3 * b) +
-                             " x " + std::to_string (region.variances.size ()) + " (3 x vertices, variances)");
+                             std::to_string (region.basis.cols ()) + ", expected " + std::to_string (3 * b) + " x " +
+                             std::to_string (region.variances.size ()) + " (3 x vertices, variances)");
   if (!region.basis.allFinite ())
     throw InvalidInputError (label + ": basis has non-finite values");
   if (!region.variances.allFinite () || (region.variances.size () > 0 && region.variances.minCoeff () < 0.0))
@@ -109,9 +108,9 @@ MorphableModel::buildVertexIndex ()
     for (const RegionEntry& e : list)
       sum += e.weight;
     if (list.empty () || std::abs (sum - 1.0) > kWeightSumTolerance)
-      throw InvalidInputError ("MorphableModel: vertex " + std::to_string (i) +
-                               (list.empty () ? " is in no region"
-                                              : "'s blending weights sum to " + std::to_string (sum) + ", not 1"));
+      throw InvalidInputError (
+          "MorphableModel: vertex " + std::to_string (i) +
+          (list.empty () ? " is in no region" : "'s blending weights sum to " + std::to_string (sum) + ", not 1"));
     if (list.size () == 2)
       gamma_pairs_.push_back ({static_cast<int> (i), list[0].region, list[0].row, list[1].region, list[1].row});
     entries_.insert (entries_.end (), list.begin (), list.end ());
@@ -243,8 +242,9 @@ MorphableModel::gammaResiduals (const Eigen::VectorXd& coefficients, const Compo
     const GammaPair& g = gamma_pairs_[l];
     const int ca = selection.count (g.region_a);
     const int cb = selection.count (g.region_b);
-    residuals.col (l) = regionRows (g.region_a, g.row_a, ca) * coefficients.segment (selection.offset (g.region_a), ca) -
-                        regionRows (g.region_b, g.row_b, cb) * coefficients.segment (selection.offset (g.region_b), cb);
+    residuals.col (l) =
+        regionRows (g.region_a, g.row_a, ca) * coefficients.segment (selection.offset (g.region_a), ca) -
+        regionRows (g.region_b, g.row_b, cb) * coefficients.segment (selection.offset (g.region_b), cb);
   }
   return residuals;
 }
@@ -369,8 +369,8 @@ MorphableModel::setGlobalPca (Eigen::MatrixXd basis, Eigen::VectorXd variances)
 {
   if (basis.rows () != mean_.size () || basis.cols () != variances.size ())
     throw InvalidInputError ("MorphableModel::setGlobalPca: basis is " + std::to_string (basis.rows ()) + " x " +
-                             std::to_string (basis.cols ()) + ", expected " + std::to_string (mean_.size ()) +
-                             " x " + std::to_string (variances.size ()));
+                             std::to_string (basis.cols ()) + ", expected " + std::to_string (mean_.size ()) + " x " +
+                             std::to_string (variances.size ()));
   if (!basis.allFinite () || !variances.allFinite () || (variances.size () && variances.minCoeff () < 0.0))
     throw InvalidInputError ("MorphableModel::setGlobalPca: non-finite basis or negative/non-finite variances");
   global_basis_ = std::move (basis);
@@ -394,8 +394,7 @@ MorphableModel::setLandmarks (LandmarkVertices landmarks)
       throw InvalidInputError ("MorphableModel::setLandmarks: empty landmark name");
     if (index < 0 || index >= numVertices ())
       throw InvalidInputError ("MorphableModel::setLandmarks: landmark '" + name + "' has vertex " +
-                               std::to_string (index) + ", out of range [0, " + std::to_string (numVertices ()) +
-                               ")");
+                               std::to_string (index) + ", out of range [0, " + std::to_string (numVertices ()) + ")");
   }
   landmarks_ = std::move (landmarks);
 }
@@ -409,8 +408,8 @@ MorphableModel::landmarkVertex (const std::string& name) const
   std::string known;
   for (const auto& entry : landmarks_)
     known += (known.empty () ? "" : ", ") + entry.first;
-  throw InvalidInputError ("MorphableModel: no landmark '" + name + "'; the model has: " +
-                           (known.empty () ? std::string ("none") : known));
+  throw InvalidInputError ("MorphableModel: no landmark '" + name +
+                           "'; the model has: " + (known.empty () ? std::string ("none") : known));
 }
 
 void
@@ -439,8 +438,8 @@ MorphableModel::setMetadata (std::map<std::string, std::string> metadata)
 
 } // namespace morphreg
 
-#define MORPHREG_INSTANTIATE_MORPHABLE_MODEL(T)                                                               \
-  template pcl::PointCloud<T>::Ptr morphreg::MorphableModel::generateCloud<T> (                              \
+#define MORPHREG_INSTANTIATE_MORPHABLE_MODEL(T)                                                                        \
+  template pcl::PointCloud<T>::Ptr morphreg::MorphableModel::generateCloud<T> (                                        \
       const Eigen::VectorXd&, const morphreg::ComponentSelection&) const;
 MORPHREG_INSTANTIATE_MORPHABLE_MODEL (pcl::PointXYZ)
 MORPHREG_INSTANTIATE_MORPHABLE_MODEL (pcl::PointNormal)

@@ -36,7 +36,8 @@ pcaBySvd (const Eigen::MatrixXd& centred, int max_components, double explained_f
 {
   const Eigen::BDCSVD<Eigen::MatrixXd> svd (centred, Eigen::ComputeThinU);
   const Eigen::VectorXd& sigma = svd.singularValues ();
-  const double cut = sigma.size () ? sigma[0] * kEps * static_cast<double> (std::max (centred.rows (), centred.cols ())) : 0.0;
+  const double cut =
+      sigma.size () ? sigma[0] * kEps * static_cast<double> (std::max (centred.rows (), centred.cols ())) : 0.0;
   Eigen::Index rank = 0;
   while (rank < sigma.size () && sigma[rank] > cut)
     ++rank;
@@ -76,7 +77,7 @@ void
 multiplyRowBlocks (const Eigen::MatrixXd& source, const std::vector<RowBlock>& blocks, const Eigen::MatrixXd& weights,
                    Target&& target)
 {
-#pragma omp parallel if (blocks.size () > 1)
+#pragma omp parallel if (blocks.size() > 1)
   {
     Eigen::MatrixXd product;
 #pragma omp for schedule(dynamic)
@@ -94,7 +95,7 @@ orthonormalityError (const Eigen::MatrixXd& u, Eigen::MatrixXd& gram)
   gram.setZero (u.cols (), u.cols ());
   if (u.cols () == 0) // no components (data without variation): trivially orthonormal
     return 0.0;
-#pragma omp parallel if (u.rows () > kRowBlock)
+#pragma omp parallel if (u.rows() > kRowBlock)
   {
     Eigen::MatrixXd partial = Eigen::MatrixXd::Zero (u.cols (), u.cols ());
 #pragma omp for schedule(dynamic) nowait
@@ -167,7 +168,7 @@ makeOrthonormal (Eigen::MatrixXd& basis)
     const Eigen::LLT<Eigen::MatrixXd> llt (gram);
     if (llt.info () != Eigen::Success)
       break;
-#pragma omp parallel for schedule(dynamic) if (basis.rows () > kRowBlock)
+#pragma omp parallel for schedule(dynamic) if (basis.rows() > kRowBlock)
     for (Eigen::Index b = 0; b < numRowBlocks (basis.rows ()); ++b) {
       const Eigen::Index row = b * kRowBlock, count = std::min (kRowBlock, basis.rows () - row);
       llt.matrixU ().solveInPlace<Eigen::OnTheRight> (basis.middleRows (row, count));
@@ -218,9 +219,9 @@ requireData (const Eigen::MatrixXd& centred, const char* caller)
 /** Vertices grouped by the vertex sets they belong to ("atoms": disjoint, each inside the same sets). */
 struct VertexAtoms
 {
-  std::vector<int> order;                   ///< vertices, atom by atom (vertices in no set left out)
-  std::vector<Eigen::Index> begin;          ///< first position in order of each atom, plus the end
-  std::vector<std::vector<int>> atoms_of;   ///< per vertex set: its atoms
+  std::vector<int> order;                 ///< vertices, atom by atom (vertices in no set left out)
+  std::vector<Eigen::Index> begin;        ///< first position in order of each atom, plus the end
+  std::vector<std::vector<int>> atoms_of; ///< per vertex set: its atoms
 };
 
 VertexAtoms
@@ -326,7 +327,8 @@ atomGrams (const Eigen::MatrixXd& centred, const VertexAtoms& atoms)
   std::vector<Eigen::MatrixXd> grams (atoms.begin.size () - 1);
   for (std::size_t a = 0; a < grams.size (); ++a) {
     grams[a].setZero (centred.cols (), centred.cols ());
-    grams[a].selfadjointView<Eigen::Lower> ().rankUpdate (atomBlock (centred, atoms, static_cast<int> (a)).transpose ());
+    grams[a].selfadjointView<Eigen::Lower> ().rankUpdate (
+        atomBlock (centred, atoms, static_cast<int> (a)).transpose ());
   }
   return grams;
 }
@@ -376,7 +378,8 @@ setPcaByGram (Eigen::MatrixXd& centred, const VertexAtoms& atoms, const std::vec
     multiplyRowBlocks (centred, blocks, components.weights, centred.leftCols (keep));
     centred.conservativeResize (row, keep);
     pca.basis = std::move (centred);
-  } else {
+  }
+  else {
     pca.basis.resize (row, keep);
     multiplyRowBlocks (centred, blocks, components.weights, pca.basis);
   }
@@ -419,9 +422,8 @@ computePca (const Eigen::MatrixXd& centred, PcaMethod method, int max_components
 {
   requireData (centred, "computePca");
   requireFraction (explained_fraction, "computePca");
-  return useGram (method, centred.rows (), centred.cols ())
-             ? pcaByGram (centred, max_components, explained_fraction)
-             : pcaBySvd (centred, max_components, explained_fraction);
+  return useGram (method, centred.rows (), centred.cols ()) ? pcaByGram (centred, max_components, explained_fraction)
+                                                            : pcaBySvd (centred, max_components, explained_fraction);
 }
 
 int

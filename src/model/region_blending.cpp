@@ -35,7 +35,8 @@ blendRegions (const MeshTopology& topology, const RegionLabels& regions, int ble
       blended[j].vertices.push_back (static_cast<int> (v));
       weights.push_back (ring <= blend_rings ? 1.0 / (ring + 1.0) / weight_sum[v] : 0.0);
     }
-    blended[j].weights = Eigen::Map<const Eigen::VectorXd> (weights.data (), static_cast<Eigen::Index> (weights.size ()));
+    blended[j].weights =
+        Eigen::Map<const Eigen::VectorXd> (weights.data (), static_cast<Eigen::Index> (weights.size ()));
   }
   return blended;
 }

@@ -22,8 +22,8 @@ validateRegionLabels (const RegionLabels& regions, Eigen::Index num_vertices)
   for (size_t v = 0; v < regions.labels.size (); ++v) {
     const int label = regions.labels[v];
     if (label < 0 || label >= static_cast<int> (regions.names.size ()))
-      throw InvalidInputError ("region labels: vertex " + std::to_string (v) + " has label " +
-                               std::to_string (label) + ", valid are 0.." + std::to_string (regions.names.size () - 1));
+      throw InvalidInputError ("region labels: vertex " + std::to_string (v) + " has label " + std::to_string (label) +
+                               ", valid are 0.." + std::to_string (regions.names.size () - 1));
     ++sizes[label];
   }
   for (size_t j = 0; j < sizes.size (); ++j)

@@ -2,7 +2,6 @@
 #include <morphreg/io/json_file.h>
 #include <morphreg/photo/photo_view_io.h>
 
-
 namespace morphreg
 {
 namespace
@@ -90,9 +89,9 @@ saveProfileView (const std::string& path, const ProfileView& view)
     silhouette.push_back ({point.x (), point.y ()});
   const Eigen::Vector2d& nose = view.normalisation ().noseTip ();
   writeJsonFile (path, {{"view", "profile"},
-                    {"image", imageSize (view.normalisation ())},
-                    {"nose_tip", {nose.x (), nose.y ()}},
-                    {"silhouette", silhouette}});
+                        {"image", imageSize (view.normalisation ())},
+                        {"nose_tip", {nose.x (), nose.y ()}},
+                        {"silhouette", silhouette}});
 }
 
 void

@@ -27,8 +27,7 @@ loadRgbImage (const std::string& path)
   int dims[3];
   image->GetDimensions (dims);
   const int components = image->GetNumberOfScalarComponents ();
-  if (dims[0] <= 0 || dims[1] <= 0 || image->GetScalarType () != VTK_UNSIGNED_CHAR || components < 1 ||
-      components > 4)
+  if (dims[0] <= 0 || dims[1] <= 0 || image->GetScalarType () != VTK_UNSIGNED_CHAR || components < 1 || components > 4)
     throw FormatError (path + ": cannot be decoded as an 8-bit grey, RGB or RGBA image");
   RgbImage result{dims[0], dims[1], std::vector<unsigned char> (3 * static_cast<size_t> (dims[0]) * dims[1])};
   const auto* scalars = static_cast<const unsigned char*> (image->GetScalarPointer ());

@@ -57,21 +57,21 @@ twoViewFitJson (const TwoViewFit& fit)
   nlohmann::json rotation = nlohmann::json::array ();
   for (int r = 0; r < 3; ++r)
     rotation.push_back ({fit.rotation (r, 0), fit.rotation (r, 1), fit.rotation (r, 2)});
-  return {
-      {"scale", fit.scale},
-      {"rotation", rotation},
-      {"translation", {fit.translation.x (), fit.translation.y (), fit.translation.z ()}},
-      {"component_counts", fit.selection.counts ()},
-      {"coefficients", std::vector<double> (fit.coefficients.data (), fit.coefficients.data () + fit.coefficients.size ())},
-      {"returned", fit.returned},
-      {"tps_rounds", fit.tps_rounds},
-      {"max_coefficient_sigma", fit.maxCoefficientSigma ()},
-      {"coefficients_beyond_3_sigma", (fit.coefficient_sigmas.array ().abs () > 3.0).count ()},
-      {"shape_distance_sigma", fit.shapeDistance ()},
-      {"plausible_shape", isPlausibleShape (fit.coefficient_sigmas)},
-      {"ignored_landmarks", fit.ignored_landmarks},
-      {"final", iterationJson (fit.final_residuals)},
-      {"history", history}};
+  return {{"scale", fit.scale},
+          {"rotation", rotation},
+          {"translation", {fit.translation.x (), fit.translation.y (), fit.translation.z ()}},
+          {"component_counts", fit.selection.counts ()},
+          {"coefficients",
+           std::vector<double> (fit.coefficients.data (), fit.coefficients.data () + fit.coefficients.size ())},
+          {"returned", fit.returned},
+          {"tps_rounds", fit.tps_rounds},
+          {"max_coefficient_sigma", fit.maxCoefficientSigma ()},
+          {"coefficients_beyond_3_sigma", (fit.coefficient_sigmas.array ().abs () > 3.0).count ()},
+          {"shape_distance_sigma", fit.shapeDistance ()},
+          {"plausible_shape", isPlausibleShape (fit.coefficient_sigmas)},
+          {"ignored_landmarks", fit.ignored_landmarks},
+          {"final", iterationJson (fit.final_residuals)},
+          {"history", history}};
 }
 
 void

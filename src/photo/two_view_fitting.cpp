@@ -62,10 +62,10 @@ struct TwoViewProblem
 {
   PoseShapeLeastSquares shape; ///< the shape stage's solver
   PoseShapeLeastSquares pose;  ///< the similarity stage's (no shape unknowns)
-  Eigen::Matrix3Xd mean; ///< the mean shape's vertices of the slots
+  Eigen::Matrix3Xd mean;       ///< the mean shape's vertices of the slots
   Eigen::Index profile_count;
   std::vector<Eigen::Vector2d> landmarks; ///< normalised (X, Y) of slot profile_count + k
-  std::vector<double> landmark_weights;    ///< the row weight of each landmark
+  std::vector<double> landmark_weights;   ///< the row weight of each landmark
   double sagittal_weight;
   double max_distance;
 };
@@ -133,9 +133,10 @@ twoViewProblem (const MorphableModel& model, const PoseShapeSettings& settings, 
   pose.components = ComponentSelection ();
   PoseShapeLeastSquares shape (model, twoViewVertices (model, targets), settings);
   Eigen::Matrix3Xd mean = shape.vertices (Eigen::VectorXd::Zero (shape.sigma ().size ()));
-  return {std::move (shape), PoseShapeLeastSquares (model, twoViewVertices (model, targets), pose), std::move (mean),
-          static_cast<Eigen::Index> (model.profileLine ().size ()), targets.points, targets.weights,
-          sagittal_weight, max_distance};
+  return {std::move (shape), PoseShapeLeastSquares (model, twoViewVertices (model, targets), pose),
+          std::move (mean),  static_cast<Eigen::Index> (model.profileLine ().size ()),
+          targets.points,    targets.weights,
+          sagittal_weight,   max_distance};
 }
 
 /** \a state with the constrained vertices of \a problem. */
@@ -194,8 +195,8 @@ currentRows (const TwoViewProblem& problem, const Polyline2d& silhouette, const 
     const Eigen::Index slot = problem.profile_count + static_cast<Eigen::Index> (l);
     const Eigen::Vector2d& marked = problem.landmarks[l];
     const double weight = problem.landmark_weights[l];
-    rows.push_back (weightedRow (slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0),
-                                 Eigen::Vector3d (weight, weight, 0.0)));
+    rows.push_back (
+        weightedRow (slot, Eigen::Vector3d (marked.x (), marked.y (), 0.0), Eigen::Vector3d (weight, weight, 0.0)));
     landmark_sum += (marked - posed.col (slot).head<2> ()).squaredNorm () * mm * mm;
   }
   residuals.landmark_rms =
@@ -222,18 +223,18 @@ jointCost (const TwoViewIteration& residuals, double landmark_weight)
  *  stays on the silhouette where the warp's smooth interpolation cannot follow it.
  */
 std::vector<PoseShapeRow>
-tpsTargetRows (const TwoViewProblem& two_view, const std::vector<PoseShapeRow>& image_rows,
-               const PoseShapeState& state)
+tpsTargetRows (const TwoViewProblem& two_view, const std::vector<PoseShapeRow>& image_rows, const PoseShapeState& state)
 {
   const double s = state.scale ();
   const Eigen::Matrix3Xd posed = state.posed ();
-  std::map<int, Eigen::Vector3d> marked; // landmark vertex -> sum of its marks (X, Y) and their count
+  std::map<int, Eigen::Vector3d> marked;  // landmark vertex -> sum of its marks (X, Y) and their count
   std::map<int, Eigen::Vector3d> anchors; // vertex -> its target
   std::map<int, double> weights;          // landmark vertex -> its row weight
   for (const PoseShapeRow& row : image_rows) {
     const int vertex = two_view.shape.slots ()[static_cast<size_t> (row.slot)];
     if (row.slot >= two_view.profile_count) {
-      marked.emplace (vertex, Eigen::Vector3d::Zero ()).first->second += Eigen::Vector3d (row.target.x (), row.target.y (), 1.0);
+      marked.emplace (vertex, Eigen::Vector3d::Zero ()).first->second +=
+          Eigen::Vector3d (row.target.x (), row.target.y (), 1.0);
       weights[vertex] = std::max (weights[vertex], row.metric (0, 0));
     }
     else
@@ -254,14 +255,14 @@ tpsTargetRows (const TwoViewProblem& two_view, const std::vector<PoseShapeRow>& 
   warped *= s;
   // The warped vertices share the weight of the image rows they come from, so the priors weigh as in the joint fit
   // (at weight 1 each the mesh would outweigh them a hundredfold and the fit would follow the warp's extrapolation).
-  const Eigen::Vector3d share = Eigen::Vector3d::Constant (static_cast<double> (image_rows.size ()) /
-                                                           static_cast<double> (warped.cols ()));
+  const Eigen::Vector3d share =
+      Eigen::Vector3d::Constant (static_cast<double> (image_rows.size ()) / static_cast<double> (warped.cols ()));
   std::vector<PoseShapeRow> rows;
   for (Eigen::Index i = 0; i < warped.cols (); ++i)
     rows.push_back (weightedRow (i, warped.col (i), share));
   for (const auto& entry : marked)
-    rows.push_back (weightedRow (entry.first, anchors.at (entry.first),
-                                 Eigen::Vector3d::Constant (weights.at (entry.first))));
+    rows.push_back (
+        weightedRow (entry.first, anchors.at (entry.first), Eigen::Vector3d::Constant (weights.at (entry.first))));
   for (const PoseShapeRow& row : image_rows)
     if (row.slot < two_view.profile_count)
       rows.push_back ({two_view.shape.slots ()[static_cast<size_t> (row.slot)], row.target, row.metric});
@@ -396,7 +397,8 @@ TwoViewFitting::setCoefficientLimit (double sigmas)
 {
   if (!(sigmas > 0.0)) // NaN included; infinity is no limit
     throw InvalidInputError ("TwoViewFitting: the coefficient limit must be > 0 standard deviations (infinity for "
-                             "none), got " + std::to_string (sigmas));
+                             "none), got " +
+                             std::to_string (sigmas));
   settings_.coefficient_limit = sigmas;
 }
 
@@ -447,7 +449,6 @@ TwoViewFitting::fitJoint (const ProfileView& profile, const FrontalView& frontal
 {
   return fit (profile, &frontal);
 }
-
 
 TwoViewFit
 TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& frontal) const
@@ -516,8 +517,7 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
       iteration.stage = stage;
       const std::vector<PoseShapeRow> rows = currentRows (problem, silhouette, state, iteration);
       requireEnoughRows (static_cast<size_t> (iteration.profile_correspondences), 3, "TwoViewFitting",
-                         "profile-line vertices lie within " + std::to_string (max_distance_) +
-                             " mm of the silhouette",
+                         "profile-line vertices lie within " + std::to_string (max_distance_) + " mm of the silhouette",
                          "the silhouette and the max correspondence distance");
       result.history.push_back (iteration);
       const Eigen::Matrix3Xd before = state.posed ();

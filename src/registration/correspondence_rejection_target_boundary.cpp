@@ -11,7 +11,7 @@ CorrespondenceRejectorTargetBoundary::CorrespondenceRejectorTargetBoundary (Targ
 
 void
 CorrespondenceRejectorTargetBoundary::getRemainingCorrespondences (const pcl::Correspondences& original,
-                                                                  pcl::Correspondences& remaining)
+                                                                   pcl::Correspondences& remaining)
 {
   if (!surface_)
     throw InvalidInputError ("CorrespondenceRejectorTargetBoundary: no target surface (call setTargetSurface)");

@@ -41,9 +41,9 @@ requireSettings (const GlobalAlignmentSettings& s)
 {
   if (!(s.voxel_ratio > 0.0) || !(s.min_radius_ratio > 0.0) || !(s.max_radius_ratio > s.min_radius_ratio) ||
       s.centre_candidates < 1 || s.rotation_directions < 1 || s.rotation_twists < 1 || s.score_samples < 10 ||
-      s.rotations_per_anchor < 1 || s.refined_poses < 1 || s.refine_iterations < 0 || s.screen_iterations < 0 || !(s.inlier_fraction > 0.0) ||
-      !(s.inlier_fraction <= 1.0) || !(s.truncation_ratio > 0.0) || !std::isfinite (s.max_radius_ratio) ||
-      !std::isfinite (s.voxel_ratio) || !std::isfinite (s.truncation_ratio))
+      s.rotations_per_anchor < 1 || s.refined_poses < 1 || s.refine_iterations < 0 || s.screen_iterations < 0 ||
+      !(s.inlier_fraction > 0.0) || !(s.inlier_fraction <= 1.0) || !(s.truncation_ratio > 0.0) ||
+      !std::isfinite (s.max_radius_ratio) || !std::isfinite (s.voxel_ratio) || !std::isfinite (s.truncation_ratio))
     throw InvalidInputError ("alignHeadGlobally: the settings need positive, finite ratios with min_radius_ratio < "
                              "max_radius_ratio, at least one candidate, direction, twist and refined pose, "
                              "score_samples >= 10, iterations >= 0 and 0 < inlier_fraction <= 1");
@@ -93,8 +93,8 @@ thinToVoxels (const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals, d
   for (const auto& entry : cells) {
     thinned.points.col (k) = entry.second.sum / entry.second.count;
     const double length = entry.second.normal.norm ();
-    thinned.normals.col (k++) = length > 1e-9 ? Eigen::Vector3d (entry.second.normal / length)
-                                              : Eigen::Vector3d::Constant (std::nan (""));
+    thinned.normals.col (k++) =
+        length > 1e-9 ? Eigen::Vector3d (entry.second.normal / length) : Eigen::Vector3d::Constant (std::nan (""));
   }
   return thinned;
 }
@@ -171,8 +171,9 @@ struct Grid
   centre (Eigen::Index index) const
   {
     const Eigen::Index x = index % size[0], y = (index / size[0]) % size[1], z = index / (size[0] * size[1]);
-    return origin + cell * (Eigen::Vector3d (static_cast<double> (x), static_cast<double> (y), static_cast<double> (z)) +
-                            Eigen::Vector3d::Constant (0.5));
+    return origin +
+           cell * (Eigen::Vector3d (static_cast<double> (x), static_cast<double> (y), static_cast<double> (z)) +
+                   Eigen::Vector3d::Constant (0.5));
   }
 };
 
@@ -240,9 +241,8 @@ houghSpheres (const OrientedPoints& surface, double r_min, double r_max, double 
     if (votes[c] <= 0.0)
       break;
     const Eigen::Vector3d centre = grid.centre (c);
-    const bool distinct = std::all_of (spheres.begin (), spheres.end (), [&] (const Sphere& s) {
-      return (s.centre - centre).norm () >= separation;
-    });
+    const bool distinct = std::all_of (spheres.begin (), spheres.end (),
+                                       [&] (const Sphere& s) { return (s.centre - centre).norm () >= separation; });
     if (distinct)
       spheres.push_back ({centre, radii[c] / votes[c], votes[c]});
   }
@@ -348,8 +348,8 @@ rotationGrid (int directions, int twists)
     const double y = 1.0 - 2.0 * (j + 0.5) / directions;
     const double r = std::sqrt (std::max (0.0, 1.0 - y * y));
     const Eigen::Vector3d direction (r * std::cos (golden * j), y, r * std::sin (golden * j));
-    const Eigen::Matrix3d tilt = Eigen::Quaterniond::FromTwoVectors (Eigen::Vector3d::UnitY (), direction)
-                                     .toRotationMatrix ();
+    const Eigen::Matrix3d tilt =
+        Eigen::Quaterniond::FromTwoVectors (Eigen::Vector3d::UnitY (), direction).toRotationMatrix ();
     for (int t = 0; t < twists; ++t)
       rotations.push_back (tilt * Eigen::AngleAxisd (2.0 * M_PI * t / twists, Eigen::Vector3d::UnitY ()).matrix ());
   }
@@ -402,10 +402,10 @@ scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoin
   for (Eigen::Index i = 0; i < posed.cols (); ++i) {
     const Eigen::Vector3d normal = scan.normals.col (closest.index[i]);
     const double agreement = std::abs ((rotation * samples.normals.col (i)).dot (normal));
-    const double d = agreement >= std::sqrt (0.5) && closest.distance[i] <= truncation
-                         ? std::min (std::abs (normal.dot (posed.col (i) - scan.points.col (closest.index[i]))),
-                                     truncation)
-                         : truncation;
+    const double d =
+        agreement >= std::sqrt (0.5) && closest.distance[i] <= truncation
+            ? std::min (std::abs (normal.dot (posed.col (i) - scan.points.col (closest.index[i]))), truncation)
+            : truncation;
     forward += d;
     covered += d <= near ? 1.0 : 0.0;
   }
@@ -525,8 +525,9 @@ gridPoses (const ModelFrame& model, const OrientedPoints& surface, const std::ve
   // Samples off the model's head sphere (nose, chin, ears, neck) tell the rotations apart; the cranium hardly does.
   Eigen::VectorXd weights (samples.cols ());
   for (Eigen::Index i = 0; i < samples.cols (); ++i)
-    weights[i] = 1.0 + 4.0 * std::min (1.0, std::abs ((samples.col (i) - model.sphere.centre).norm () -
-                                                      model.sphere.radius) / (0.3 * model.sphere.radius));
+    weights[i] =
+        1.0 + 4.0 * std::min (1.0, std::abs ((samples.col (i) - model.sphere.centre).norm () - model.sphere.radius) /
+                                       (0.3 * model.sphere.radius));
   const double truncation = settings.truncation_ratio * model.radius;
   std::vector<Pose> poses;
   for (size_t a = 0; a < anchors.size (); ++a) {
@@ -567,8 +568,8 @@ refinePoses (const ModelFrame& model, const OrientedPoints& surface, const Point
 #pragma omp parallel for schedule(dynamic, 1)
     for (size_t k = 0; k < active.size (); ++k) {
       Pose& pose = poses[active[k]];
-      const Eigen::Vector3d centre = pose.similarity.topLeftCorner<3, 3> () * anchors[pose.anchor].model +
-                                     pose.similarity.topRightCorner<3, 1> ();
+      const Eigen::Vector3d centre =
+          pose.similarity.topLeftCorner<3, 3> () * anchors[pose.anchor].model + pose.similarity.topRightCorner<3, 1> ();
       pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, samples,
                                                   pose.similarity, iterations, settings.inlier_fraction);
       scorePose (*tree, surface, model.samples, truncation, 2.0 * model.voxel, settings.min_radius_ratio,
@@ -594,10 +595,12 @@ double
 runnerUpScore (const std::vector<Pose>& poses, const std::vector<size_t>& ranked, double model_radius)
 {
   const Pose& best = poses[ranked.front ()];
-  const Eigen::Matrix3d best_rotation = best.similarity.topLeftCorner<3, 3> () / detail::similarityScale (best.similarity);
+  const Eigen::Matrix3d best_rotation =
+      best.similarity.topLeftCorner<3, 3> () / detail::similarityScale (best.similarity);
   for (size_t k = 1; k < ranked.size (); ++k) {
     const Pose& other = poses[ranked[k]];
-    const Eigen::Matrix3d rotation = other.similarity.topLeftCorner<3, 3> () / detail::similarityScale (other.similarity);
+    const Eigen::Matrix3d rotation =
+        other.similarity.topLeftCorner<3, 3> () / detail::similarityScale (other.similarity);
     const double shift = (other.similarity.topRightCorner<3, 1> () - best.similarity.topRightCorner<3, 1> ()).norm ();
     if (angleBetween (rotation, best_rotation) > M_PI / 6.0 || shift > model_radius)
       return other.score;
@@ -627,8 +630,8 @@ headIndices (const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& samples, cons
 
 /** The sentence of GlobalAlignment::method. */
 std::string
-methodSentence (const GlobalAlignment& result, const ModelFrame& model, const OrientedPoints& surface,
-                size_t spheres, bool sphere_won, size_t rotations, Eigen::Index scan_points)
+methodSentence (const GlobalAlignment& result, const ModelFrame& model, const OrientedPoints& surface, size_t spheres,
+                bool sphere_won, size_t rotations, Eigen::Index scan_points)
 {
   std::ostringstream method;
   method.precision (3);
@@ -652,10 +655,9 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
   requireInputs (model_mean, scan, scan_normals);
   const ModelFrame model = modelFrame (model_mean, settings);
   const OrientedPoints surface = scanSurface (scan, scan_normals, model.voxel);
-  const std::vector<Sphere> spheres =
-      houghSpheres (surface, settings.min_radius_ratio * model.sphere.radius,
-                    settings.max_radius_ratio * model.sphere.radius, model.voxel, settings.centre_candidates,
-                    model.sphere.radius);
+  const std::vector<Sphere> spheres = houghSpheres (surface, settings.min_radius_ratio * model.sphere.radius,
+                                                    settings.max_radius_ratio * model.sphere.radius, model.voxel,
+                                                    settings.centre_candidates, model.sphere.radius);
   const std::vector<Anchor> anchors = anchorsOf (model, surface, spheres, settings);
   const std::vector<Eigen::Matrix3d> rotations = rotationGrid (settings.rotation_directions, settings.rotation_twists);
   std::vector<Pose> poses = gridPoses (model, surface, anchors, rotations, settings);

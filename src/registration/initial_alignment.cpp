@@ -21,9 +21,9 @@ namespace morphreg
 {
 namespace
 {
-using detail::PointTree;
 using detail::closestPoints;
 using detail::evenSamples;
+using detail::PointTree;
 using detail::pointTree;
 using detail::similarityAbout;
 using detail::transformed;
@@ -95,7 +95,7 @@ principalAxisRotations (const Eigen::Matrix3d& from, const Eigen::Matrix3d& to)
     axes_to.col (2) *= -1.0;
   std::vector<Eigen::Matrix3d> rotations;
   for (const Eigen::Vector3d& flip : {Eigen::Vector3d (1, 1, 1), Eigen::Vector3d (-1, -1, 1),
-                                     Eigen::Vector3d (-1, 1, -1), Eigen::Vector3d (1, -1, -1)})
+                                      Eigen::Vector3d (-1, 1, -1), Eigen::Vector3d (1, -1, -1)})
     rotations.push_back (axes_to * flip.asDiagonal () * axes_from.transpose ());
   return rotations;
 }
@@ -139,8 +139,8 @@ surfacePoints (const Eigen::Matrix3Xd& target, const TargetNeighbourSearch& targ
 
 /** Trimmed mean of the closest-point distances samples -> target and target samples -> posed samples. */
 double
-symmetricScore (const PointTree& tree, const Eigen::Matrix3Xd& samples,
-                const Eigen::Matrix3Xd& target_samples, const Eigen::Matrix4d& pose, double fraction)
+symmetricScore (const PointTree& tree, const Eigen::Matrix3Xd& samples, const Eigen::Matrix3Xd& target_samples,
+                const Eigen::Matrix4d& pose, double fraction)
 {
   const Eigen::Matrix3Xd posed = transformed (pose, samples);
   const double forward = trimmedMean (closestPoints (tree, posed).distance, fraction);
@@ -152,9 +152,8 @@ void
 requireSettings (const CoarseAlignmentSettings& settings)
 {
   if (!(settings.sample_points >= 4) || settings.refine_iterations < 0 || settings.screen_iterations < 0 ||
-      settings.survivors < 1 || !(settings.inlier_fraction > 0.0) ||
-      !(settings.inlier_fraction <= 1.0) || !(settings.tie_tolerance >= 0.0) ||
-      !std::isfinite (settings.hypothesis_angle_deg))
+      settings.survivors < 1 || !(settings.inlier_fraction > 0.0) || !(settings.inlier_fraction <= 1.0) ||
+      !(settings.tie_tolerance >= 0.0) || !std::isfinite (settings.hypothesis_angle_deg))
     throw InvalidInputError ("robustCoarseSimilarity: the settings need sample_points >= 4, refine_iterations >= 0, "
                              "screen_iterations >= 0, survivors >= 1, "
                              "0 < inlier_fraction <= 1, tie_tolerance >= 0 and a finite hypothesis_angle_deg");
@@ -232,7 +231,7 @@ robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& 
     for (std::size_t k = 0; k < active.size (); ++k) {
       const long h = active[k];
       poses[h] = detail::refineSimilarity (tree, surface.points, surface.normals, frame.to.centroid, samples, poses[h],
-                                          iterations, settings.inlier_fraction);
+                                           iterations, settings.inlier_fraction);
       scores[h] = symmetricScore (*tree, samples, target_samples, poses[h], settings.inlier_fraction);
     }
   };
@@ -245,9 +244,8 @@ robustCoarseSimilarity (const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& 
   active.resize (std::min<std::size_t> (active.size (), static_cast<std::size_t> (settings.survivors)));
   refine (active, settings.refine_iterations - screening);
 
-  const double best = scores[*std::min_element (active.begin (), active.end (), [&scores] (long a, long b) {
-    return scores[a] < scores[b];
-  })];
+  const double best = scores[*std::min_element (active.begin (), active.end (),
+                                                [&scores] (long a, long b) { return scores[a] < scores[b]; })];
   long chosen = active.front ();
   double smallest_angle = std::numeric_limits<double>::infinity ();
   for (const long h : active) {

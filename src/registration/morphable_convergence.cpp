@@ -6,13 +6,9 @@ namespace morphreg
 {
 MorphableConvergence::MorphableConvergence (int max_iterations, double motion_epsilon, double fitness_epsilon,
                                             double max_sigma, int rising_iterations)
-  : max_iterations_ (max_iterations),
-    motion_epsilon_ (motion_epsilon),
-    fitness_epsilon_ (fitness_epsilon),
-    max_sigma_ (max_sigma),
-    rising_iterations_ (rising_iterations)
-{
-}
+  : max_iterations_ (max_iterations), motion_epsilon_ (motion_epsilon), fitness_epsilon_ (fitness_epsilon),
+    max_sigma_ (max_sigma), rising_iterations_ (rising_iterations)
+{}
 
 void
 MorphableConvergence::startPhase (int budget, bool check_rising, Eigen::VectorXd sigma)
@@ -52,8 +48,8 @@ MorphableConvergence::update (bool solved, double motion, const Eigen::VectorXd&
   ++phase_iterations_;
   if (max_sigma_ > 0.0 && sigma_.size () > 0 &&
       (coefficients.cwiseAbs ().array () > max_sigma_ * sigma_.array () + 1e-9).any ())
-    diverge (IcpDivergence::prior_exceeded, "a shape coefficient left the prior (more than " +
-                                                std::to_string (max_sigma_) + " standard deviations)");
+    diverge (IcpDivergence::prior_exceeded,
+             "a shape coefficient left the prior (more than " + std::to_string (max_sigma_) + " standard deviations)");
   else if (motion < motion_epsilon_)
     termination_ = IcpTermination::transformation_converged;
   else if (fitness_epsilon_ > 0.0 && std::abs (previous_cost_ - cost_) < fitness_epsilon_)

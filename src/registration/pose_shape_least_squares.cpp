@@ -136,8 +136,8 @@ PoseShapeLeastSquares::vertices (const Eigen::VectorXd& coefficients) const
     for (const RegionEntry& e : model_->vertexEntries (slots_[k])) {
       const int count = selection.count (e.region);
       if (count > 0)
-        p += e.weight * (model_->regionRows (e.region, e.row, count) *
-                         coefficients.segment (selection.offset (e.region), count));
+        p += e.weight *
+             (model_->regionRows (e.region, e.row, count) * coefficients.segment (selection.offset (e.region), count));
     }
     positions.col (static_cast<Eigen::Index> (k)) = p;
   }
@@ -189,7 +189,7 @@ PoseShapeLeastSquares::normalEquations (const PoseShapeState& state, const std::
   const Eigen::Matrix3d sr = state.scale () * state.rotation;
   const double row_scale = settings_.model_units ? inverse_scale2 : 1.0;
   const auto count_rows = static_cast<long> (rows.size ());
-#pragma omp parallel if (shape && rows.size () >= kParallelRows)
+#pragma omp parallel if (shape && rows.size() >= kParallelRows)
   {
     Eigen::MatrixXd h = Eigen::MatrixXd::Zero (dim, dim);
     Eigen::VectorXd g = Eigen::VectorXd::Zero (dim);

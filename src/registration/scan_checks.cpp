@@ -32,8 +32,7 @@ requireFinitePoints (const Eigen::Matrix3Xd& points, const std::string& name)
 {
   for (Eigen::Index i = 0; i < points.cols (); ++i)
     if (!points.col (i).allFinite ())
-      throw InvalidInputError (name + ": point " + std::to_string (i) + " is not finite " +
-                               pointText (points.col (i)));
+      throw InvalidInputError (name + ": point " + std::to_string (i) + " is not finite " + pointText (points.col (i)));
 }
 
 /** Throws when \a points are one point, on a line or in a plane: their principal spreads (standard deviations along
@@ -51,8 +50,8 @@ requireThreeDimensionalSpread (const Eigen::Matrix3Xd& points, const std::string
   if (spread[2] <= kIdenticalSpread * magnitude)
     throw InvalidInputError (name + ": all " + count + " points are identical " + pointText (centroid));
   if (spread[1] <= kCollinearSpread * spread[2])
-    throw InvalidInputError (name + ": the " + count + " points are collinear (they spread " +
-                             numberText (spread[2]) + " along a line and " + numberText (spread[1]) + " across it)");
+    throw InvalidInputError (name + ": the " + count + " points are collinear (they spread " + numberText (spread[2]) +
+                             " along a line and " + numberText (spread[1]) + " across it)");
   if (spread[0] < kFlatSpread * spread[2])
     throw InvalidInputError (name + ": the " + count + " points lie in a plane (spread " + numberText (spread[0]) +
                              " across it against " + numberText (spread[2]) +

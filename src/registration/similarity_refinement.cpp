@@ -102,8 +102,8 @@ closestPoints (const PointTree& tree, const Eigen::Matrix3Xd& points)
 
 Eigen::Matrix4d
 refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& normals,
-                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
-                  int iterations, double inlier_fraction)
+                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose, int iterations,
+                  double inlier_fraction)
 {
   const PoseShapeLeastSquares solver;
   // The samples move less each step, so the cached estimation skips most of the tree queries.

@@ -44,8 +44,8 @@ closestPoints (const PointTree& tree, const Eigen::Matrix3Xd& points);
  */
 Eigen::Matrix4d
 refineSimilarity (const PointTree::Ptr& tree, const Eigen::Matrix3Xd& target, const Eigen::Matrix3Xd& normals,
-                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose,
-                  int iterations, double inlier_fraction);
+                  const Eigen::Vector3d& centre, const Eigen::Matrix3Xd& samples, Eigen::Matrix4d pose, int iterations,
+                  double inlier_fraction);
 
 /** The similarity x -> scale R (x - from) + to. */
 Eigen::Matrix4d

@@ -18,8 +18,8 @@ summarise (SurfaceDistance& result)
 {
   const auto n = static_cast<double> (result.distances.size ());
   result.mean = std::accumulate (result.distances.begin (), result.distances.end (), 0.0) / n;
-  result.rms = std::sqrt (std::inner_product (result.distances.begin (), result.distances.end (),
-                                              result.distances.begin (), 0.0) / n);
+  result.rms = std::sqrt (
+      std::inner_product (result.distances.begin (), result.distances.end (), result.distances.begin (), 0.0) / n);
   result.max = *std::max_element (result.distances.begin (), result.distances.end ());
   result.median = percentile (result.distances, 0.5);
   result.percentile95 = percentile (result.distances, 0.95);

@@ -78,7 +78,8 @@ makeCubeSphere (int resolution, double front_density)
       for (int u = -h; u < h; ++u)
         for (int v = -h; v < h; ++v) {
           const int q[4] = {vertexOf (facePoint (axis, sign, u, v, h)), vertexOf (facePoint (axis, sign, u + 1, v, h)),
-                            vertexOf (facePoint (axis, sign, u + 1, v + 1, h)), vertexOf (facePoint (axis, sign, u, v + 1, h))};
+                            vertexOf (facePoint (axis, sign, u + 1, v + 1, h)),
+                            vertexOf (facePoint (axis, sign, u, v + 1, h))};
           // Split along the shorter diagonal; ties by the side of x = 0 so the mesh stays mirror-symmetric.
           const double d02 = (vertices[q[0]] - vertices[q[2]]).squaredNorm ();
           const double d13 = (vertices[q[1]] - vertices[q[3]]).squaredNorm ();

@@ -22,24 +22,15 @@ const std::vector<std::pair<std::string, Eigen::Vector3d>>&
 sidedLandmarkAnchors ()
 {
   static const std::vector<std::pair<std::string, Eigen::Vector3d>> anchors = {
-      {"eyebrow", {-30.0, 50.0, 87.0}},
-      {"eye_outer", {-45.5, 33.0, 73.0}},
-      {"eye_inner", {-17.5, 33.0, 82.0}},
-      {"nose_wing", {-16.0, -8.0, 88.0}},
-      {"mouth_corner", {-25.0, -42.0, 88.0}},
-      {"philtrum", {-5.0, -30.0, 95.0}},
-      {"lower_lip", {-10.0, -51.0, 92.0}},
-      {"ear_attachment_top", {-70.0, 40.0, 0.0}},
-      {"ear_top", {-78.0, 40.0, -9.0}},
-      {"ear_middle", {-80.0, 14.0, -12.0}},
-      {"earlobe", {-76.0, -15.0, -6.0}},
-      {"earlobe_attachment", {-70.0, -15.0, 2.0}},
-      {"tragus", {-72.0, 9.0, 9.0}},
-      {"jaw", {-60.0, -40.0, 40.0}},
-      {"jaw_middle", {-48.0, -70.0, 55.0}},
-      {"chin", {-20.0, -92.0, 72.0}},
-      {"neck_top", {-55.0, -105.0, 0.0}},
-      {"neck_contour", {-60.0, -150.0, -10.0}},
+      {"eyebrow", {-30.0, 50.0, 87.0}},       {"eye_outer", {-45.5, 33.0, 73.0}},
+      {"eye_inner", {-17.5, 33.0, 82.0}},     {"nose_wing", {-16.0, -8.0, 88.0}},
+      {"mouth_corner", {-25.0, -42.0, 88.0}}, {"philtrum", {-5.0, -30.0, 95.0}},
+      {"lower_lip", {-10.0, -51.0, 92.0}},    {"ear_attachment_top", {-70.0, 40.0, 0.0}},
+      {"ear_top", {-78.0, 40.0, -9.0}},       {"ear_middle", {-80.0, 14.0, -12.0}},
+      {"earlobe", {-76.0, -15.0, -6.0}},      {"earlobe_attachment", {-70.0, -15.0, 2.0}},
+      {"tragus", {-72.0, 9.0, 9.0}},          {"jaw", {-60.0, -40.0, 40.0}},
+      {"jaw_middle", {-48.0, -70.0, 55.0}},   {"chin", {-20.0, -92.0, 72.0}},
+      {"neck_top", {-55.0, -105.0, 0.0}},     {"neck_contour", {-60.0, -150.0, -10.0}},
       {"head_contour", {-75.0, 40.0, 0.0}}};
   return anchors;
 }
@@ -48,9 +39,9 @@ const std::vector<std::pair<std::string, Eigen::Vector3d>>&
 midlineLandmarkAnchors ()
 {
   static const std::vector<std::pair<std::string, Eigen::Vector3d>> anchors = {
-      {"nose_tip", anatomy::kNoseTip},       {"upper_lip_center", anatomy::kUpperLip},
-      {"mouth_center", anatomy::kMouth},     {"lower_lip_center", anatomy::kLowerLip},
-      {"nasion", anatomy::kNasion},          {"chin", {0.0, -100.0, 62.0}},
+      {"nose_tip", anatomy::kNoseTip},   {"upper_lip_center", anatomy::kUpperLip},
+      {"mouth_center", anatomy::kMouth}, {"lower_lip_center", anatomy::kLowerLip},
+      {"nasion", anatomy::kNasion},      {"chin", {0.0, -100.0, 62.0}},
       {"forehead", {0.0, 85.0, 80.0}}};
   return anchors;
 }

@@ -22,8 +22,8 @@ makeRange (const char* name, double HeadParameters::*member, double stddev)
 bool
 isSizeLike (const std::string& name)
 {
-  static const char* sized[] = {"head_length", "head_breadth", "head_height", "face_width", "jaw_width",
-                                "nose_length", "mouth_width", "eye_separation", "ear_length", "neck_girth"};
+  static const char* sized[] = {"head_length", "head_breadth", "head_height",    "face_width", "jaw_width",
+                                "nose_length", "mouth_width",  "eye_separation", "ear_length", "neck_girth"};
   return std::find (std::begin (sized), std::end (sized), name) != std::end (sized);
 }
 } // namespace
@@ -32,17 +32,26 @@ const std::vector<HeadParameters::Range>&
 HeadParameters::ranges ()
 {
   using P = HeadParameters;
-  static const std::vector<Range> table = {
-      makeRange ("head_length", &P::head_length, 7.0),       makeRange ("head_breadth", &P::head_breadth, 6.0),
-      makeRange ("head_height", &P::head_height, 9.0),       makeRange ("face_width", &P::face_width, 6.0),
-      makeRange ("jaw_width", &P::jaw_width, 6.0),           makeRange ("nose_length", &P::nose_length, 4.0),
-      makeRange ("nose_width", &P::nose_width, 3.0),         makeRange ("nose_projection", &P::nose_projection, 2.5),
-      makeRange ("mouth_width", &P::mouth_width, 4.0),       makeRange ("lip_thickness", &P::lip_thickness, 1.8),
-      makeRange ("chin_projection", &P::chin_projection, 2.5), makeRange ("eye_separation", &P::eye_separation, 3.0),
-      makeRange ("eye_depth", &P::eye_depth, 1.5),           makeRange ("brow_ridge", &P::brow_ridge, 1.6),
-      makeRange ("cheek_fullness", &P::cheek_fullness, 1.6), makeRange ("ear_length", &P::ear_length, 4.0),
-      makeRange ("ear_protrusion", &P::ear_protrusion, 4.0), makeRange ("ear_height", &P::ear_height, 4.0),
-      makeRange ("neck_girth", &P::neck_girth, 25.0),        makeRange ("neck_length", &P::neck_length, 8.0)};
+  static const std::vector<Range> table = {makeRange ("head_length", &P::head_length, 7.0),
+                                           makeRange ("head_breadth", &P::head_breadth, 6.0),
+                                           makeRange ("head_height", &P::head_height, 9.0),
+                                           makeRange ("face_width", &P::face_width, 6.0),
+                                           makeRange ("jaw_width", &P::jaw_width, 6.0),
+                                           makeRange ("nose_length", &P::nose_length, 4.0),
+                                           makeRange ("nose_width", &P::nose_width, 3.0),
+                                           makeRange ("nose_projection", &P::nose_projection, 2.5),
+                                           makeRange ("mouth_width", &P::mouth_width, 4.0),
+                                           makeRange ("lip_thickness", &P::lip_thickness, 1.8),
+                                           makeRange ("chin_projection", &P::chin_projection, 2.5),
+                                           makeRange ("eye_separation", &P::eye_separation, 3.0),
+                                           makeRange ("eye_depth", &P::eye_depth, 1.5),
+                                           makeRange ("brow_ridge", &P::brow_ridge, 1.6),
+                                           makeRange ("cheek_fullness", &P::cheek_fullness, 1.6),
+                                           makeRange ("ear_length", &P::ear_length, 4.0),
+                                           makeRange ("ear_protrusion", &P::ear_protrusion, 4.0),
+                                           makeRange ("ear_height", &P::ear_height, 4.0),
+                                           makeRange ("neck_girth", &P::neck_girth, 25.0),
+                                           makeRange ("neck_length", &P::neck_length, 8.0)};
   return table;
 }
 

@@ -14,10 +14,10 @@ namespace synthetic
 {
 namespace
 {
-constexpr double kTopOfHead = 128.0; ///< y of the vertex; the chin hangs head_height below it
-constexpr double kBlendFace = 12.0;  ///< mm over which the face merges into the cranium
-constexpr double kBlendJaw = 24.0;   ///< ... the jaw into face and cranium
-constexpr double kBlendNeck = 30.0;  ///< ... the neck into the head
+constexpr double kTopOfHead = 128.0;     ///< y of the vertex; the chin hangs head_height below it
+constexpr double kBlendFace = 12.0;      ///< mm over which the face merges into the cranium
+constexpr double kBlendJaw = 24.0;       ///< ... the jaw into face and cranium
+constexpr double kBlendNeck = 30.0;      ///< ... the neck into the head
 constexpr double kNeckCutRounding = 6.0; ///< mm of rounding where the neck's cut meets its side
 
 /** Polynomial smooth maximum: equals max(a, b) when they differ by more than k, rounds the crease otherwise. */
@@ -71,7 +71,8 @@ HeadShape::HeadShape (const HeadParameters& p)
               Eigen::Vector3d (p.head_breadth / 2.0, kTopOfHead - cranium_centre_y, p.head_length / 2.0)};
   face_ = {Eigen::Vector3d (0.0, -10.0, 18.0), Eigen::Vector3d (p.face_width / 2.0, 55.0, 72.0)};
   const double jaw_half_height = 46.0;
-  jaw_ = {Eigen::Vector3d (0.0, menton + jaw_half_height, 22.0), Eigen::Vector3d (p.jaw_width / 2.0, jaw_half_height, 66.0)};
+  jaw_ = {Eigen::Vector3d (0.0, menton + jaw_half_height, 22.0),
+          Eigen::Vector3d (p.jaw_width / 2.0, jaw_half_height, 66.0)};
   // Elliptic neck section 1.1 : 0.9 whose perimeter (Ramanujan-free RMS approximation) is the girth.
   const double neck_radius = p.neck_girth / (2.0 * M_PI * std::sqrt ((1.1 * 1.1 + 0.9 * 0.9) / 2.0));
   neck_axes_ = Eigen::Vector2d (1.1 * neck_radius, 0.9 * neck_radius);
@@ -98,15 +99,17 @@ HeadShape::HeadShape (const HeadParameters& p)
   // Sizes of features that must not slide over the vertices: {centre, scale, shift, radius}
   const HeadParameters mean;
   const Eigen::Vector3d none = Eigen::Vector3d::Zero (), unit = Eigen::Vector3d::Ones ();
-  warps_.push_back ({kNoseCentre, Eigen::Vector3d (p.nose_width / mean.nose_width, p.nose_length / mean.nose_length, 1.0),
-                     none, 24.0});
+  warps_.push_back ({kNoseCentre,
+                     Eigen::Vector3d (p.nose_width / mean.nose_width, p.nose_length / mean.nose_length, 1.0), none,
+                     24.0});
   warps_.push_back ({kMouth, Eigen::Vector3d (p.mouth_width / mean.mouth_width, 1.0, 1.0), none, 22.0});
   const double eye_shift = (p.eye_separation - mean.eye_separation) / 2.0;
   warps_.push_back ({kRightEye, unit, Eigen::Vector3d (-eye_shift, 0.0, 0.0), 20.0});
   warps_.push_back ({mirrored (kRightEye), unit, Eigen::Vector3d (eye_shift, 0.0, 0.0), 20.0});
   const double ear_scale = p.ear_length / mean.ear_length;
   for (const Eigen::Vector3d& ear : {kRightEar, mirrored (kRightEar)})
-    warps_.push_back ({ear, Eigen::Vector3d (1.0, ear_scale, ear_scale), Eigen::Vector3d (0.0, p.ear_height, 0.0), 36.0});
+    warps_.push_back (
+        {ear, Eigen::Vector3d (1.0, ear_scale, ear_scale), Eigen::Vector3d (0.0, p.ear_height, 0.0), 36.0});
 }
 
 double

@@ -15,12 +15,12 @@ namespace synthetic
  */
 struct SurfaceBump
 {
-  Eigen::Vector3d anchor;  ///< a point on the mean head whose direction centres the bump
-  double amplitude;        ///< mm, positive outwards
-  double width;            ///< horizontal standard width, mm
-  double height_up;        ///< vertical width above the centre, mm
-  double height_down;      ///< vertical width below the centre, mm
-  double flatness;         ///< exponent of the profile
+  Eigen::Vector3d anchor; ///< a point on the mean head whose direction centres the bump
+  double amplitude;       ///< mm, positive outwards
+  double width;           ///< horizontal standard width, mm
+  double height_up;       ///< vertical width above the centre, mm
+  double height_down;     ///< vertical width below the centre, mm
+  double flatness;        ///< exponent of the profile
 };
 
 /** \brief A smooth local deformation after the bumps: scale about `centre` (per axis) and shift, weighted by a

@@ -45,8 +45,7 @@ sliceAtHeight (const TriangleMesh& mesh, double height)
 }
 
 SliceHit
-firstHit (const std::vector<SliceSegment>& segments, const Eigen::Vector2d& origin,
-          const Eigen::Vector2d& direction)
+firstHit (const std::vector<SliceSegment>& segments, const Eigen::Vector2d& origin, const Eigen::Vector2d& direction)
 {
   SliceHit hit;
   double nearest = std::numeric_limits<double>::infinity ();

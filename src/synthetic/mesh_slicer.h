@@ -30,8 +30,7 @@ struct SliceHit
 
 /** The first segment the 2D ray \a origin + t \a direction (t > 0) meets, or segment -1. */
 SliceHit
-firstHit (const std::vector<SliceSegment>& segments, const Eigen::Vector2d& origin,
-          const Eigen::Vector2d& direction);
+firstHit (const std::vector<SliceSegment>& segments, const Eigen::Vector2d& origin, const Eigen::Vector2d& direction);
 
 } // namespace synthetic
 } // namespace morphreg

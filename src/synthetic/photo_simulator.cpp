@@ -71,14 +71,14 @@ PhotoSimulator::photograph (const Eigen::Matrix3Xd& head, const LandmarkVertices
   std::vector<Eigen::Vector2d> silhouette;
   const int steps = p.silhouette_subdivisions + 1;
   for (size_t k = 0; k < profile_line.size (); ++k) {
-    const Eigen::Vector2d a = pixel (head.col (requireVertex (profile_line[k], head, "profile line")), 2,
-                                     p.profile_nose);
+    const Eigen::Vector2d a =
+        pixel (head.col (requireVertex (profile_line[k], head, "profile line")), 2, p.profile_nose);
     if (k + 1 == profile_line.size ()) {
       silhouette.push_back (a + jitter (silhouette_noise));
       break;
     }
-    const Eigen::Vector2d b = pixel (head.col (requireVertex (profile_line[k + 1], head, "profile line")), 2,
-                                     p.profile_nose);
+    const Eigen::Vector2d b =
+        pixel (head.col (requireVertex (profile_line[k + 1], head, "profile line")), 2, p.profile_nose);
     for (int s = 0; s < steps; ++s)
       silhouette.push_back (a + (b - a) * (static_cast<double> (s) / steps) + jitter (silhouette_noise));
   }
@@ -86,9 +86,7 @@ PhotoSimulator::photograph (const Eigen::Matrix3Xd& head, const LandmarkVertices
 
   const double scale = p.pixels_per_mm / static_cast<double> (std::max (p.width, p.height));
   return {ProfileView (p.width, p.height, std::move (silhouette), profile_nose, "PhotoSimulator"),
-          FrontalView (p.width, p.height, std::move (marked), "PhotoSimulator"),
-          scale,
-          p.rotation,
+          FrontalView (p.width, p.height, std::move (marked), "PhotoSimulator"), scale, p.rotation,
           -scale * (p.rotation * nose_tip)};
 }
 } // namespace synthetic

@@ -189,15 +189,15 @@ ScanSimulator::ScanSimulator (const Parameters& parameters) : parameters_ (param
   const Parameters& p = parameters;
   requireSetting (p.angular_samples >= 8, "angular_samples", p.angular_samples, "at least 8");
   requireSetting (p.row_spacing > 0.0, "row_spacing", p.row_spacing, "positive (mm)");
-  requireSetting (p.max_incidence_deg > 0.0 && p.max_incidence_deg < 90.0, "max_incidence_deg",
-                  p.max_incidence_deg, "in (0, 90)");
+  requireSetting (p.max_incidence_deg > 0.0 && p.max_incidence_deg < 90.0, "max_incidence_deg", p.max_incidence_deg,
+                  "in (0, 90)");
   requireSetting (p.camera_elevation_deg >= 0.0 && p.camera_elevation_deg < 90.0, "camera_elevation_deg",
                   p.camera_elevation_deg, "in [0, 90)");
   requireSetting (p.noise_sigma >= 0.0, "noise_sigma", p.noise_sigma, "non-negative (mm)");
   requireSetting (p.outlier_fraction >= 0.0 && p.outlier_fraction <= 0.5, "outlier_fraction", p.outlier_fraction,
                   "in [0, 0.5]");
-  requireSetting (p.max_rotation_deg >= 0.0 && p.max_rotation_deg <= 180.0, "max_rotation_deg",
-                  p.max_rotation_deg, "in [0, 180]");
+  requireSetting (p.max_rotation_deg >= 0.0 && p.max_rotation_deg <= 180.0, "max_rotation_deg", p.max_rotation_deg,
+                  "in [0, 180]");
   requireSetting (p.max_scale_deviation >= 0.0 && p.max_scale_deviation < 0.5, "max_scale_deviation",
                   p.max_scale_deviation, "in [0, 0.5)");
   requireSetting (p.max_translation >= 0.0, "max_translation", p.max_translation, "non-negative (mm)");

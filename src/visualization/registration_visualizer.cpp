@@ -183,8 +183,7 @@ RegistrationVisualizer::addTargetMesh (const TriangleMesh& mesh, const std::stri
 }
 
 void
-RegistrationVisualizer::addModelMesh (const pcl::PolygonMesh& mesh, double opacity, const std::string& id,
-                                      int viewport)
+RegistrationVisualizer::addModelMesh (const pcl::PolygonMesh& mesh, double opacity, const std::string& id, int viewport)
 {
   addMesh (mesh, kModelColour, opacity, id, viewport);
 }
@@ -280,8 +279,8 @@ RegistrationVisualizer::addColourBar (double max_residual_mm, int viewport)
 }
 
 void
-RegistrationVisualizer::addLandmarks (const LandmarkPositions& landmarks, LandmarkRole role, double radius,
-                                      bool labels, const std::string& id_prefix, int viewport)
+RegistrationVisualizer::addLandmarks (const LandmarkPositions& landmarks, LandmarkRole role, double radius, bool labels,
+                                      const std::string& id_prefix, int viewport)
 {
   if (!(radius > 0.0))
     throw InvalidInputError ("RegistrationVisualizer: landmark radius must be positive");
@@ -298,20 +297,18 @@ RegistrationVisualizer::addLandmarks (const LandmarkPositions& landmarks, Landma
       continue;
     visualizer_->removeText3D (id + "_label", viewport);
     centre.x += static_cast<float> (1.5 * radius);
-    visualizer_->addText3D (name, centre, 2.0 * radius, colour.x (), colour.y (), colour.z (), id + "_label",
-                            viewport);
+    visualizer_->addText3D (name, centre, 2.0 * radius, colour.x (), colour.y (), colour.z (), id + "_label", viewport);
   }
 }
 
 void
 RegistrationVisualizer::showRegistrationState (const CloudXYZ::ConstPtr& source, const pcl::Indices& source_indices,
                                                const CloudXYZ::ConstPtr& target, bool target_changed,
-                                               const pcl::Indices& target_indices, int viewport,
-                                               std::size_t max_lines)
+                                               const pcl::Indices& target_indices, int viewport, std::size_t max_lines)
 {
   if (source_indices.size () != target_indices.size ())
-    throw InvalidInputError ("RegistrationVisualizer: " + std::to_string (source_indices.size ()) +
-                             " source but " + std::to_string (target_indices.size ()) + " target indices");
+    throw InvalidInputError ("RegistrationVisualizer: " + std::to_string (source_indices.size ()) + " source but " +
+                             std::to_string (target_indices.size ()) + " target indices");
   ++registration_updates_;
   if (target_changed)
     addColouredCloud (target, kTargetColour, 2.0, "registration_target", viewport);
@@ -429,13 +426,13 @@ RegistrationVisualizer::spinOnce (int milliseconds)
 
 } // namespace morphreg
 
-#define MORPHREG_INSTANTIATE_REGISTRATION_VISUALIZER(T)                                                           \
-  template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&, const std::string&, \
-                                                                      int, double);                                \
-  template void morphreg::RegistrationVisualizer::addCorrespondences<T, T> (                                        \
-      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&, std::size_t,              \
-      const std::string&, int);                                                                                    \
-  template morphreg::RegistrationVisualizer::RegistrationCallback<T, T>                                             \
+#define MORPHREG_INSTANTIATE_REGISTRATION_VISUALIZER(T)                                                                \
+  template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&, const std::string&,    \
+                                                                     int, double);                                     \
+  template void morphreg::RegistrationVisualizer::addCorrespondences<T, T> (                                           \
+      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&, std::size_t,                  \
+      const std::string&, int);                                                                                        \
+  template morphreg::RegistrationVisualizer::RegistrationCallback<T, T>                                                \
   morphreg::RegistrationVisualizer::makeRegistrationCallback<T, T> (int, std::size_t);
 MORPHREG_INSTANTIATE_REGISTRATION_VISUALIZER (pcl::PointXYZ)
 MORPHREG_INSTANTIATE_REGISTRATION_VISUALIZER (pcl::PointNormal)

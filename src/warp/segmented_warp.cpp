@@ -87,8 +87,8 @@ SegmentedWarp::setLandmarks (const TriangleMesh& mesh, const Eigen::Matrix3Xd& s
                              const std::vector<double>& overlap)
 {
   if (static_cast<int> (overlap.size ()) != numSegments ())
-    throw InvalidInputError ("SegmentedWarp::setLandmarks: " + std::to_string (overlap.size ()) +
-                             " overlaps for " + std::to_string (numSegments ()) + " segments");
+    throw InvalidInputError ("SegmentedWarp::setLandmarks: " + std::to_string (overlap.size ()) + " overlaps for " +
+                             std::to_string (numSegments ()) + " segments");
   if (source.cols () != target.cols ())
     throw InvalidInputError ("SegmentedWarp::setLandmarks: " + std::to_string (source.cols ()) + " source but " +
                              std::to_string (target.cols ()) + " target landmarks");

@@ -44,8 +44,7 @@ requireLandmarkPairs (const Eigen::MatrixXd& source, const Eigen::MatrixXd& targ
     msg << "source landmarks are " << source.rows () << "-dimensional but targets are " << target.rows ()
         << "-dimensional";
   else if (source.cols () != target.cols ())
-    msg << "mismatched landmark counts: " << source.cols () << " source landmarks but " << target.cols ()
-        << " targets";
+    msg << "mismatched landmark counts: " << source.cols () << " source landmarks but " << target.cols () << " targets";
   else if (source.rows () != 2 && source.rows () != 3)
     msg << source.rows () << "-dimensional landmarks; thin plate splines here are 2D or 3D";
   else if (source.cols () == 0)
@@ -109,7 +108,8 @@ requireAffineSpan (const Eigen::MatrixXd& landmarks, Eigen::Index merged, const 
     msg << "only " << n << " distinct landmark(s)";
     if (merged > 0)
       msg << " (after merging " << merged << " duplicate(s))";
-    msg << "; a " << d << "D thin plate spline needs at least " << d + 1 << " not all " << (d == 3 ? "coplanar" : "collinear");
+    msg << "; a " << d << "D thin plate spline needs at least " << d + 1 << " not all "
+        << (d == 3 ? "coplanar" : "collinear");
     throw InvalidInputError (msg.str ());
   }
   const Eigen::MatrixXd centred = landmarks.rowwise () - landmarks.colwise ().mean ();
@@ -139,7 +139,7 @@ public:
     p << Eigen::VectorXd::Ones (n), centred;
     qr_.compute (p);
     q_k_q_.resize (n, n);
-#pragma omp parallel for schedule(static) if (double (n) * double (n) > kTpsParallelPairs)
+#pragma omp parallel for schedule(static) if (double(n) * double(n) > kTpsParallelPairs)
     for (Eigen::Index j = 0; j < n; ++j) {
       double* column = q_k_q_.col (j).data ();
 #pragma omp simd
@@ -185,8 +185,10 @@ public:
     w = Eigen::MatrixXd::Zero (q_k_q_.rows (), D);
     w.bottomRows (m) = g;
     w.applyOnTheLeft (qr_.householderQ ());
-    a = qr_.matrixQR ().topLeftCorner (D + 1, D + 1).template triangularView<Eigen::Upper> ().solve (
-        qy.topRows (D + 1) - q_k_q_.topRightCorner (D + 1, m) * g);
+    a = qr_.matrixQR ()
+            .topLeftCorner (D + 1, D + 1)
+            .template triangularView<Eigen::Upper> ()
+            .solve (qy.topRows (D + 1) - q_k_q_.topRightCorner (D + 1, m) * g);
   }
 
   /** sign trace(W^T K W) = |L^T g|^2 - lambda |g|^2 with g = Q2^T W. */
@@ -244,8 +246,8 @@ fitDistinct (const Eigen::MatrixXd& landmarks, const Eigen::MatrixXd& y, double 
   std::ostringstream msg;
   msg << options.caller << ": the spline system of " << landmarks.rows () << " landmarks is ";
   if (!system.positiveDefinite () || !(condition <= options.max_condition_number)) {
-    msg << "ill-conditioned (condition estimate " << condition << ", limit "
-        << options.max_condition_number << "); landmarks nearly coincide or are nearly flat";
+    msg << "ill-conditioned (condition estimate " << condition << ", limit " << options.max_condition_number
+        << "); landmarks nearly coincide or are nearly flat";
     throw NumericalError (msg.str ());
   }
 

@@ -42,8 +42,8 @@ headAndShoulders ()
     for (double z = -60.0; z <= 60.0; z += 5.0)
       shoulders.emplace_back (x, -200.0 - 0.002 * x * x, z);
   Eigen::Matrix3Xd points (3, head.cols () + static_cast<Eigen::Index> (shoulders.size ()));
-  points << head, Eigen::Map<const Eigen::Matrix3Xd> (shoulders.front ().data (), 3,
-                                                      static_cast<Eigen::Index> (shoulders.size ()));
+  points << head,
+      Eigen::Map<const Eigen::Matrix3Xd> (shoulders.front ().data (), 3, static_cast<Eigen::Index> (shoulders.size ()));
   return points;
 }
 
@@ -58,8 +58,8 @@ TEST (UnitGuessTest, HeadAloneIsRecognisedInEveryUnit)
 {
   const Eigen::Matrix3Xd head = ellipsoidHead (3000);
   for (const LengthUnit unit : kUnits) {
-    const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (head / morphreg::millimetresPer (unit),
-                                                                       modelRadius ());
+    const morphreg::LengthUnitGuess guess =
+        morphreg::guessLengthUnit (head / morphreg::millimetresPer (unit), modelRadius ());
     EXPECT_EQ (guess.unit, unit) << guess.reason;
     EXPECT_NEAR (guess.size_ratio * morphreg::millimetresPer (unit), 0.95, 0.1) << guess.reason;
   }
@@ -69,8 +69,8 @@ TEST (UnitGuessTest, HeadWithShouldersIsRecognisedInEveryUnit)
 {
   const Eigen::Matrix3Xd scan = headAndShoulders ();
   for (const LengthUnit unit : kUnits) {
-    const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (scan / morphreg::millimetresPer (unit),
-                                                                       modelRadius ());
+    const morphreg::LengthUnitGuess guess =
+        morphreg::guessLengthUnit (scan / morphreg::millimetresPer (unit), modelRadius ());
     EXPECT_EQ (guess.unit, unit) << guess.reason;
     EXPECT_NEAR (guess.size_ratio * morphreg::millimetresPer (unit), 1.5, 0.2) << guess.reason;
   }
@@ -79,7 +79,7 @@ TEST (UnitGuessTest, HeadWithShouldersIsRecognisedInEveryUnit)
 TEST (UnitGuessTest, FarOutliersDoNotChangeTheGuess)
 {
   Eigen::Matrix3Xd scan = ellipsoidHead (3000) / 1000.0; // metres
-  for (Eigen::Index i = 0; i < scan.cols (); i += 40)      // 2.5 % of the points 50 m away
+  for (Eigen::Index i = 0; i < scan.cols (); i += 40)    // 2.5 % of the points 50 m away
     scan.col (i) = Eigen::Vector3d (50.0, -30.0, 20.0);
   const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (scan, modelRadius ());
   EXPECT_EQ (guess.unit, LengthUnit::metre) << guess.reason;
@@ -89,11 +89,10 @@ TEST (UnitGuessTest, FarOutliersDoNotChangeTheGuess)
 TEST (UnitGuessTest, EachUnitIsRecognisedOverItsDocumentedSizes)
 {
   // length_unit.h: the sizes (scan over model, in the scan's true unit) each unit is recognised over.
-  const std::vector<std::pair<LengthUnit, std::pair<double, double>>> ranges = {
-      {LengthUnit::millimetre, {0.45, 9.9}},
-      {LengthUnit::centimetre, {0.75, 4.4}},
-      {LengthUnit::metre, {0.31, 9.9}},
-      {LengthUnit::inch, {0.31, 1.87}}};
+  const std::vector<std::pair<LengthUnit, std::pair<double, double>>> ranges = {{LengthUnit::millimetre, {0.45, 9.9}},
+                                                                                {LengthUnit::centimetre, {0.75, 4.4}},
+                                                                                {LengthUnit::metre, {0.31, 9.9}},
+                                                                                {LengthUnit::inch, {0.31, 1.87}}};
   const Eigen::Matrix3Xd head = ellipsoidHead (1000);
   const double head_radius = morphreg::guessLengthUnit (head, 1.0).size_ratio; // its robust radius, mm
   for (const auto& [unit, range] : ranges)
@@ -140,8 +139,7 @@ TEST (UnitGuessTest, BadInputIsReported)
 
 TEST (LengthUnitSymbolTest, SymbolsRoundTripAndFactorsAreMillimetres)
 {
-  const std::vector<std::pair<std::string, double>> expected = {{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0},
-                                                                {"in", 25.4}};
+  const std::vector<std::pair<std::string, double>> expected = {{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}, {"in", 25.4}};
   for (const auto& [symbol, millimetres] : expected) {
     const LengthUnit unit = morphreg::parseLengthUnit (symbol);
     EXPECT_EQ (morphreg::toString (unit), symbol);

@@ -27,8 +27,7 @@ main ()
   const double miss = (tps.evaluate (tetrahedron.vertices) - moved).norm ();
 
   pcl::PointCloud<pcl::PointNormal> cloud;
-  for (Eigen::Index i = 0; i < moved.cols (); ++i)
-  {
+  for (Eigen::Index i = 0; i < moved.cols (); ++i) {
     pcl::PointNormal point;
     point.getVector3fMap () = moved.col (i).cast<float> ();
     point.getNormalVector3fMap () = Eigen::Vector3f::UnitZ ();

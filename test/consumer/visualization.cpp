@@ -8,8 +8,7 @@
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || std::string (argv[1]) != "--render")
-  {
+  if (argc < 2 || std::string (argv[1]) != "--render") {
     std::cout << "visualization consumer linked\n";
     return 0;
   }

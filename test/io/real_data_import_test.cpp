@@ -80,8 +80,8 @@ TEST (RealDataImportTest, MissingOrMalformedFilesAreReported)
   const std::string json = folder.file ("fsaverage_head_landmarks.json");
   const auto expectFormatError = [&] (const std::string& content, const std::string& mention) {
     std::ofstream (json) << content;
-    EXPECT_TRUE (throwsMentioning<morphreg::FormatError> ([&] { morphreg::loadFsaverageHead (folder.file ("")); },
-                                                          mention))
+    EXPECT_TRUE (
+        throwsMentioning<morphreg::FormatError> ([&] { morphreg::loadFsaverageHead (folder.file ("")); }, mention))
         << content;
   };
   EXPECT_THROW (morphreg::loadFsaverageHead (folder.file ("")), morphreg::IoError) << "no landmarks file yet";

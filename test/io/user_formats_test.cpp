@@ -72,15 +72,15 @@ TEST (UserFormatsTest, BadPtsFilesAreNamedWithTheLine)
 TEST (UserFormatsTest, Ibug68IdsAreAcceptedInEveryFormat)
 {
   TempDirectory dir;
-  const morphreg::LandmarkPositions marked = {{"ibug68_30", {1, 2, 3}}, {"nose_tip", {4, 5, 6}},
-                                              {"ibug68_08", {7, 8, 9}}};
+  const morphreg::LandmarkPositions marked = {
+      {"ibug68_30", {1, 2, 3}}, {"nose_tip", {4, 5, 6}}, {"ibug68_08", {7, 8, 9}}};
   for (const std::string name : {"i.pp", "i.json", "i.csv"}) {
     morphreg::saveLandmarks (dir.file (name), marked);
     EXPECT_EQ (morphreg::loadLandmarks (dir.file (name)), marked) << name;
   }
   writeText (dir.file ("range.csv"), "id,x,y,z\nibug68_68,1,2,3\n");
   expectErrorContaining<morphreg::InvalidInputError> ([&] { morphreg::loadLandmarks (dir.file ("range.csv")); },
-                                            "unknown landmark id 'ibug68_68'");
+                                                      "unknown landmark id 'ibug68_68'");
 }
 
 TEST (UserFormatsTest, ReadsScalismoLandmarkJsonWithBaselIds)
@@ -95,14 +95,15 @@ TEST (UserFormatsTest, ReadsScalismoLandmarkJsonWithBaselIds)
   EXPECT_EQ (landmarks.at ("ibug68_30"), Eigen::Vector3d (0, 0, 1));
 
   writeText (dir.file ("two.json"), R"([{"id": "center.nose.tip", "coordinates": [1, 2]}])");
-  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadLandmarks (dir.file ("two.json")); },
-                                      "two.json: [0] ('center.nose.tip'): \"coordinates\" must be an array of 3");
+  expectErrorContaining<morphreg::FormatError> (
+      [&] { morphreg::loadLandmarks (dir.file ("two.json")); },
+      "two.json: [0] ('center.nose.tip'): \"coordinates\" must be an array of 3");
   writeText (dir.file ("noid.json"), R"([{"coordinates": [1, 2, 3]}])");
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadLandmarks (dir.file ("noid.json")); },
                                                 "noid.json: [0]");
   writeText (dir.file ("unmapped.json"), R"([{"id": "left.ear.helix.top", "coordinates": [1, 2, 3]}])");
   expectErrorContaining<morphreg::InvalidInputError> ([&] { morphreg::loadLandmarks (dir.file ("unmapped.json")); },
-                                            "unknown landmark id 'left.ear.helix.top'");
+                                                      "unknown landmark id 'left.ear.helix.top'");
   // A model file's metadata keeps ids without a project equivalent.
   EXPECT_EQ (morphreg::parseScalismoLandmarks (R"([{"id": "left.ear.helix.top", "coordinates": [1, 2, 3]}])", "m")
                  .count ("left.ear.helix.top"),
@@ -154,11 +155,11 @@ TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
   };
   expectErrorContaining<morphreg::FormatError> (load ("coff.off", "COFF\n3 1 0\n"), "coff.off: not an ASCII OFF file");
   expectErrorContaining<morphreg::FormatError> (load ("corner.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
-                                      "corner.off:6: face 0 corner 7 is not a whole number in [0, 3)");
+                                                "corner.off:6: face 0 corner 7 is not a whole number in [0, 3)");
   expectErrorContaining<morphreg::FormatError> (load ("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
-                                      "nan.off:4: vertex 1 coordinate y 'nan' is not a finite number");
+                                                "nan.off:4: vertex 1 coordinate y 'nan' is not a finite number");
   expectErrorContaining<morphreg::FormatError> (load ("cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
-                                      "cut.off:4: vertex 2 coordinate x '' is not a finite number");
+                                                "cut.off:4: vertex 2 coordinate x '' is not a finite number");
   expectErrorContaining<morphreg::FormatError> (load ("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
                                                 "no polygons");
 }

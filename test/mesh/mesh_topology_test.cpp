@@ -62,7 +62,7 @@ TEST (MeshTopologyTest, GeodesicDistancesFollowEdges)
   const MeshTopology topology (grid);
   const std::vector<double> distances = topology.geodesicDistances (grid.vertices, {0});
   EXPECT_DOUBLE_EQ (distances[0], 0.0);
-  EXPECT_DOUBLE_EQ (distances[n - 1], 2.0 * (n - 1));              // along the bottom row
+  EXPECT_DOUBLE_EQ (distances[n - 1], 2.0 * (n - 1));                        // along the bottom row
   EXPECT_NEAR (distances[n * n - 1], 2.0 * std::sqrt (2.0) * (n - 1), 1e-9); // along the diagonal edges
   const std::vector<double> limited = topology.geodesicDistances (grid.vertices, {0}, 3.0);
   EXPECT_TRUE (std::isinf (limited[n - 1]));

@@ -28,15 +28,15 @@ onTriangle (const Eigen::Vector3d& weights)
 TEST (TriangleLocatorTest, ClosestPointOnATriangleInEveryRegion)
 {
   // Above the face: the foot of the perpendicular.
-  EXPECT_TRUE (onTriangle (morphreg::closestPointOnTriangle ({1.0, 1.0, 3.0}, kA, kB, kC)).isApprox (
-      Eigen::Vector3d (1.0, 1.0, 0.0)));
+  EXPECT_TRUE (onTriangle (morphreg::closestPointOnTriangle ({1.0, 1.0, 3.0}, kA, kB, kC))
+                   .isApprox (Eigen::Vector3d (1.0, 1.0, 0.0)));
   // Beyond the hypotenuse: on the edge b-c, with the weight of a exactly 0.
   const Eigen::Vector3d edge = morphreg::closestPointOnTriangle ({3.0, 3.0, 1.0}, kA, kB, kC);
   EXPECT_EQ (edge[0], 0.0);
   EXPECT_TRUE (onTriangle (edge).isApprox (Eigen::Vector3d (2.0, 2.0, 0.0)));
   // Beyond the edge a-b.
-  EXPECT_TRUE (onTriangle (morphreg::closestPointOnTriangle ({2.0, -3.0, 0.0}, kA, kB, kC)).isApprox (
-      Eigen::Vector3d (2.0, 0.0, 0.0)));
+  EXPECT_TRUE (onTriangle (morphreg::closestPointOnTriangle ({2.0, -3.0, 0.0}, kA, kB, kC))
+                   .isApprox (Eigen::Vector3d (2.0, 0.0, 0.0)));
   // In the corner regions: the corners themselves.
   EXPECT_EQ (morphreg::closestPointOnTriangle ({-1.0, -1.0, 2.0}, kA, kB, kC), Eigen::Vector3d (1.0, 0.0, 0.0));
   EXPECT_EQ (morphreg::closestPointOnTriangle ({6.0, -1.0, 0.0}, kA, kB, kC), Eigen::Vector3d (0.0, 1.0, 0.0));
@@ -46,8 +46,8 @@ TEST (TriangleLocatorTest, ClosestPointOnATriangleInEveryRegion)
       morphreg::closestPointOnTriangle ({2.0, 1.0, 0.0}, kA, kB, Eigen::Vector3d (2.0, 0.0, 0.0));
   EXPECT_TRUE (flat.allFinite ());
   EXPECT_NEAR (flat.sum (), 1.0, 1e-12);
-  EXPECT_TRUE ((flat[0] * kA + flat[1] * kB + flat[2] * Eigen::Vector3d (2.0, 0.0, 0.0)).isApprox (
-      Eigen::Vector3d (2.0, 0.0, 0.0)));
+  EXPECT_TRUE ((flat[0] * kA + flat[1] * kB + flat[2] * Eigen::Vector3d (2.0, 0.0, 0.0))
+                   .isApprox (Eigen::Vector3d (2.0, 0.0, 0.0)));
 }
 
 TEST (TriangleLocatorTest, DistancesToACubeAreExact)
@@ -73,7 +73,8 @@ TEST (TriangleLocatorTest, AgreesWithBruteForceOnABumpySurface)
     const Eigen::Vector3d query (coordinate (rng), coordinate (rng), 0.3 * coordinate (rng));
     double best = std::numeric_limits<double>::infinity ();
     for (Eigen::Index t = 0; t < mesh.numTriangles (); ++t) {
-      const Eigen::Vector3d a = mesh.vertices.col (mesh.triangles (0, t)), b = mesh.vertices.col (mesh.triangles (1, t)),
+      const Eigen::Vector3d a = mesh.vertices.col (mesh.triangles (0, t)),
+                            b = mesh.vertices.col (mesh.triangles (1, t)),
                             c = mesh.vertices.col (mesh.triangles (2, t));
       const Eigen::Vector3d w = morphreg::closestPointOnTriangle (query, a, b, c);
       best = std::min (best, (w[0] * a + w[1] * b + w[2] * c - query).norm ());
@@ -113,7 +114,7 @@ TEST (SurfaceSamplingTest, SamplesAreUniformByAreaAndOnTheSurface)
   TriangleMesh mesh;
   mesh.vertices.resize (3, 6);
   mesh.vertices << 0, 1, 0, 10, 13, 10, //
-      0, 0, 2, 0, 0, 6,                  //
+      0, 0, 2, 0, 0, 6,                 //
       0, 0, 0, 5, 5, 5;
   mesh.triangles.resize (3, 2);
   mesh.triangles << 0, 3, 1, 4, 2, 5;
@@ -163,7 +164,8 @@ TEST (SurfaceSamplingTest, BadInputIsReported)
 TEST (PlanarCapTest, FindsTheBottomOfATiltedBox)
 {
   TriangleMesh box = morphreg::test::makeCube (100.0);
-  const Eigen::Matrix3d tilt = Eigen::AngleAxisd (0.15, Eigen::Vector3d (1.0, 0.5, 0.0).normalized ()).toRotationMatrix ();
+  const Eigen::Matrix3d tilt =
+      Eigen::AngleAxisd (0.15, Eigen::Vector3d (1.0, 0.5, 0.0).normalized ()).toRotationMatrix ();
   box.vertices = tilt * box.vertices;
   const std::vector<bool> cap = morphreg::findPlanarCap (box);
   // The cube's bottom (z = -50 before tilting) is triangles 0 and 1 of makeCube.

@@ -14,8 +14,8 @@ namespace
 {
 const std::string kIctDirectory = std::string (MORPHREG_SHARED_DATA_DIR) + "/ict_facekit";
 
-#define REQUIRE_ICT()                                                                                        \
-  if (!std::filesystem::exists (kIctDirectory + "/ict_head_pca_basis.npy"))                                  \
+#define REQUIRE_ICT()                                                                                                  \
+  if (!std::filesystem::exists (kIctDirectory + "/ict_head_pca_basis.npy"))                                            \
   GTEST_SKIP () << "ICT-FaceKit data not found in " << kIctDirectory << " (../shared/data is absent)"
 
 const MorphableModel&
@@ -94,8 +94,8 @@ TEST (ModelIoTest, IctFaceKitCorruptFilesGiveClearErrors)
 {
   REQUIRE_ICT ();
   morphreg::test::TempDirectory directory;
-  for (const char* name : {"ict_head_mean.ply", "ict_head_pca_basis.npy", "ict_head_pca_eigenvalues.npy",
-                           "ict_head_model.json"})
+  for (const char* name :
+       {"ict_head_mean.ply", "ict_head_pca_basis.npy", "ict_head_pca_eigenvalues.npy", "ict_head_model.json"})
     std::filesystem::copy_file (kIctDirectory + "/" + name, directory.file (name));
   // Truncated basis.
   std::filesystem::resize_file (directory.file ("ict_head_pca_basis.npy"), 1000000);
@@ -112,12 +112,14 @@ TEST (ModelIoTest, IctFaceKitCorruptFilesGiveClearErrors)
   // A landmark index out of range.
   std::ofstream (directory.file ("ict_head_model.json"))
       << R"({"num_vertices": 11248, "landmarks": {"multipie68": [)" << 99999
-      << std::string (67 * 3, ' ').replace (0, 67 * 3, [] {
-           std::string rest;
-           for (int k = 0; k < 67; ++k)
-             rest += ", 1";
-           return rest;
-         }())
+      << std::string (67 * 3, ' ')
+             .replace (0, 67 * 3,
+                       [] {
+                         std::string rest;
+                         for (int k = 0; k < 67; ++k)
+                           rest += ", 1";
+                         return rest;
+                       }())
       << "]}}";
   try {
     morphreg::loadIctFaceKit (directory.file (""));

@@ -206,8 +206,8 @@ TEST (ModelBuilderTest, ProcrustesRemovesRigidMotion)
   std::vector<TriangleMesh> moved = meshes ();
   for (size_t s = 0; s < moved.size (); ++s) {
     const Eigen::AngleAxisd rotation (0.05 * static_cast<double> (s), Eigen::Vector3d (1, 2, 3).normalized ());
-    moved[s].vertices = (rotation.toRotationMatrix () * moved[s].vertices).colwise () +
-                        Eigen::Vector3d (s, -2.0 * s, 0.5 * s);
+    moved[s].vertices =
+        (rotation.toRotationMatrix () * moved[s].vertices).colwise () + Eigen::Vector3d (s, -2.0 * s, 0.5 * s);
   }
   const auto reference = ModelBuilder ().buildGlobal (meshes ());
   const auto aligned = ModelBuilder ().buildGlobal (moved);

@@ -18,8 +18,7 @@ namespace
 bool
 fixtureAvailable ()
 {
-  static const bool available =
-      std::system (MORPHREG_SYSTEM_PYTHON " -c 'import h5py, numpy' > /dev/null 2>&1") == 0;
+  static const bool available = std::system (MORPHREG_SYSTEM_PYTHON " -c 'import h5py, numpy' > /dev/null 2>&1") == 0;
   return available;
 }
 
@@ -62,8 +61,8 @@ fixture ()
   return files;
 }
 
-#define REQUIRE_FIXTURE()                                                                                    \
-  if (!fixture ().ok ())                                                                                     \
+#define REQUIRE_FIXTURE()                                                                                              \
+  if (!fixture ().ok ())                                                                                               \
   GTEST_SKIP () << "/usr/bin/python3 with h5py and numpy is needed for the independent HDF5 writer"
 
 const MorphableModel&
@@ -72,8 +71,8 @@ builtModel ()
   static const MorphableModel::ConstPtr model = [] {
     morphreg::ModelBuilderSettings settings;
     settings.max_components = 6;
-    auto built = morphreg::ModelBuilder (settings).build (morphreg::test::trainingMeshes (12),
-                                                          morphreg::test::headRegions ());
+    auto built =
+        morphreg::ModelBuilder (settings).build (morphreg::test::trainingMeshes (12), morphreg::test::headRegions ());
     built->setLandmarks (morphreg::test::coarseGenerator ().landmarks ());
     built->setProfileLine (morphreg::test::coarseGenerator ().profileLine ());
     built->setNoiseVariance (0.5);

@@ -51,8 +51,9 @@ TEST (MorphableModelTest, GammaResidualIsZeroForOneGlobalBasisCutIntoRegions)
   // Blending weights sum to one, so the cut model is the global model.
   const Eigen::VectorXd expected = cut.mean () + regionModel ().globalBasis () * g;
   const Eigen::Matrix3Xd generated = cut.generate (stacked, all);
-  EXPECT_LT ((Eigen::Map<const Eigen::VectorXd> (generated.data (), generated.size ()) - expected).cwiseAbs ().maxCoeff (),
-             1e-9);
+  EXPECT_LT (
+      (Eigen::Map<const Eigen::VectorXd> (generated.data (), generated.size ()) - expected).cwiseAbs ().maxCoeff (),
+      1e-9);
   // Different coefficients per region disagree on shared vertices.
   stacked.head (all.count (0)) *= 2.0;
   EXPECT_GT (cut.gammaResiduals (stacked, all).cwiseAbs ().maxCoeff (), 1e-6);

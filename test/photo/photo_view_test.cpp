@@ -146,9 +146,8 @@ TEST (PhotoViewTest, ReadersNameTheFileAndTheProblem)
   const std::string side = R"({"view": "profile", "image": {"width": 100, "height": 100}, "nose_tip": [50, 50], )";
   expectError<morphreg::FormatError> ([&] { morphreg::loadProfileView (write ("a.json", "{\"view\": ")); },
                                       {"a.json", "malformed JSON"});
-  expectError<morphreg::FormatError> (
-      [&] { morphreg::loadProfileView (write ("b.json", R"({"view": "frontal"})")); },
-      {"b.json", "\"view\" is \"frontal\", expected \"profile\""});
+  expectError<morphreg::FormatError> ([&] { morphreg::loadProfileView (write ("b.json", R"({"view": "frontal"})")); },
+                                      {"b.json", "\"view\" is \"frontal\", expected \"profile\""});
   expectError<morphreg::FormatError> (
       [&] { morphreg::loadProfileView (write ("c.json", R"({"view": "profile", "nose_tip": [1, 2]})")); },
       {"c.json", "missing \"image\""});
@@ -160,20 +159,19 @@ TEST (PhotoViewTest, ReadersNameTheFileAndTheProblem)
       {"n.json", "missing \"nose_tip\""});
   expectError<morphreg::FormatError> (
       [&] {
-        morphreg::loadProfileView (write (
-            "d.json", R"({"view": "profile", "image": {"width": 10.5, "height": 100}, "nose_tip": [1, 2]})"));
+        morphreg::loadProfileView (
+            write ("d.json", R"({"view": "profile", "image": {"width": 10.5, "height": 100}, "nose_tip": [1, 2]})"));
       },
       {"d.json", "image.width (10.5) is not an integer"});
   expectError<morphreg::FormatError> (
       [&] { morphreg::loadProfileView (write ("e.json", side + R"("silhouette": [[1, 2], [3, "x"]]})")); },
       {"e.json", "silhouette[1]", "expected [x, y]"});
-  expectError<InvalidInputError> (
-      [&] { morphreg::loadProfileView (write ("f.json", side + R"("silhouette": []})")); },
-      {"f.json", "0 points"});
+  expectError<InvalidInputError> ([&] { morphreg::loadProfileView (write ("f.json", side + R"("silhouette": []})")); },
+                                  {"f.json", "0 points"});
   expectError<InvalidInputError> (
       [&] {
-        morphreg::loadProfileView (write (
-            "g.json", R"({"view": "profile", "image": {"width": 0, "height": 100}, "nose_tip": [1, 2],
+        morphreg::loadProfileView (
+            write ("g.json", R"({"view": "profile", "image": {"width": 0, "height": 100}, "nose_tip": [1, 2],
                           "silhouette": [[1, 2], [3, 4]]})"));
       },
       {"g.json", "image size 0 x 100"});
@@ -186,8 +184,7 @@ TEST (PhotoViewTest, ReadersNameTheFileAndTheProblem)
       {"h.json", "third_eye"});
   expectError<InvalidInputError> (
       [&] {
-        morphreg::loadFrontalView (
-            write ("i.json", front + R"("landmarks": [{"id": "chin", "position": [3, 4]}]})"));
+        morphreg::loadFrontalView (write ("i.json", front + R"("landmarks": [{"id": "chin", "position": [3, 4]}]})"));
       },
       {"i.json", "no nose_tip"});
 }
@@ -228,7 +225,8 @@ TEST (PhotoSimulatorTest, NoiseFreePhotosFollowTheKnownSimilarity)
     EXPECT_LT ((silhouette.col (k) - Eigen::Vector2d (x.z (), x.y ())).norm (), 1e-12);
   }
   EXPECT_THROW (morphreg::synthetic::PhotoSimulator ({0, 100}), InvalidInputError);
-  EXPECT_THROW (morphreg::synthetic::PhotoSimulator (camera).photograph (head, {{"chin", 3}}, generator.profileLine (), 1),
-                InvalidInputError);
+  EXPECT_THROW (
+      morphreg::synthetic::PhotoSimulator (camera).photograph (head, {{"chin", 3}}, generator.profileLine (), 1),
+      InvalidInputError);
 }
 } // namespace

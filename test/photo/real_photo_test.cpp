@@ -48,8 +48,8 @@ fitAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVertices&
 {
   const auto photos = outlinePhotos (mesh, landmarks, settings, 3);
   const MorphableModel::ConstPtr& model = ictModel30 ();
-  const TriangleMesh mean = model->generateMesh (Eigen::VectorXd::Zero (0), ComponentSelection (
-                                                     std::vector<int> (static_cast<size_t> (model->numRegions ()), 0)));
+  const TriangleMesh mean = model->generateMesh (
+      Eigen::VectorXd::Zero (0), ComponentSelection (std::vector<int> (static_cast<size_t> (model->numRegions ()), 0)));
   const double baseline = faceMedian (mean, mesh, landmarks, *model);
   std::printf ("[ real photo ] %s: %zu silhouette points; the mean head %.3f mm\n", name,
                photos.first.silhouette ().size (), baseline);

@@ -24,11 +24,11 @@ namespace test
 struct OutlinePhotoSettings
 {
   double pixels_per_mm = 2.5;
-  double landmark_noise = 1.0;   ///< px
-  double hair_thickness = 0.0;   ///< mm added outwards to the outline above hair_from
-  double hair_from = 60.0;       ///< mm above the nose tip
-  int point_spacing = 4;         ///< px between kept outline points
-  double trace_from = 1e9;       ///< mm above the nose tip where the person starts tracing (the hairline: below hair)
+  double landmark_noise = 1.0; ///< px
+  double hair_thickness = 0.0; ///< mm added outwards to the outline above hair_from
+  double hair_from = 60.0;     ///< mm above the nose tip
+  int point_spacing = 4;       ///< px between kept outline points
+  double trace_from = 1e9;     ///< mm above the nose tip where the person starts tracing (the hairline: below hair)
 };
 
 /** A binary image of \a mesh's orthographic projection onto (\a u_axis, Y), x = u, y = down, 1 px = 1 /
@@ -193,7 +193,8 @@ alignFitToSource (const TriangleMesh& fitted, const TriangleMesh& source,
   for (size_t k = 0; k < face.size (); ++k)
     face_points.col (static_cast<Eigen::Index> (k)) = fitted.vertices.col (face[k]);
   for (int iteration = 0; iteration < 30; ++iteration) {
-    const Eigen::Matrix3Xd posed = (pose.topLeftCorner<3, 3> () * face_points).colwise () + pose.topRightCorner<3, 1> ();
+    const Eigen::Matrix3Xd posed =
+        (pose.topLeftCorner<3, 3> () * face_points).colwise () + pose.topRightCorner<3, 1> ();
     Eigen::Matrix3Xd closest (3, posed.cols ());
     std::vector<double> distances (static_cast<size_t> (posed.cols ()));
     for (Eigen::Index i = 0; i < posed.cols (); ++i) {

@@ -58,7 +58,8 @@ fitError (const TwoViewFit& fit, const SimulatedPhotos& photos, const Eigen::Mat
       photos.rotation.transpose () * (fit.image_mesh.vertices.colwise () - photos.translation) / photos.scale;
   const Eigen::Matrix3Xd difference = back - truth;
   const double n = static_cast<double> (truth.cols ());
-  return {std::sqrt (difference.colwise ().squaredNorm ().sum () / n), std::sqrt (difference.row (0).squaredNorm () / n)};
+  return {std::sqrt (difference.colwise ().squaredNorm ().sum () / n),
+          std::sqrt (difference.row (0).squaredNorm () / n)};
 }
 
 /** The similarity the fit should find: the known pose after the rigid map from the model frame to the head's. */
@@ -231,9 +232,9 @@ TEST_F (PhotoFittingTest, TpsIcpFitsUnseenHeadsAndSeesTheWidth)
     mean_sum += mean.rms / kHeadsPerCase;
     joint_sum += fitError (fitting ().fitJoint (photos.profile, photos.frontal), photos, truth).rms / kHeadsPerCase;
   }
-  std::cout << "unseen heads, mean vertex RMS: TPS-ICP " << tps_sum.rms << " mm (x " << tps_sum.rms_x
-            << " mm), joint " << joint_sum << " mm, profile only " << profile_sum.rms << " mm (x "
-            << profile_sum.rms_x << " mm), mean head " << mean_sum << " mm\n";
+  std::cout << "unseen heads, mean vertex RMS: TPS-ICP " << tps_sum.rms << " mm (x " << tps_sum.rms_x << " mm), joint "
+            << joint_sum << " mm, profile only " << profile_sum.rms << " mm (x " << profile_sum.rms_x
+            << " mm), mean head " << mean_sum << " mm\n";
   EXPECT_LT (tps_sum.rms, 0.6 * mean_sum);
   EXPECT_LT (tps_sum.rms_x, 0.8 * profile_sum.rms_x);
   // The defaults also suit real photos; on this synthetic suite they stay within 5 % of the figures of settings
@@ -339,8 +340,7 @@ TEST_F (PhotoFittingTest, FrontalLandmarksMustBeModelLandmarksAndSpreadOut)
   expectInvalid ([&] { fitting ().fitTpsIcp (photos.profile, frontal (two)); }, "at least 3");
 
   const Eigen::Vector2d nose = marked.at ("nose_tip");
-  const morphreg::LandmarkPixels coincident = {
-      {"nose_tip", nose}, {"left_eye_outer", nose}, {"right_eye_outer", nose}};
+  const morphreg::LandmarkPixels coincident = {{"nose_tip", nose}, {"left_eye_outer", nose}, {"right_eye_outer", nose}};
   expectInvalid ([&] { fitting ().fitJoint (photos.profile, frontal (coincident)); }, "coincide");
   const morphreg::LandmarkPixels collinear = {{"nose_tip", nose},
                                               {"upper_lip_center", nose + Eigen::Vector2d (0.0, 40.0)},
@@ -370,8 +370,9 @@ TEST_F (PhotoFittingTest, OutlineLandmarksAreLeftOutByDefaultAndListed)
 
   // Outline landmarks alone (plus the nose tip) leave fewer than 3 to fit: the error says why.
   const morphreg::LandmarkPixels& marked = photos.frontal.landmarks ();
-  const morphreg::LandmarkPixels outline = {
-      {"nose_tip", marked.at ("nose_tip")}, {"right_jaw", marked.at ("right_jaw")}, {"left_jaw", marked.at ("left_jaw")}};
+  const morphreg::LandmarkPixels outline = {{"nose_tip", marked.at ("nose_tip")},
+                                            {"right_jaw", marked.at ("right_jaw")},
+                                            {"left_jaw", marked.at ("left_jaw")}};
   expectInvalid ([&] { defaults.fitJoint (photos.profile, morphreg::FrontalView (1000, 1200, outline)); },
                  "outline landmarks such as 'left_jaw'");
 }
@@ -382,8 +383,8 @@ TEST_F (PhotoFittingTest, CoefficientsStayWithinTheLimit)
   for (const double limit : {0.5, 1.0}) {
     TwoViewFitting limited = fitting ();
     limited.setCoefficientLimit (limit);
-    for (const TwoViewFit& fit : {limited.fitJoint (photos.profile, photos.frontal),
-                                  limited.fitTpsIcp (photos.profile, photos.frontal)}) {
+    for (const TwoViewFit& fit :
+         {limited.fitJoint (photos.profile, photos.frontal), limited.fitTpsIcp (photos.profile, photos.frontal)}) {
       EXPECT_LE (fit.maxCoefficientSigma (), limit + 1e-9) << fit.returned;
       EXPECT_GT (fit.maxCoefficientSigma (), 0.5 * limit) << fit.returned << ": the limit should be reached here";
     }
@@ -433,7 +434,8 @@ TEST_F (PhotoFittingTest, ProfileVerticesHiddenInsideTheOutlineGetNoCorresponden
   notched->setProfileLine (line);
   TwoViewFitting with_hidden (notched);
   with_hidden.setContourLandmarkWeight (TwoViewFitting::kDefaultFrontalWeight);
-  const TwoViewFit plain = fitting ().fitProfile (photos.profile), notched_fit = with_hidden.fitProfile (photos.profile);
+  const TwoViewFit plain = fitting ().fitProfile (photos.profile),
+                   notched_fit = with_hidden.fitProfile (photos.profile);
   // Within the correspondence distance every one of them would pull without the outline rule; a few of the 30
   // slip through (beside the mouth, where the line's own vertices are sparse: 3 on this head).
   EXPECT_LE (notched_fit.final_residuals.profile_correspondences, plain.final_residuals.profile_correspondences + 3);

@@ -156,7 +156,7 @@ faceDistance (const TriangleMesh& fitted)
 } // namespace test
 } // namespace morphreg
 
-#define MORPHREG_REQUIRE_REAL_SCANS()                                                                          \
-  if (!morphreg::test::realScanDataAvailable ())                                                               \
-  GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR                  \
+#define MORPHREG_REQUIRE_REAL_SCANS()                                                                                  \
+  if (!morphreg::test::realScanDataAvailable ())                                                                       \
+  GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR                          \
                 << " (../shared/data is absent)"

@@ -142,7 +142,8 @@ TEST (CachedCorrespondenceEstimationTest, DropInForPclIterativeClosestPoint)
 {
   const Cloud::Ptr target = bumpySphere (20000, 10);
   Cloud::Ptr source (new Cloud);
-  const Eigen::Affine3f motion = Eigen::Translation3f (3.0f, -2.0f, 1.0f) * Eigen::AngleAxisf (0.08f, Eigen::Vector3f (1, 2, 3).normalized ());
+  const Eigen::Affine3f motion =
+      Eigen::Translation3f (3.0f, -2.0f, 1.0f) * Eigen::AngleAxisf (0.08f, Eigen::Vector3f (1, 2, 3).normalized ());
   pcl::transformPointCloud (*bumpySphere (3000, 11), *source, motion);
   Eigen::Matrix4f results[2];
   for (const bool use_cache : {false, true}) {

@@ -88,7 +88,8 @@ clutteredScan (const TriangleMesh& head, std::uint64_t seed)
       Eigen::Quaterniond (normal (random), normal (random), normal (random), normal (random)).normalized ();
   Eigen::Matrix4d pose = Eigen::Matrix4d::Identity ();
   pose.topLeftCorner<3, 3> () = (0.9 + 0.2 * unit (random)) * rotation.toRotationMatrix ();
-  pose.topRightCorner<3, 1> () = 500.0 * Eigen::Vector3d (unit (random) - 0.5, unit (random) - 0.5, unit (random) - 0.5);
+  pose.topRightCorner<3, 1> () =
+      500.0 * Eigen::Vector3d (unit (random) - 0.5, unit (random) - 0.5, unit (random) - 0.5);
   ClutteredScan scan{pcl::PointCloud<pcl::PointNormal>::Ptr (new pcl::PointCloud<pcl::PointNormal>), pose,
                      static_cast<size_t> (head_points.cols ())};
   for (const Eigen::Vector3d& p : points) {
@@ -129,8 +130,8 @@ TEST (ClutterTest, EveryHeadOfTwentyFitsThroughShouldersChairAndHair)
     const auto& report = icp.getRegistrationReport ();
     std::printf ("[ clutter ] head %2d: %zu points (%zu on the head), confidence %.2f, %d found on the head; vertex "
                  "RMS %.3f mm, %s\n",
-                 head, scan.cloud->size (), scan.head_points, report.initialisation_confidence, report.head_points,
-                 rms, morphreg::toString (report.termination).c_str ());
+                 head, scan.cloud->size (), scan.head_points, report.initialisation_confidence, report.head_points, rms,
+                 morphreg::toString (report.termination).c_str ());
     std::printf ("  %s\n", report.initialisation_detail.c_str ());
 
     failures += rms > 1.5 ? 1 : 0;

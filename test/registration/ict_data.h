@@ -32,7 +32,7 @@ ictModel ()
 } // namespace test
 } // namespace morphreg
 
-#define MORPHREG_REQUIRE_ICT()                                                                                 \
-  if (!morphreg::test::ictAvailable ())                                                                        \
-  GTEST_SKIP () << "ICT-FaceKit data not found in " << morphreg::test::sharedDataPath ("ict_facekit")          \
+#define MORPHREG_REQUIRE_ICT()                                                                                         \
+  if (!morphreg::test::ictAvailable ())                                                                                \
+  GTEST_SKIP () << "ICT-FaceKit data not found in " << morphreg::test::sharedDataPath ("ict_facekit")                  \
                 << " (../shared/data is absent)"

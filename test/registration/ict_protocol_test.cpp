@@ -123,8 +123,8 @@ TEST (IctIcpTest, HeadsWithinTheFittedComponentsFitFromLandmarkAndCoarseStarts)
   const double worst_coarse = *std::max_element (coarse_rms.begin (), coarse_rms.end ());
   std::printf ("[ ICT within 30 ] landmark start: median %.3f, worst %.3f mm, %ld/20 <= 1 mm; coarse start: median "
                "%.3f, worst %.3f mm, %ld/20 <= 1 mm\n",
-               median (landmark_rms), worst_landmark, countAtMost (landmark_rms, 1.0), median (coarse_rms), worst_coarse,
-               countAtMost (coarse_rms, 1.0));
+               median (landmark_rms), worst_landmark, countAtMost (landmark_rms, 1.0), median (coarse_rms),
+               worst_coarse, countAtMost (coarse_rms, 1.0));
   // Required: <= 1.0 mm on every head from both starts. At these settings the landmark start fits 20/20 heads
   // (median 0.68 mm, worst 0.82 mm), the coarse start (robustCoarseSimilarity) 20/20 (median 0.69 mm, worst
   // 0.84 mm), in 17-41 iterations.

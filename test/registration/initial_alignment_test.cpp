@@ -42,7 +42,8 @@ TEST (InitialAlignmentTest, RobustCoarseSimilarityRecoversTheProtocolPose)
     const double true_scale = std::cbrt (true_linear.determinant ());
     const double found_scale = std::cbrt (found_linear.determinant ());
     const double angle_deg =
-        Eigen::AngleAxisd ((found_linear / found_scale) * (true_linear / true_scale).transpose ()).angle () * 180.0 / M_PI;
+        Eigen::AngleAxisd ((found_linear / found_scale) * (true_linear / true_scale).transpose ()).angle () * 180.0 /
+        M_PI;
     const Eigen::Matrix3Xd posed = (found_linear * head.vertices).colwise () + found.topRightCorner<3, 1> ();
     const double rms = std::sqrt ((posed - scan.truth).colwise ().squaredNorm ().mean ());
     EXPECT_LT (angle_deg, 3.0) << "seed " << seed;

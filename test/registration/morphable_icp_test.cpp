@@ -117,8 +117,8 @@ TEST_F (MorphableIcpTest, HeadsWithinTheModelFitFromLandmarkAndCoarseStarts)
       const double rms = fit (icp, scan);
       const auto& report = icp.getRegistrationReport ();
       std::printf ("[ within-model ] head %d %s start: RMS %.3f mm, %d+%d iterations, %s\n", head,
-                   landmark_start ? "landmark" : "global", rms, report.similarity_iterations,
-                   report.shape_iterations, morphreg::toString (report.termination).c_str ());
+                   landmark_start ? "landmark" : "global", rms, report.similarity_iterations, report.shape_iterations,
+                   morphreg::toString (report.termination).c_str ());
       over_target[landmark_start] += rms > 1.0 ? 1 : 0;
       EXPECT_LE (rms, 2.5) << "head " << head << (landmark_start ? " landmark" : " global") << " start";
       EXPECT_LE (report.history.size (), 50u);
@@ -245,8 +245,8 @@ TEST_F (MorphableIcpTest, FrozenShapeAgreesWithPclIcpOnRigidData)
 
 TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
 {
-  const auto scan = morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed).mesh,
-                                                          startLandmarks (**model_), 300);
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed).mesh, startLandmarks (**model_), 300);
   auto keptCorrespondences = [&] (const pcl::registration::CorrespondenceRejector::Ptr& rejector,
                                   std::vector<std::pair<pcl::Indices, pcl::Indices>>* calls) {
     Icp icp = makeIcp ();
@@ -317,8 +317,8 @@ TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
 
 TEST_F (MorphableIcpTest, DistanceRejectorKeepsOnlyCloseCorrespondences)
 {
-  const auto scan = morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 1).mesh,
-                                                          startLandmarks (**model_), 301);
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 1).mesh, startLandmarks (**model_), 301);
   Icp icp = makeIcp ();
   icp.setTargetLandmarks (scan.landmarks);
   icp.setMaximumIterations (4);
@@ -329,17 +329,18 @@ TEST_F (MorphableIcpTest, DistanceRejectorKeepsOnlyCloseCorrespondences)
   icp.setInputTarget (scan.cloud);
   int iterations_seen = 0;
   double worst = 0.0;
-  std::function<Icp::UpdateVisualizerCallbackSignature> callback =
-      [&] (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::Indices& source_indices,
-           const pcl::PointCloud<pcl::PointNormal>& target, const pcl::Indices& target_indices) {
-        ASSERT_EQ (source_indices.size (), target_indices.size ());
-        if (source.size () != static_cast<size_t> ((**model_).numVertices ()) || source_indices.empty ())
-          return;
-        ++iterations_seen;
-        for (size_t c = 0; c < source_indices.size (); ++c)
-          worst = std::max<double> (worst, (source[source_indices[c]].getVector3fMap () -
-                                            target[target_indices[c]].getVector3fMap ()).norm ());
-      };
+  std::function<Icp::UpdateVisualizerCallbackSignature> callback = [&] (const pcl::PointCloud<pcl::PointNormal>& source,
+                                                                        const pcl::Indices& source_indices,
+                                                                        const pcl::PointCloud<pcl::PointNormal>& target,
+                                                                        const pcl::Indices& target_indices) {
+    ASSERT_EQ (source_indices.size (), target_indices.size ());
+    if (source.size () != static_cast<size_t> ((**model_).numVertices ()) || source_indices.empty ())
+      return;
+    ++iterations_seen;
+    for (size_t c = 0; c < source_indices.size (); ++c)
+      worst = std::max<double> (
+          worst, (source[source_indices[c]].getVector3fMap () - target[target_indices[c]].getVector3fMap ()).norm ());
+  };
   icp.registerVisualizationCallback (callback);
   pcl::PointCloud<pcl::PointNormal> output;
   icp.align (output);
@@ -350,8 +351,8 @@ TEST_F (MorphableIcpTest, DistanceRejectorKeepsOnlyCloseCorrespondences)
 
 TEST_F (MorphableIcpTest, BaseSettersChangeBehaviourAsInPcl)
 {
-  const auto scan = morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 2).mesh,
-                                                          startLandmarks (**model_), 302);
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 2).mesh, startLandmarks (**model_), 302);
   Icp icp = makeIcp ();
   icp.setTargetLandmarks (scan.landmarks);
   icp.setShapeStage (false);
@@ -389,7 +390,8 @@ TEST_F (MorphableIcpTest, BaseSettersChangeBehaviourAsInPcl)
     with_residual += std::isfinite (icp.getVertexResiduals ()[i]) ? 1 : 0;
   EXPECT_EQ (with_residual, report.correspondences);
   const Eigen::Matrix4f t = icp.getFinalTransformation ();
-  const Eigen::Vector3f v = (**model_).vertex (10, icp.getShapeCoefficients (), icp.getComponentSelection ()).cast<float> ();
+  const Eigen::Vector3f v =
+      (**model_).vertex (10, icp.getShapeCoefficients (), icp.getComponentSelection ()).cast<float> ();
   const Eigen::Vector3f mapped = t.topLeftCorner<3, 3> () * v + t.topRightCorner<3, 1> ();
   EXPECT_LT ((mapped - output[10].getVector3fMap ()).norm (), 1e-2)
       << "the final transformation maps the fitted model-frame shape onto the output";
@@ -464,8 +466,8 @@ TEST_F (MorphableIcpTest, AreaWeightingFitsAndChangesTheWeights)
 
 TEST_F (MorphableIcpTest, DivergenceGuardRevertsAndReports)
 {
-  const auto scan = morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 3).mesh,
-                                                          startLandmarks (**model_), 303);
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 3).mesh, startLandmarks (**model_), 303);
   Icp icp = makeIcp ();
   icp.setTargetLandmarks (scan.landmarks);
   icp.setShapePriorWeight (0.0);
@@ -482,8 +484,8 @@ TEST_F (MorphableIcpTest, DivergenceGuardRevertsAndReports)
 
 TEST_F (MorphableIcpTest, BadInputIsReported)
 {
-  const auto scan = morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 4).mesh,
-                                                          startLandmarks (**model_), 304);
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 4).mesh, startLandmarks (**model_), 304);
   pcl::PointCloud<pcl::PointNormal> output;
   {
     Icp icp;

@@ -27,9 +27,9 @@ using Icp = morphreg::MorphableICP<pcl::PointNormal>;
 constexpr int kFittedComponents = 30;
 constexpr double kTargetPoints = 40000; ///< points of the registration target (as many as the protocol's scans)
 
-#define REQUIRE_DATA(relative)                                                                                  \
-  if (!morphreg::test::ictAvailable () || !std::filesystem::exists (morphreg::test::sharedDataPath (relative))) \
-  GTEST_SKIP () << "ICT-FaceKit or " << relative << " not found in " << MORPHREG_SHARED_DATA_DIR                \
+#define REQUIRE_DATA(relative)                                                                                         \
+  if (!morphreg::test::ictAvailable () || !std::filesystem::exists (morphreg::test::sharedDataPath (relative)))        \
+  GTEST_SKIP () << "ICT-FaceKit or " << relative << " not found in " << MORPHREG_SHARED_DATA_DIR                       \
                 << " (../shared/data is absent)"
 
 /** The registration target: about kTargetPoints area-uniform points of \a mesh (without the \a excluded triangles)
@@ -129,8 +129,8 @@ TEST (RealDataIcpTest, IctFitsTheFsaverageScalp)
 TEST (RealDataIcpTest, IctFitsTheMediaPipeCanonicalFace)
 {
   REQUIRE_DATA ("mediapipe_canonical_face/canonical_face_model.obj");
-  const auto face =
-      morphreg::loadMediaPipeFace (morphreg::test::sharedDataPath ("mediapipe_canonical_face/canonical_face_model.obj"));
+  const auto face = morphreg::loadMediaPipeFace (
+      morphreg::test::sharedDataPath ("mediapipe_canonical_face/canonical_face_model.obj"));
   morphreg::LandmarkPositions landmarks;
   for (const char* name : {"right_eye_outer", "right_eye_inner", "left_eye_inner", "left_eye_outer", "nose_tip",
                            "right_mouth_corner", "left_mouth_corner", "chin"})

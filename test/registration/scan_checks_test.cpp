@@ -67,8 +67,8 @@ TEST (FitPlausibilityTest, NamesEveryFailedCheck)
   const auto bad = morphreg::checkFitPlausibility (0.001, flat, sparse, wild, report);
   EXPECT_FALSE (bad.plausible);
   ASSERT_EQ (bad.failures.size (), 6u);
-  for (const char* text : {"scale 0.001", "% of the model has correspondences", "6.5 standard deviations", "collapsed or flat",
-                           "12 mm from the scan", "normal equations"}) {
+  for (const char* text : {"scale 0.001", "% of the model has correspondences", "6.5 standard deviations",
+                           "collapsed or flat", "12 mm from the scan", "normal equations"}) {
     bool found = false;
     for (const std::string& failure : bad.failures)
       found = found || failure.find (text) != std::string::npos;

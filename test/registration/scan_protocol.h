@@ -25,8 +25,8 @@ struct ProtocolSettings
   double min_scale = 0.8;
   double max_scale = 1.2;
   double translation_sigma = 50.0;
-  double crown_fraction = 0.12;  ///< of the surface area, taken from the top (+Y)
-  double chin_fraction = 0.08;   ///< of the surface area, the most downward-facing triangles in front
+  double crown_fraction = 0.12; ///< of the surface area, taken from the top (+Y)
+  double chin_fraction = 0.08;  ///< of the surface area, the most downward-facing triangles in front
   double noise_sigma = 1.0;
   double outlier_fraction = 0.05; ///< uniform in the head's bounding box grown by 20 %
   double landmark_sigma = 2.0;
@@ -128,13 +128,13 @@ simulateProtocolScan (const TriangleMesh& head, const LandmarkVertices& landmark
     pcl::PointNormal point;
     for (int d = 0; d < 3; ++d)
       point.data[d] = static_cast<float> (low[d] + unit (rng) * (high[d] - low[d]));
-    point.getNormalVector3fMap () = Eigen::Vector3d (gauss (rng), gauss (rng), gauss (rng)).normalized ().cast<float> ();
+    point.getNormalVector3fMap () =
+        Eigen::Vector3d (gauss (rng), gauss (rng), gauss (rng)).normalized ().cast<float> ();
     scan.cloud->push_back (point);
   }
   for (const auto& landmark : landmarks)
-    scan.landmarks[landmark.first] =
-        scan.truth.col (landmark.second) +
-        settings.landmark_sigma * Eigen::Vector3d (gauss (rng), gauss (rng), gauss (rng));
+    scan.landmarks[landmark.first] = scan.truth.col (landmark.second) +
+                                     settings.landmark_sigma * Eigen::Vector3d (gauss (rng), gauss (rng), gauss (rng));
   return scan;
 }
 

@@ -17,7 +17,10 @@ public:
     path_ = std::filesystem::temp_directory_path () / ("morphreg_test_" + std::to_string (device ()));
     std::filesystem::create_directories (path_);
   }
-  ~TempDirectory () { std::filesystem::remove_all (path_); }
+  ~TempDirectory ()
+  {
+    std::filesystem::remove_all (path_);
+  }
   TempDirectory (const TempDirectory&) = delete;
   TempDirectory&
   operator= (const TempDirectory&) = delete;

@@ -75,7 +75,7 @@ TEST (HeadGeneratorTest, SizeAndUnitsAreHumanInMillimetres)
 TEST (HeadGeneratorTest, EveryHeadIsClosedManifoldWithoutDegenerateTriangles)
 {
   std::vector<morphreg::TriangleMesh> heads = {generator ().generate (extremeParameters (false)),
-                                                generator ().generate (extremeParameters (true))};
+                                               generator ().generate (extremeParameters (true))};
   for (auto& head : generator ().population (8, 100))
     heads.push_back (head.mesh);
   const morphreg::MeshTopology topology (generator ().triangles (), generator ().numVertices ());

@@ -168,12 +168,12 @@ TEST (ScanSimulatorTest, HolesWhereScannersMiss)
   const auto& regions = generator ().regionLabels ();
   const double top = head ().vertices.row (1).maxCoeff ();
   const double crown = missedFraction (scan, [&] (int v) { return head ().vertices (1, v) > top - 5.0; });
-  const double under_chin = missedFraction (
-      scan, [&] (int v) { return regions[v] == HeadRegion::chin && normals (1, v) < -0.8; });
-  const double nostrils = missedFraction (
-      scan, [&] (int v) { return regions[v] == HeadRegion::nose && normals (1, v) < -0.75; });
-  const double under_ears = missedFraction (
-      scan, [&] (int v) { return regions[v] == HeadRegion::ears && normals (1, v) < -0.6; });
+  const double under_chin =
+      missedFraction (scan, [&] (int v) { return regions[v] == HeadRegion::chin && normals (1, v) < -0.8; });
+  const double nostrils =
+      missedFraction (scan, [&] (int v) { return regions[v] == HeadRegion::nose && normals (1, v) < -0.75; });
+  const double under_ears =
+      missedFraction (scan, [&] (int v) { return regions[v] == HeadRegion::ears && normals (1, v) < -0.6; });
   const double face = missedFraction (scan, [&] (int v) { return regions[v] == HeadRegion::cheeks; });
   std::cout << "missed: crown " << crown << ", under chin " << under_chin << ", nostrils " << nostrils
             << ", ear undersides " << under_ears << ", cheeks " << face << '\n';
@@ -220,10 +220,10 @@ TEST (ScanSimulatorTest, BadInputIsRejectedWithItsName)
   }
   parameters = ScanSimulator::Parameters ();
   parameters.outlier_fraction = 0.9;
-  EXPECT_THROW (ScanSimulator {parameters}, morphreg::InvalidInputError);
+  EXPECT_THROW (ScanSimulator{parameters}, morphreg::InvalidInputError);
   parameters = ScanSimulator::Parameters ();
   parameters.max_incidence_deg = 90.0;
-  EXPECT_THROW (ScanSimulator {parameters}, morphreg::InvalidInputError);
+  EXPECT_THROW (ScanSimulator{parameters}, morphreg::InvalidInputError);
 
   const ScanSimulator scanner;
   EXPECT_THROW (scanner.scan (morphreg::TriangleMesh (), 1), morphreg::InvalidInputError);

@@ -45,10 +45,10 @@ struct Picture
     for (int y = 0; y < height; ++y)
       for (int x = static_cast<int> (x_from * width); x < static_cast<int> (x_to * width); ++x, ++total) {
         const unsigned char* p = pixels + channels * (static_cast<long> (y) * width + x);
-        covered += std::abs (p[0] - background[0]) + std::abs (p[1] - background[1]) + std::abs (p[2] - background[2]) >
-                           30
-                       ? 1
-                       : 0;
+        covered +=
+            std::abs (p[0] - background[0]) + std::abs (p[1] - background[1]) + std::abs (p[2] - background[2]) > 30
+                ? 1
+                : 0;
       }
     return static_cast<double> (covered) / total;
   }
@@ -74,7 +74,8 @@ verticesOf (const morphreg::TriangleMesh& mesh)
 {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
   for (Eigen::Index v = 0; v < mesh.numVertices (); ++v)
-    cloud->push_back (pcl::PointXYZ (static_cast<float> (mesh.vertices (0, v)), static_cast<float> (mesh.vertices (1, v)),
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (mesh.vertices (0, v)),
+                                     static_cast<float> (mesh.vertices (1, v)),
                                      static_cast<float> (mesh.vertices (2, v))));
   return cloud;
 }
@@ -130,7 +131,8 @@ TEST (RegistrationVisualizerTest, WatchesPclIcpIterate)
   const auto head = generator ().sample (4).mesh;
   const auto target = verticesOf (head);
   pcl::PointCloud<pcl::PointXYZ>::Ptr source (new pcl::PointCloud<pcl::PointXYZ>);
-  const Eigen::Affine3f offset (Eigen::Translation3f (4.0f, -3.0f, 2.0f) * Eigen::AngleAxisf (0.05f, Eigen::Vector3f::UnitY ()));
+  const Eigen::Affine3f offset (Eigen::Translation3f (4.0f, -3.0f, 2.0f) *
+                                Eigen::AngleAxisf (0.05f, Eigen::Vector3f::UnitY ()));
   pcl::transformPointCloud (*target, *source, offset);
   RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
   pcl::IterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> icp;

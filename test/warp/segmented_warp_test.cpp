@@ -43,8 +43,8 @@ bodiesDirectory ()
   return std::string (MORPHREG_SHARED_DATA_DIR) + "/makehuman_bodies";
 }
 
-#define REQUIRE_BODIES()                                                                                           \
-  if (!std::filesystem::exists (bodiesDirectory () + "/mh_joints.json"))                                          \
+#define REQUIRE_BODIES()                                                                                               \
+  if (!std::filesystem::exists (bodiesDirectory () + "/mh_joints.json"))                                               \
   GTEST_SKIP () << "MakeHuman bodies not found in " << bodiesDirectory () << " (../shared/data is absent)"
 
 /** Global, hard-segmented and blended-segmented warps of one case, with their quality against the truth. */
@@ -64,7 +64,8 @@ compareWarps (const morphreg::MakeHumanBodies& bodies, const TriangleMesh& sourc
   WarpComparison result;
   morphreg::ThinPlateSpline<double, 3> global;
   global.fit (source_points, target_points);
-  result.global = morphreg::evaluateWarp (global.transformMesh (source), truth, bodies.segmentLabels (), 100.0, &source);
+  result.global =
+      morphreg::evaluateWarp (global.transformMesh (source), truth, bodies.segmentLabels (), 100.0, &source);
   const int segments = static_cast<int> (bodies.segmentNames ().size ());
   SegmentedWarp warp (bodies.segmentLabels (), segments);
   warp.setLandmarks (source, source_points, target_points, overlap);
@@ -195,9 +196,9 @@ TEST (SegmentedWarpTest, BadInputIsNamed)
   EXPECT_THROW (warp.setSegmentLandmarks (2, collinear, collinear), morphreg::InvalidInputError);
   EXPECT_THROW (warp.setBlendWidth (-1.0), morphreg::InvalidInputError);
   EXPECT_THROW (warp.warp (morphreg::test::makeCube ()), morphreg::InvalidInputError) << "vertex count differs";
-  EXPECT_THROW (morphreg::assignLandmarksToSegments (grid.mesh, grid.labels, 2, Eigen::Matrix3Xd::Constant (3, 1, NAN),
-                                                     10.0),
-                morphreg::InvalidInputError);
+  EXPECT_THROW (
+      morphreg::assignLandmarksToSegments (grid.mesh, grid.labels, 2, Eigen::Matrix3Xd::Constant (3, 1, NAN), 10.0),
+      morphreg::InvalidInputError);
 }
 
 TEST (SegmentedWarpTest, LandmarkSubsetsOverlapAcrossBorders)
@@ -262,8 +263,8 @@ TEST (SegmentedWarpTest, RepostureWithSurfaceLandmarks)
     }
     // The lower body, which bends, takes every landmark; the arms and upper body only those near them.
     const double all = std::numeric_limits<double>::infinity ();
-    const auto c = compareWarps (bodies, standing, seated, source, target, {90.0, 90.0, 90.0, all},
-                                 {150.0, 150.0, 150.0, 150.0});
+    const auto c =
+        compareWarps (bodies, standing, seated, source, target, {90.0, 90.0, 90.0, all}, {150.0, 150.0, 150.0, 150.0});
     std::cout << subject << " (51 joints + 16 surface vertices):\n";
     print ("global TPS", c.global);
     print ("segmented, blended 150 mm", c.segmented);

@@ -123,7 +123,8 @@ TEST (TpsTest, JacobianMatchesFiniteDifferences)
   const double h = 1e-5;
   for (int l = 0; l < 3; ++l)
     numeric.col (l) = (tps.transformPoint (x + h * Eigen::Vector3d::Unit (l)) -
-                       tps.transformPoint (x - h * Eigen::Vector3d::Unit (l))) / (2 * h);
+                       tps.transformPoint (x - h * Eigen::Vector3d::Unit (l))) /
+                      (2 * h);
   EXPECT_LE ((tps.jacobian (x) - numeric).norm (), 1e-6);
 }
 

@@ -38,13 +38,12 @@ requireFiniteNonEmpty (const pcl::PointCloud<PointT>& cloud, const std::string& 
 } // namespace morphreg
 
 /// \cond
-#define MORPHREG_DECLARE_CLOUD_IO(T)                                                                          \
-  extern template pcl::PointCloud<T>::Ptr morphreg::loadCloud<T> (const std::string&);                       \
-  extern template void morphreg::saveCloud<T> (const std::string&, const pcl::PointCloud<T>&);               \
+#define MORPHREG_DECLARE_CLOUD_IO(T)                                                                                   \
+  extern template pcl::PointCloud<T>::Ptr morphreg::loadCloud<T> (const std::string&);                                 \
+  extern template void morphreg::saveCloud<T> (const std::string&, const pcl::PointCloud<T>&);                         \
   extern template void morphreg::requireFiniteNonEmpty<T> (const pcl::PointCloud<T>&, const std::string&);
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZ)
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointNormal)
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_CLOUD_IO
 /// \endcond
-

@@ -31,7 +31,7 @@ triangleAreas (const TriangleMesh& mesh);
 struct PointPlane
 {
   Eigen::Vector3d centroid; ///< the mean of the points
-  Eigen::Vector3d normal; ///< the direction of least spread (sign arbitrary; any unit vector for collinear points)
+  Eigen::Vector3d normal;   ///< the direction of least spread (sign arbitrary; any unit vector for collinear points)
 };
 
 /** \brief The least-squares plane of \a points (3 x K, K >= 1), e.g. a scan point's k nearest neighbours.

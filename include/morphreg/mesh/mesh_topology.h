@@ -15,7 +15,7 @@ namespace morphreg
 class MeshTopology
 {
 public:
-  using Ptr = std::shared_ptr<MeshTopology>;           ///< shared pointer
+  using Ptr = std::shared_ptr<MeshTopology>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const MeshTopology>; ///< shared pointer to const
 
   /** \brief An undirected edge (a < b) and the number of triangles that share it. */

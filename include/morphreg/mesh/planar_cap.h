@@ -13,10 +13,10 @@ namespace morphreg
 struct PlanarCapSettings
 {
   Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ (); ///< the cap's outward normal, roughly (unit)
-  double seed_cosine = 0.95;  ///< seed triangles: normal . direction above this
-  double max_distance = 3.0;  ///< mm: all three vertices this close to the plane
-  double max_angle_deg = 25.0; ///< normal within this angle of the plane's normal
-  int rounds = 3;             ///< plane fit and selection are repeated this often
+  double seed_cosine = 0.95;                              ///< seed triangles: normal . direction above this
+  double max_distance = 3.0;                              ///< mm: all three vertices this close to the plane
+  double max_angle_deg = 25.0;                            ///< normal within this angle of the plane's normal
+  int rounds = 3;                                         ///< plane fit and selection are repeated this often
 };
 
 /** \brief Flags the triangles of the cap: seeds the cap with the triangles facing \a settings.direction, fits a

@@ -33,17 +33,17 @@ closestPointOnTriangle (const Eigen::Vector3d& p, const Eigen::Vector3d& a, cons
 class TriangleLocator
 {
 public:
-  using Ptr = std::shared_ptr<TriangleLocator>;           ///< shared pointer
+  using Ptr = std::shared_ptr<TriangleLocator>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const TriangleLocator>; ///< shared pointer to const
 
   /** \brief Where a query met the surface. */
   struct Hit
   {
-    Eigen::Vector3d point = Eigen::Vector3d::Zero (); ///< the closest surface point
+    Eigen::Vector3d point = Eigen::Vector3d::Zero ();       ///< the closest surface point
     Eigen::Vector3d barycentric = Eigen::Vector3d::Zero (); ///< its weights in \a triangle
-    int triangle = -1;         ///< the triangle it lies on
-    double distance = 0.0;     ///< from the query (mm)
-    bool on_boundary = false;  ///< it lies on an edge used by one triangle only, or on a vertex of such an edge
+    int triangle = -1;                                      ///< the triangle it lies on
+    double distance = 0.0;                                  ///< from the query (mm)
+    bool on_boundary = false; ///< it lies on an edge used by one triangle only, or on a vertex of such an edge
   };
 
   /** \brief Builds the hierarchy; throws InvalidInputError (via validateMesh) for an invalid mesh.
@@ -64,9 +64,9 @@ private:
   {
     Eigen::Vector3d low;
     Eigen::Vector3d high;
-    int first;  ///< leaf: first entry of order_; inner node: index of the left child
-    int count;  ///< leaf: number of triangles; 0 for an inner node
-    int right;  ///< inner node: index of the right child
+    int first; ///< leaf: first entry of order_; inner node: index of the left child
+    int count; ///< leaf: number of triangles; 0 for an inner node
+    int right; ///< inner node: index of the right child
   };
 
   int

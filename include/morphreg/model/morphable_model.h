@@ -62,8 +62,8 @@ struct GammaPair
 /** \brief Weighting of the shape regulariser Lambda (thesis eq. 42). */
 enum class ShapePrior
 {
-  identity,          ///< Lambda = I: coefficients are penalised in mm
-  inverse_std_dev    ///< Lambda = diag(1 / sqrt(variance)): a prior in units of standard deviations
+  identity,       ///< Lambda = I: coefficients are penalised in mm
+  inverse_std_dev ///< Lambda = diag(1 / sqrt(variance)): a prior in units of standard deviations
 };
 
 /** \brief A multi-region PCA shape model in a fixed triangle topology (mm by default).
@@ -87,7 +87,7 @@ enum class ShapePrior
 class MorphableModel
 {
 public:
-  using Ptr = std::shared_ptr<MorphableModel>;           ///< shared pointer
+  using Ptr = std::shared_ptr<MorphableModel>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const MorphableModel>; ///< shared pointer to const
   /** \brief Row-major dense matrix: the 3 rows of a vertex are contiguous. */
   using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -131,8 +131,8 @@ public:
   {
     Eigen::VectorXd coefficients;    ///< the stacked coefficients of the selection
     Eigen::Matrix3Xd reconstruction; ///< the model instance they give (3 x N)
-    double rms_error = 0.0; ///< RMS vertex distance (mm) between the shape and its reconstruction
-    double max_error = 0.0; ///< largest vertex distance (mm)
+    double rms_error = 0.0;          ///< RMS vertex distance (mm) between the shape and its reconstruction
+    double max_error = 0.0;          ///< largest vertex distance (mm)
   };
 
   /** \brief Builds a model and its per-vertex index. Throws InvalidInputError if the triangles or mean are
@@ -580,12 +580,11 @@ private:
 
 // Bodies in impl/morphable_model.hpp (include it for other point types); instantiated in the library for:
 /// \cond
-#define MORPHREG_DECLARE_MORPHABLE_MODEL(T)                                                                   \
-  extern template pcl::PointCloud<T>::Ptr morphreg::MorphableModel::generateCloud<T> (                       \
+#define MORPHREG_DECLARE_MORPHABLE_MODEL(T)                                                                            \
+  extern template pcl::PointCloud<T>::Ptr morphreg::MorphableModel::generateCloud<T> (                                 \
       const Eigen::VectorXd&, const morphreg::ComponentSelection&) const;
 MORPHREG_DECLARE_MORPHABLE_MODEL (pcl::PointXYZ)
 MORPHREG_DECLARE_MORPHABLE_MODEL (pcl::PointNormal)
 MORPHREG_DECLARE_MORPHABLE_MODEL (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_MORPHABLE_MODEL
 /// \endcond
-

@@ -54,8 +54,7 @@ computePca (const Eigen::MatrixXd& centred, PcaMethod method = PcaMethod::automa
  */
 std::vector<PcaBasis>
 computeVertexSetPcas (Eigen::MatrixXd centred, const std::vector<std::vector<int>>& vertex_sets,
-                      PcaMethod method = PcaMethod::automatic, int max_components = 0,
-                      double explained_fraction = 1.0);
+                      PcaMethod method = PcaMethod::automatic, int max_components = 0, double explained_fraction = 1.0);
 
 /** \brief The number of leading components to keep: at most \a max_components (<= 0: no limit) and the fewest
  *  whose cumulative variance reaches \a explained_fraction (in (0, 1]) of the total.

@@ -16,8 +16,7 @@ namespace morphreg
  *  \param[in] tolerance the rounds stop when the mean moves less than this (relative)
  */
 void
-alignGeneralisedProcrustes (std::vector<Eigen::Matrix3Xd>& shapes, int max_iterations = 50,
-                            double tolerance = 1e-9);
+alignGeneralisedProcrustes (std::vector<Eigen::Matrix3Xd>& shapes, int max_iterations = 50, double tolerance = 1e-9);
 
 /** \brief As above for shapes stored as the columns of \a shapes (3N x M, x y z interleaved per point), aligned in
  *  place: the layout of a PCA data matrix, which then needs no copy. Throws InvalidInputError for fewer than two

@@ -12,8 +12,8 @@ namespace morphreg
 /** \brief An 8-bit RGB image, rows top to bottom (pixel (0, 0) is the top-left corner, as in photo annotations). */
 struct RgbImage
 {
-  int width = 0;  ///< pixels per row
-  int height = 0; ///< rows
+  int width = 0;                   ///< pixels per row
+  int height = 0;                  ///< rows
   std::vector<unsigned char> data; ///< 3 bytes per pixel, row by row
 
   /** \brief The colour of column \a x, row \a y (no range check).

@@ -27,9 +27,9 @@ enum class TwoViewStage
 struct TwoViewIteration
 {
   TwoViewStage stage = TwoViewStage::similarity; ///< what the iteration estimated
-  int profile_correspondences = 0; ///< profile-line vertices within the correspondence distance
-  double profile_rms = 0.0;        ///< RMS in-image distance of those vertices to the silhouette (mm)
-  double landmark_rms = 0.0;       ///< RMS in-image distance of the frontal landmarks (mm; 0 without them)
+  int profile_correspondences = 0;               ///< profile-line vertices within the correspondence distance
+  double profile_rms = 0.0;                      ///< RMS in-image distance of those vertices to the silhouette (mm)
+  double landmark_rms = 0.0; ///< RMS in-image distance of the frontal landmarks (mm; 0 without them)
 };
 
 /** \brief A fitted model instance v = mu + M m and the similarity X = s R v + t from the model frame (mm) into the
@@ -37,22 +37,23 @@ struct TwoViewIteration
  */
 struct TwoViewFit
 {
-  ComponentSelection selection;   ///< the components of \a coefficients
-  Eigen::VectorXd coefficients;   ///< shape coefficients (mm along the orthonormal basis)
-  double scale = 1.0;             ///< s: normalised units per model millimetre
+  ComponentSelection selection;                            ///< the components of \a coefficients
+  Eigen::VectorXd coefficients;                            ///< shape coefficients (mm along the orthonormal basis)
+  double scale = 1.0;                                      ///< s: normalised units per model millimetre
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity (); ///< R
   Eigen::Vector3d translation = Eigen::Vector3d::Zero ();  ///< t, normalised units
-  TriangleMesh model_mesh;        ///< the fitted shape in the model frame (mm)
-  TriangleMesh image_mesh;        ///< the fitted shape in the normalised photo frame
-  std::vector<TwoViewIteration> history; ///< every iteration's residuals, in order
-  TwoViewIteration final_residuals; ///< the residuals at the returned state
+  TriangleMesh model_mesh;                                 ///< the fitted shape in the model frame (mm)
+  TriangleMesh image_mesh;                                 ///< the fitted shape in the normalised photo frame
+  std::vector<TwoViewIteration> history;                   ///< every iteration's residuals, in order
+  TwoViewIteration final_residuals;                        ///< the residuals at the returned state
   /** \brief What the result is: "profile", "joint" or "tps_icp"; a TPS-ICP fit none of whose rounds lowered the image
    *  error returns its starting profile fit, and says "profile" here. */
   std::string returned;
-  int tps_rounds = 0;                ///< TPS-ICP rounds whose result was kept (0 for the other fits)
+  int tps_rounds = 0;                 ///< TPS-ICP rounds whose result was kept (0 for the other fits)
   Eigen::VectorXd coefficient_sigmas; ///< the coefficients in prior standard deviations (stacked like them)
 
-  std::vector<std::string> ignored_landmarks; ///< frontal outline landmarks left out (TwoViewFitting::setContourLandmarkWeight)
+  std::vector<std::string>
+      ignored_landmarks; ///< frontal outline landmarks left out (TwoViewFitting::setContourLandmarkWeight)
 
   /** \brief The largest |coefficient| in prior standard deviations (0 without components).
    *  \return the largest |coefficient_sigmas| entry
@@ -97,6 +98,5 @@ twoViewFitJson (const TwoViewFit& fit);
  *  \param[in] fit the fit
  */
 void
-saveTwoViewFitReport
- (const std::string& path, const TwoViewFit& fit);
+saveTwoViewFitReport (const std::string& path, const TwoViewFit& fit);
 } // namespace morphreg

@@ -36,7 +36,10 @@ public:
   static constexpr int kCandidates = 8;
 
   /** \brief An estimation with an empty cache, named "CachedCorrespondenceEstimation" in PCL's messages. */
-  CachedCorrespondenceEstimation () { this->corr_name_ = "CachedCorrespondenceEstimation"; }
+  CachedCorrespondenceEstimation ()
+  {
+    this->corr_name_ = "CachedCorrespondenceEstimation";
+  }
 
   /** \brief Each source point's nearest target point, in source-index order, querying the tree only where the
    *  cache cannot prove the nearest point.
@@ -93,7 +96,7 @@ private:
 } // namespace morphreg
 
 /// \cond
-#define MORPHREG_DECLARE_CACHED_ESTIMATION(T)                                                                       \
+#define MORPHREG_DECLARE_CACHED_ESTIMATION(T)                                                                          \
   extern template class morphreg::CachedCorrespondenceEstimation<T, T, float>;
 MORPHREG_DECLARE_CACHED_ESTIMATION (pcl::PointXYZ)
 MORPHREG_DECLARE_CACHED_ESTIMATION (pcl::PointNormal)

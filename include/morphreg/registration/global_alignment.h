@@ -17,18 +17,18 @@ namespace morphreg
 /** \brief Settings of alignHeadGlobally. Lengths are relative to the model's size, so they hold for any model. */
 struct GlobalAlignmentSettings
 {
-  double voxel_ratio = 0.05;     ///< the scan is thinned to one point per voxel of this share of the model's radius
-  double min_radius_ratio = 0.6; ///< smallest head sphere searched, relative to the model's own head sphere
-  double max_radius_ratio = 1.6; ///< largest head sphere searched, relative to the model's own head sphere
-  int centre_candidates = 3;     ///< strongest distinct head spheres whose rotations are searched
-  int rotation_directions = 256; ///< directions of the model's up axis in the rotation grid (Fibonacci sphere)
-  int rotation_twists = 24;      ///< rotations about the up axis per direction (24: 15 degree steps)
-  int score_samples = 400;       ///< model surface samples scored per rotation on the distance transform
-  int rotations_per_anchor = 10; ///< best distinct rotations kept per anchor (head sphere or centroid)
-  int refined_poses = 24;        ///< of those, the best-scoring over all anchors refined by similarity ICP
-  int refine_iterations = 30;    ///< similarity ICP iterations of the poses that are refined to the end
-  int screen_iterations = 8;     ///< iterations every refined pose runs before only the best 3 go on
-  double inlier_fraction = 0.7;  ///< share of the closest pairs kept in each similarity ICP step
+  double voxel_ratio = 0.05;      ///< the scan is thinned to one point per voxel of this share of the model's radius
+  double min_radius_ratio = 0.6;  ///< smallest head sphere searched, relative to the model's own head sphere
+  double max_radius_ratio = 1.6;  ///< largest head sphere searched, relative to the model's own head sphere
+  int centre_candidates = 3;      ///< strongest distinct head spheres whose rotations are searched
+  int rotation_directions = 256;  ///< directions of the model's up axis in the rotation grid (Fibonacci sphere)
+  int rotation_twists = 24;       ///< rotations about the up axis per direction (24: 15 degree steps)
+  int score_samples = 400;        ///< model surface samples scored per rotation on the distance transform
+  int rotations_per_anchor = 10;  ///< best distinct rotations kept per anchor (head sphere or centroid)
+  int refined_poses = 24;         ///< of those, the best-scoring over all anchors refined by similarity ICP
+  int refine_iterations = 30;     ///< similarity ICP iterations of the poses that are refined to the end
+  int screen_iterations = 8;      ///< iterations every refined pose runs before only the best 3 go on
+  double inlier_fraction = 0.7;   ///< share of the closest pairs kept in each similarity ICP step
   double truncation_ratio = 0.15; ///< distances are truncated at this share of the model's radius in the scores
 };
 
@@ -40,15 +40,15 @@ struct GlobalAlignment
    *  agreeing) times how much better the pose scores than the best distinct alternative (1 - best / runner-up).
    */
   double confidence = 0.0;
-  double coverage = 0.0;          ///< share of the model's surface samples with a scan point close by at the pose
-  double score = 0.0;             ///< truncated mean distance (mm) of the model's surface samples to the scan
-  double runner_up_score = 0.0;   ///< the same for the best pose at least 30 degrees away (0 if there is none)
+  double coverage = 0.0;        ///< share of the model's surface samples with a scan point close by at the pose
+  double score = 0.0;           ///< truncated mean distance (mm) of the model's surface samples to the scan
+  double runner_up_score = 0.0; ///< the same for the best pose at least 30 degrees away (0 if there is none)
   Eigen::Vector3d head_centre = Eigen::Vector3d::Zero (); ///< centre of the head sphere that won (scan frame)
-  double head_radius = 0.0;       ///< its radius (mm)
-  int rotations_scored = 0;       ///< rotations scored on the distance transform
-  int poses_refined = 0;          ///< poses refined by similarity ICP
-  std::vector<int> head_indices;  ///< scan points near the aligned model: the head; the rest are outliers to the fit
-  std::string method;             ///< a sentence saying how the pose was chosen (for reports)
+  double head_radius = 0.0;                               ///< its radius (mm)
+  int rotations_scored = 0;                               ///< rotations scored on the distance transform
+  int poses_refined = 0;                                  ///< poses refined by similarity ICP
+  std::vector<int> head_indices; ///< scan points near the aligned model: the head; the rest are outliers to the fit
+  std::string method;            ///< a sentence saying how the pose was chosen (for reports)
 };
 
 /** \brief Finds the similarity mapping \a model_mean (the model's mean mesh, mm) onto its head in \a scan (3 x N,

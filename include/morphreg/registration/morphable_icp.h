@@ -27,7 +27,7 @@ namespace morphreg
 /** \brief One phase of the shape stage: the components fitted and the smoothness weight lambda_1 used. */
 struct ShapePhase
 {
-  ComponentSelection components; ///< per region at most the counts of MorphableICP::getComponentSelection()
+  ComponentSelection components;  ///< per region at most the counts of MorphableICP::getComponentSelection()
   double smoothness_weight = 1.0; ///< lambda_1 of this phase (>= 0)
 };
 

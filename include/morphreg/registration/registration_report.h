@@ -23,7 +23,7 @@ enum class IcpTermination
   transformation_converged, ///< the mean squared vertex motion of an update fell below the transformation epsilon
   fitness_converged,        ///< the change of the cost per row fell below the Euclidean fitness epsilon
   max_iterations,           ///< the iteration budget ran out (the best state is returned)
-  diverged                  ///< cost rising, coefficients far outside the prior or an unsolvable system: best state returned
+  diverged ///< cost rising, coefficients far outside the prior or an unsolvable system: best state returned
 };
 
 /** \brief Why a run stopped as diverged (IcpTermination::diverged); the best state is returned in every case. */
@@ -63,19 +63,19 @@ struct IcpIteration
 struct IcpReport
 {
   IcpTermination termination = IcpTermination::not_run; ///< why the run stopped
-  std::string message;              ///< human-readable detail (e.g. what diverged)
-  IcpDivergence divergence = IcpDivergence::none; ///< what diverged, with IcpTermination::diverged
-  std::vector<IcpIteration> history; ///< every iteration, in order
-  int similarity_iterations = 0;     ///< iterations of the similarity stage
-  int shape_iterations = 0;          ///< iterations of the shape stage
+  std::string message;                                  ///< human-readable detail (e.g. what diverged)
+  IcpDivergence divergence = IcpDivergence::none;       ///< what diverged, with IcpTermination::diverged
+  std::vector<IcpIteration> history;                    ///< every iteration, in order
+  int similarity_iterations = 0;                        ///< iterations of the similarity stage
+  int shape_iterations = 0;                             ///< iterations of the shape stage
   /** \brief The similarity the iterations started from (the guess, the landmark, the coarse or the global start). */
   Eigen::Matrix4d initial_transformation = Eigen::Matrix4d::Identity ();
-  std::string initialisation;         ///< how it was found: "guess", "landmarks", "coarse" or "global"
-  std::string initialisation_detail;  ///< for the global start: how it chose (GlobalAlignment::method)
+  std::string initialisation;             ///< how it was found: "guess", "landmarks", "coarse" or "global"
+  std::string initialisation_detail;      ///< for the global start: how it chose (GlobalAlignment::method)
   double initialisation_confidence = 1.0; ///< the global start's confidence in [0, 1]; 1 for the others
-  int head_points = -1;               ///< target points the global start found on the head (-1: not searched)
-  std::string target_unit = "mm";     ///< the target's length unit (given or guessed); the fit ran in mm
-  std::string target_unit_reason;     ///< why that unit: "given", or guessLengthUnit's sentence
+  int head_points = -1;                   ///< target points the global start found on the head (-1: not searched)
+  std::string target_unit = "mm";         ///< the target's length unit (given or guessed); the fit ran in mm
+  std::string target_unit_reason;         ///< why that unit: "given", or guessLengthUnit's sentence
   /** \brief Accepted correspondences at the returned state, over which the fitness figures below are taken
    *  (scan-to-model distances in mm, whatever the target's unit). */
   int correspondences = 0;

@@ -23,15 +23,15 @@ struct SurfaceDistanceSettings
 /** \brief Distances (mm) of the kept target samples to the fitted surface, and their statistics. */
 struct SurfaceDistance
 {
-  std::vector<double> distances; ///< per kept sample
+  std::vector<double> distances;     ///< per kept sample
   std::vector<int> fitted_triangles; ///< per kept sample: the fitted triangle its closest point lies on
-  int samples = 0;               ///< samples drawn (before dropping)
-  int dropped_on_boundary = 0;   ///< samples whose closest fitted point lies on the fitted boundary
-  double mean = 0.0;             ///< mean distance (mm) of the kept samples
-  double median = 0.0;           ///< median distance (mm)
-  double percentile95 = 0.0;     ///< 95th percentile of the distances (mm)
-  double rms = 0.0;              ///< root mean square distance (mm)
-  double max = 0.0;              ///< largest distance (mm)
+  int samples = 0;                   ///< samples drawn (before dropping)
+  int dropped_on_boundary = 0;       ///< samples whose closest fitted point lies on the fitted boundary
+  double mean = 0.0;                 ///< mean distance (mm) of the kept samples
+  double median = 0.0;               ///< median distance (mm)
+  double percentile95 = 0.0;         ///< 95th percentile of the distances (mm)
+  double rms = 0.0;                  ///< root mean square distance (mm)
+  double max = 0.0;                  ///< largest distance (mm)
 };
 
 /** \brief Samples \a target (without the triangles flagged in \a excluded_target, e.g. a scanner's closing cap)
@@ -44,8 +44,8 @@ struct SurfaceDistance
  *  \return the kept samples' distances (mm), the fitted triangle each lands on, and their statistics
  */
 SurfaceDistance
-surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
-                 const std::vector<bool>& excluded_target = {}, const SurfaceDistanceSettings& settings = {});
+surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted, const std::vector<bool>& excluded_target = {},
+                 const SurfaceDistanceSettings& settings = {});
 
 /** \brief The statistics of the kept samples whose closest point lies on a fitted triangle flagged in
  *  \a triangles (one flag per fitted triangle), e.g. the face of a head model; \a distance as surfaceDistance
@@ -57,6 +57,5 @@ surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted,
  */
 SurfaceDistance
 surfaceDistanceOver (const SurfaceDistance& distance, const std::vector<bool>& triangles);
-
 
 } // namespace morphreg

@@ -58,7 +58,7 @@ struct SyntheticHead
 class HeadGenerator
 {
 public:
-  using Ptr = std::shared_ptr<HeadGenerator>;           ///< shared pointer
+  using Ptr = std::shared_ptr<HeadGenerator>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const HeadGenerator>; ///< shared pointer to const
 
   /** \brief \a resolution (even, 20-44) cells per cube edge of the underlying sphere: 6 r^2 + 2 vertices

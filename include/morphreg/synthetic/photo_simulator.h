@@ -44,15 +44,15 @@ public:
   /** \brief Camera and annotation settings. */
   struct Parameters
   {
-    int width = 1000;                   ///< image width (px), both photos
-    int height = 1200;                  ///< image height (px), both photos
-    double pixels_per_mm = 3.5;         ///< the same in both photos
+    int width = 1000;                                        ///< image width (px), both photos
+    int height = 1200;                                       ///< image height (px), both photos
+    double pixels_per_mm = 3.5;                              ///< the same in both photos
     Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity (); ///< the head's pose (about its origin)
-    Eigen::Vector2d frontal_nose{480.0, 620.0};  ///< where the nose tip lands in the frontal photo (px)
-    Eigen::Vector2d profile_nose{650.0, 600.0};  ///< and in the profile photo
-    double landmark_noise = 1.0;        ///< px, standard deviation of each marked coordinate (nose tips too)
-    double silhouette_noise = 0.5;      ///< px, of each silhouette point
-    int silhouette_subdivisions = 3;    ///< points inserted in each segment of the projected profile line
+    Eigen::Vector2d frontal_nose{480.0, 620.0};              ///< where the nose tip lands in the frontal photo (px)
+    Eigen::Vector2d profile_nose{650.0, 600.0};              ///< and in the profile photo
+    double landmark_noise = 1.0;     ///< px, standard deviation of each marked coordinate (nose tips too)
+    double silhouette_noise = 0.5;   ///< px, of each silhouette point
+    int silhouette_subdivisions = 3; ///< points inserted in each segment of the projected profile line
   };
 
   /** \brief A simulator with the default Parameters. */

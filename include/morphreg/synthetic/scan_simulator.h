@@ -53,17 +53,17 @@ public:
   /** \brief Scanner settings; the defaults give about 60k points on an average head. */
   struct Parameters
   {
-    int angular_samples = 400;     ///< rays per turn around the vertical axis
-    double row_spacing = 1.5;      ///< mm between scan rows
-    double max_incidence_deg = 65; ///< surfaces seen more obliquely than this by the laser or camera are lost
-    double camera_elevation_deg = 25; ///< the triangulating camera looks down at the laser plane from above
-    double noise_sigma = 0.2;      ///< mm, Gaussian range noise along each ray
-    double outlier_fraction = 0.01; ///< outliers as a fraction of all returned points
-    double max_rotation_deg = 20;  ///< the random pose: rotation angle up to this, about a random axis
+    int angular_samples = 400;         ///< rays per turn around the vertical axis
+    double row_spacing = 1.5;          ///< mm between scan rows
+    double max_incidence_deg = 65;     ///< surfaces seen more obliquely than this by the laser or camera are lost
+    double camera_elevation_deg = 25;  ///< the triangulating camera looks down at the laser plane from above
+    double noise_sigma = 0.2;          ///< mm, Gaussian range noise along each ray
+    double outlier_fraction = 0.01;    ///< outliers as a fraction of all returned points
+    double max_rotation_deg = 20;      ///< the random pose: rotation angle up to this, about a random axis
     double max_scale_deviation = 0.05; ///< scale uniform in [1 - d, 1 + d]
-    double max_translation = 100;  ///< mm, translation uniform in a ball of this radius
-    bool range_mesh = false;       ///< also triangulate the range image
-    double max_edge_length = 6;    ///< mm, range-image neighbours further apart are not connected
+    double max_translation = 100;      ///< mm, translation uniform in a ball of this radius
+    bool range_mesh = false;           ///< also triangulate the range image
+    double max_edge_length = 6;        ///< mm, range-image neighbours further apart are not connected
   };
 
   /** \brief A scanner with the default Parameters. */

@@ -49,7 +49,7 @@ namespace morphreg
 class RegistrationVisualizer
 {
 public:
-  using Ptr = std::shared_ptr<RegistrationVisualizer>;           ///< shared pointer
+  using Ptr = std::shared_ptr<RegistrationVisualizer>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const RegistrationVisualizer>; ///< shared pointer to const
 
   /** \brief An on-screen window with an interactor, or offscreen rendering only (no interactor, no window). */
@@ -68,9 +68,8 @@ public:
 
   /** \brief PCL's registration callback signature (Registration::UpdateVisualizerCallbackSignature). */
   template <typename PointSource, typename PointTarget>
-  using RegistrationCallback =
-      std::function<void (const pcl::PointCloud<PointSource>&, const pcl::Indices&,
-                          const pcl::PointCloud<PointTarget>&, const pcl::Indices&)>;
+  using RegistrationCallback = std::function<void (const pcl::PointCloud<PointSource>&, const pcl::Indices&,
+                                                   const pcl::PointCloud<PointTarget>&, const pcl::Indices&)>;
 
   /** \brief Opens the visualiser. Throws morphreg::Error if there is no X display ($DISPLAY unset).
    *  \param[in] display a window or offscreen rendering
@@ -147,8 +146,7 @@ public:
    *  \param[in] viewport where to show it (0: every viewport)
    */
   void
-  addModelMesh (const pcl::PolygonMesh& mesh, double opacity = 0.6, const std::string& id = "model",
-                int viewport = 0);
+  addModelMesh (const pcl::PolygonMesh& mesh, double opacity = 0.6, const std::string& id = "model", int viewport = 0);
 
   /** \brief Shows the fitted model given as a triangle mesh.
    *  \param[in] mesh the fitted model
@@ -203,8 +201,8 @@ public:
    *  \param[in] viewport where to show it (0: every viewport)
    */
   void
-  addResidualHeatMap (const pcl::PolygonMesh& mesh, const Eigen::VectorXd& residuals_mm,
-                      double max_residual_mm = 0.0, const std::string& id = "residuals", int viewport = 0);
+  addResidualHeatMap (const pcl::PolygonMesh& mesh, const Eigen::VectorXd& residuals_mm, double max_residual_mm = 0.0,
+                      const std::string& id = "residuals", int viewport = 0);
 
   /** \brief Where the colour bar sits in its viewport: (x_min, y_min, x_max, y_max), normalised, origin bottom left.
    *  \return the bar's corners in viewport coordinates
@@ -296,8 +294,8 @@ private:
 
   void
   addCorrespondenceLines (const CloudXYZ::ConstPtr& source, const CloudXYZ::ConstPtr& target,
-                          const pcl::Correspondences& correspondences, std::size_t max_lines,
-                          const std::string& id, int viewport);
+                          const pcl::Correspondences& correspondences, std::size_t max_lines, const std::string& id,
+                          int viewport);
 
   void
   addColourBar (double max_residual_mm, int viewport);
@@ -329,17 +327,16 @@ private:
 } // namespace morphreg
 
 /// \cond
-#define MORPHREG_DECLARE_REGISTRATION_VISUALIZER(T)                                                                \
-  extern template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&,               \
-                                                                             const std::string&, int, double);     \
-  extern template void morphreg::RegistrationVisualizer::addCorrespondences<T, T> (                                  \
-      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&, std::size_t,               \
-      const std::string&, int);                                                                                     \
-  extern template morphreg::RegistrationVisualizer::RegistrationCallback<T, T>                                       \
+#define MORPHREG_DECLARE_REGISTRATION_VISUALIZER(T)                                                                    \
+  extern template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&,                 \
+                                                                            const std::string&, int, double);          \
+  extern template void morphreg::RegistrationVisualizer::addCorrespondences<T, T> (                                    \
+      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&, std::size_t,                  \
+      const std::string&, int);                                                                                        \
+  extern template morphreg::RegistrationVisualizer::RegistrationCallback<T, T>                                         \
   morphreg::RegistrationVisualizer::makeRegistrationCallback<T, T> (int, std::size_t);
 MORPHREG_DECLARE_REGISTRATION_VISUALIZER (pcl::PointXYZ)
 MORPHREG_DECLARE_REGISTRATION_VISUALIZER (pcl::PointNormal)
 MORPHREG_DECLARE_REGISTRATION_VISUALIZER (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_REGISTRATION_VISUALIZER
 /// \endcond
-

@@ -33,7 +33,7 @@ namespace morphreg
 class SegmentedWarp
 {
 public:
-  using Ptr = std::shared_ptr<SegmentedWarp>;           ///< shared pointer
+  using Ptr = std::shared_ptr<SegmentedWarp>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const SegmentedWarp>; ///< shared pointer to const
   using Spline = ThinPlateSpline<double, 3>;             ///< one segment's warp
 

@@ -46,7 +46,7 @@ class ThinPlateSpline
   static_assert (Dim == 2 || Dim == 3, "ThinPlateSpline is 2D or 3D");
 
 public:
-  using Ptr = std::shared_ptr<ThinPlateSpline>;           ///< shared pointer
+  using Ptr = std::shared_ptr<ThinPlateSpline>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const ThinPlateSpline>; ///< shared pointer to const
   using Point = Eigen::Matrix<Scalar, Dim, 1>;             ///< one point
   /** \brief Points as columns (Dim x N). */
@@ -247,19 +247,19 @@ cloudCoordinates (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indi
 } // namespace morphreg
 
 /// \cond
-#define MORPHREG_DECLARE_TPS_POINT(S, D, T)                                                                        \
-  extern template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (const pcl::PointCloud<T>&,                      \
-                                                                   const pcl::PointCloud<T>&);                     \
-  extern template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (                                                \
-      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&);                          \
-  extern template void morphreg::ThinPlateSpline<S, D>::transformCloud<T> (const pcl::PointCloud<T>&,              \
-                                                                          pcl::PointCloud<T>&) const;              \
-  extern template Eigen::Matrix<S, D, Eigen::Dynamic> morphreg::cloudCoordinates<S, D, T> (const pcl::PointCloud<T>&, \
-                                                                                          const pcl::Indices&);
-#define MORPHREG_DECLARE_TPS(S, D)                                                                                 \
-  extern template class morphreg::ThinPlateSpline<S, D>;                                                           \
-  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointXYZ)                                                                 \
-  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointNormal)                                                              \
+#define MORPHREG_DECLARE_TPS_POINT(S, D, T)                                                                            \
+  extern template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (const pcl::PointCloud<T>&,                          \
+                                                                   const pcl::PointCloud<T>&);                         \
+  extern template void morphreg::ThinPlateSpline<S, D>::fit<T, T> (                                                    \
+      const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&);                              \
+  extern template void morphreg::ThinPlateSpline<S, D>::transformCloud<T> (const pcl::PointCloud<T>&,                  \
+                                                                           pcl::PointCloud<T>&) const;                 \
+  extern template Eigen::Matrix<S, D, Eigen::Dynamic> morphreg::cloudCoordinates<S, D, T> (const pcl::PointCloud<T>&,  \
+                                                                                           const pcl::Indices&);
+#define MORPHREG_DECLARE_TPS(S, D)                                                                                     \
+  extern template class morphreg::ThinPlateSpline<S, D>;                                                               \
+  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointXYZ)                                                                     \
+  MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointNormal)                                                                  \
   MORPHREG_DECLARE_TPS_POINT (S, D, pcl::PointXYZRGBNormal)
 MORPHREG_DECLARE_TPS (double, 3)
 MORPHREG_DECLARE_TPS (float, 3)
@@ -268,4 +268,3 @@ MORPHREG_DECLARE_TPS (float, 2)
 #undef MORPHREG_DECLARE_TPS
 #undef MORPHREG_DECLARE_TPS_POINT
 /// \endcond
-

@@ -28,7 +28,7 @@ template <typename PointSource, typename PointTarget, typename Scalar = double>
 class TransformationEstimationTPS
 {
 public:
-  using Ptr = std::shared_ptr<TransformationEstimationTPS>;           ///< shared pointer
+  using Ptr = std::shared_ptr<TransformationEstimationTPS>;            ///< shared pointer
   using ConstPtr = std::shared_ptr<const TransformationEstimationTPS>; ///< shared pointer to const
   using PointCloudSource = pcl::PointCloud<PointSource>;               ///< the source cloud type
   using PointCloudTarget = pcl::PointCloud<PointTarget>;               ///< the target cloud type
@@ -120,12 +120,11 @@ private:
 } // namespace morphreg
 
 /// \cond
-#define MORPHREG_DECLARE_TPS_ESTIMATION(T)                                                                         \
-  extern template class morphreg::TransformationEstimationTPS<T, T, double>;                                      \
+#define MORPHREG_DECLARE_TPS_ESTIMATION(T)                                                                             \
+  extern template class morphreg::TransformationEstimationTPS<T, T, double>;                                           \
   extern template class morphreg::TransformationEstimationTPS<T, T, float>;
 MORPHREG_DECLARE_TPS_ESTIMATION (pcl::PointXYZ)
 MORPHREG_DECLARE_TPS_ESTIMATION (pcl::PointNormal)
 MORPHREG_DECLARE_TPS_ESTIMATION (pcl::PointXYZRGBNormal)
 #undef MORPHREG_DECLARE_TPS_ESTIMATION
 /// \endcond
-

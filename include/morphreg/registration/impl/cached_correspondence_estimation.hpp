@@ -80,7 +80,7 @@ CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::fromCache (pcl
 template <typename PointSource, typename PointTarget, typename Scalar>
 void
 CachedCorrespondenceEstimation<PointSource, PointTarget, Scalar>::query (pcl::index_t i, pcl::index_t& match,
-                                                                        float& squared_distance)
+                                                                         float& squared_distance)
 {
   PointTarget point;
   pcl::copyPoint ((*this->input_)[i], point);

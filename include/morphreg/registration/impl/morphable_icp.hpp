@@ -105,8 +105,7 @@ MorphableICP<PointTarget, Scalar>::setModel (const MorphableModel::ConstPtr& mod
     for (int corner = 0; corner < 3; ++corner)
       vertex_area_weights_[mean.triangles (corner, t)] += areas[t] / 3.0;
   vertex_area_weights_ /= std::max (vertex_area_weights_.mean (), std::numeric_limits<double>::min ());
-  Base::setInputSource (model_->generateCloud<PointTarget> (Eigen::VectorXd::Zero (selection_.total ()),
-                                                              selection_));
+  Base::setInputSource (model_->generateCloud<PointTarget> (Eigen::VectorXd::Zero (selection_.total ()), selection_));
 }
 
 template <typename PointTarget, typename Scalar>
@@ -139,7 +138,7 @@ MorphableICP<PointTarget, Scalar>::setShapeSchedule (std::vector<ShapePhase> pha
 {
   for (size_t k = 0; k < phases.size (); ++k)
     requirePriorWeight (phases[k].smoothness_weight,
-                           "MorphableICP::setShapeSchedule: lambda_1 of phase " + std::to_string (k));
+                        "MorphableICP::setShapeSchedule: lambda_1 of phase " + std::to_string (k));
   schedule_ = std::move (phases);
 }
 
@@ -221,8 +220,7 @@ MorphableICP<PointTarget, Scalar>::setTargetLandmarks (const LandmarkPositions& 
   requirePriorWeight (weight, "MorphableICP::setTargetLandmarks: the landmark weight");
   for (const auto& landmark : landmarks) {
     if (!landmark.second.allFinite ())
-      throw InvalidInputError ("MorphableICP::setTargetLandmarks: landmark '" + landmark.first +
-                               "' is not finite");
+      throw InvalidInputError ("MorphableICP::setTargetLandmarks: landmark '" + landmark.first + "' is not finite");
     if (model_)
       model_->landmarkVertex (landmark.first);
   }
@@ -339,7 +337,7 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess)
   const Eigen::Matrix4d given = guess.template cast<double> ();
   IcpInitialisation mode = initialisation_;
   if (mode == IcpInitialisation::automatic)
-    mode = !given.isIdentity () ? IcpInitialisation::guess
+    mode = !given.isIdentity ()      ? IcpInitialisation::guess
            : landmarks_.size () >= 3 ? IcpInitialisation::landmarks
                                      : IcpInitialisation::global;
   report_.initialisation = mode == IcpInitialisation::guess       ? "guess"
@@ -417,8 +415,8 @@ MorphableICP<PointTarget, Scalar>::prepareEstimators ()
   }
   landmark_rows_.clear ();
   for (const auto& landmark : landmarks_)
-    landmark_rows_.push_back ({model_->landmarkVertex (landmark.first), landmark.second,
-                               landmark_weight_ * Eigen::Matrix3d::Identity ()});
+    landmark_rows_.push_back (
+        {model_->landmarkVertex (landmark.first), landmark.second, landmark_weight_ * Eigen::Matrix3d::Identity ()});
 }
 
 template <typename PointTarget, typename Scalar>
@@ -452,9 +450,8 @@ MorphableICP<PointTarget, Scalar>::phases () const
       phases.push_back ({true, shape, robust_loss_});
   // Graduated: Huber until the last phase, which uses Tukey's weights (see setGraduatedRobustLoss).
   for (size_t k = 0; k < phases.size (); ++k)
-    phases[k].loss = graduated_loss_ && robust_loss_ == RobustLoss::tukey && k + 1 < phases.size ()
-                         ? RobustLoss::huber
-                         : robust_loss_;
+    phases[k].loss = graduated_loss_ && robust_loss_ == RobustLoss::tukey && k + 1 < phases.size () ? RobustLoss::huber
+                                                                                                    : robust_loss_;
   return phases;
 }
 
@@ -492,9 +489,9 @@ MorphableICP<PointTarget, Scalar>::startPhase (const Phase& phase, int phases_le
     return false;
   // The similarity stage gets at most half the iterations when shape phases follow; a shape phase its share of
   // what is left.
-  const int budget = phase.shape        ? std::max (1, remaining / phases_left)
+  const int budget = phase.shape       ? std::max (1, remaining / phases_left)
                      : phases_left > 1 ? std::min (similarity_iterations_, std::max (1, this->max_iterations_ / 2))
-                                        : remaining;
+                                       : remaining;
   convergence.startPhase (budget, phase.shape, sigma);
   return true;
 }
@@ -661,8 +658,8 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   prepareEstimators ();
   PoseShapeState state = initialState (guess);
   const double motion_epsilon = this->transformation_epsilon_ > 0.0 ? this->transformation_epsilon_ : 1e-4;
-  MorphableConvergence convergence (this->max_iterations_, motion_epsilon, this->euclidean_fitness_epsilon_,
-                                    max_sigma_, rising_iterations_);
+  MorphableConvergence convergence (this->max_iterations_, motion_epsilon, this->euclidean_fitness_epsilon_, max_sigma_,
+                                    rising_iterations_);
   const std::vector<Phase> phases = this->phases ();
   PoseShapeLeastSquares solver = this->solver (phases.front ());
   PoseShapeState best = state;
@@ -679,8 +676,8 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
 template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::finish (PoseShapeState state, const PoseShapeState& best,
-                                           const PoseShapeLeastSquares& solver,
-                                           const MorphableConvergence& convergence, PointCloudSource& output)
+                                           const PoseShapeLeastSquares& solver, const MorphableConvergence& convergence,
+                                           PointCloudSource& output)
 {
   report_.termination = convergence.termination ();
   report_.divergence = convergence.divergence ();

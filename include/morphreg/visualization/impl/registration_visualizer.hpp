@@ -45,10 +45,9 @@ RegistrationVisualizer::makeRegistrationCallback (int viewport, std::size_t max_
 {
   // The target only changes between align() calls: remember which one was drawn and redraw it when it changes.
   auto drawn_target = std::make_shared<const pcl::PointCloud<PointTarget>*> (nullptr);
-  return [this, viewport, max_lines, drawn_target] (const pcl::PointCloud<PointSource>& source,
-                                                    const pcl::Indices& source_indices,
-                                                    const pcl::PointCloud<PointTarget>& target,
-                                                    const pcl::Indices& target_indices) {
+  return [this, viewport, max_lines,
+          drawn_target] (const pcl::PointCloud<PointSource>& source, const pcl::Indices& source_indices,
+                         const pcl::PointCloud<PointTarget>& target, const pcl::Indices& target_indices) {
     const bool target_changed = *drawn_target != &target;
     *drawn_target = &target;
     showRegistrationState (detail::positionsOf (source), source_indices, detail::positionsOf (target), target_changed,

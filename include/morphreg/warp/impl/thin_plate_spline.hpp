@@ -46,8 +46,8 @@ ThinPlateSpline<Scalar, Dim>::fit (const Eigen::Ref<const Points>& source, const
   options.regularization = regularization_;
   options.max_condition_number = max_condition_number_;
   options.caller = "ThinPlateSpline::fit";
-  const detail::TpsFit fit = detail::fitThinPlateSpline (source.template cast<double> (),
-                                                         target.template cast<double> (), options);
+  const detail::TpsFit fit =
+      detail::fitThinPlateSpline (source.template cast<double> (), target.template cast<double> (), options);
   coefficients_.landmarks = fit.landmarks.cast<Scalar> ();
   coefficients_.weights = fit.weights.cast<Scalar> ();
   coefficients_.affine = fit.affine.cast<Scalar> ();
@@ -60,7 +60,8 @@ ThinPlateSpline<Scalar, Dim>::fit (const Eigen::Ref<const Points>& source, const
 template <typename Scalar, int Dim>
 template <typename PointSource, typename PointTarget>
 void
-ThinPlateSpline<Scalar, Dim>::fit (const pcl::PointCloud<PointSource>& source, const pcl::PointCloud<PointTarget>& target)
+ThinPlateSpline<Scalar, Dim>::fit (const pcl::PointCloud<PointSource>& source,
+                                   const pcl::PointCloud<PointTarget>& target)
 {
   if (source.size () != target.size ()) {
     std::ostringstream msg;
@@ -74,7 +75,8 @@ ThinPlateSpline<Scalar, Dim>::fit (const pcl::PointCloud<PointSource>& source, c
 template <typename Scalar, int Dim>
 template <typename PointSource, typename PointTarget>
 void
-ThinPlateSpline<Scalar, Dim>::fit (const pcl::PointCloud<PointSource>& source, const pcl::PointCloud<PointTarget>& target,
+ThinPlateSpline<Scalar, Dim>::fit (const pcl::PointCloud<PointSource>& source,
+                                   const pcl::PointCloud<PointTarget>& target,
                                    const pcl::Correspondences& correspondences)
 {
   if (correspondences.empty ())
@@ -84,8 +86,8 @@ ThinPlateSpline<Scalar, Dim>::fit (const pcl::PointCloud<PointSource>& source, c
   target_indices.reserve (correspondences.size ());
   for (std::size_t c = 0; c < correspondences.size (); ++c) {
     const pcl::Correspondence& pair = correspondences[c];
-    if (pair.index_query < 0 || static_cast<std::size_t> (pair.index_query) >= source.size () ||
-        pair.index_match < 0 || static_cast<std::size_t> (pair.index_match) >= target.size ()) {
+    if (pair.index_query < 0 || static_cast<std::size_t> (pair.index_query) >= source.size () || pair.index_match < 0 ||
+        static_cast<std::size_t> (pair.index_match) >= target.size ()) {
       std::ostringstream msg;
       msg << "ThinPlateSpline::fit: correspondence " << c << " (" << pair.index_query << " -> " << pair.index_match
           << ") is out of range for clouds of " << source.size () << " and " << target.size ()
@@ -184,21 +186,24 @@ ThinPlateSpline<Scalar, Dim>::jacobian (const Point& x) const
 template <typename Scalar, int Dim>
 template <typename PointT>
 void
-ThinPlateSpline<Scalar, Dim>::transformCloud (const pcl::PointCloud<PointT>& input, pcl::PointCloud<PointT>& output) const
+ThinPlateSpline<Scalar, Dim>::transformCloud (const pcl::PointCloud<PointT>& input,
+                                              pcl::PointCloud<PointT>& output) const
 {
   requireFitted ("transformCloud");
   const Points warped = evaluate (cloudCoordinates<Scalar, Dim> (input));
   if (&output != &input)
     output = input;
   const auto count = static_cast<Eigen::Index> (output.size ());
-#pragma omp parallel for schedule(static) if (double (count) * double (coefficients_.landmarks.rows ()) > detail::kTpsParallelPairs)
+#pragma omp parallel for schedule(static) if (double(count) * double(coefficients_.landmarks.rows()) >                 \
+                                              detail::kTpsParallelPairs)
   for (Eigen::Index j = 0; j < count; ++j) {
     PointT& p = output[j];
     if constexpr (pcl::traits::has_normal_v<PointT>) {
       // Normals are covectors: n' ~ J^-T n, with J the full 3D Jacobian (identity on z in 2D).
       const Point x = p.getVector3fMap ().template head<Dim> ().template cast<Scalar> ();
       Eigen::Matrix3d j3 = Eigen::Matrix3d::Identity ();
-      j3.template topLeftCorner<Dim, Dim> () = detail::evaluateTpsJacobian (coefficients_, x.data ()).template cast<double> ();
+      j3.template topLeftCorner<Dim, Dim> () =
+          detail::evaluateTpsJacobian (coefficients_, x.data ()).template cast<double> ();
       const Eigen::Vector3d n = j3.inverse ().transpose () * p.getNormalVector3fMap ().template cast<double> ();
       if (n.allFinite () && n.norm () > 0.0)
         p.getNormalVector3fMap () = (n / n.norm ()).template cast<float> ();

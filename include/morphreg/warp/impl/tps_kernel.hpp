@@ -153,7 +153,8 @@ constexpr Eigen::Index kTpsBlockPoints = 256;
 /** \brief f at every column of \a points (Dim x m) into \a result (Dim x m); threads over points. */
 template <typename Scalar, int Dim>
 void
-evaluateTps (const TpsCoefficients<Scalar, Dim>& c, const Eigen::Ref<const Eigen::Matrix<Scalar, Dim, Eigen::Dynamic>>& points,
+evaluateTps (const TpsCoefficients<Scalar, Dim>& c,
+             const Eigen::Ref<const Eigen::Matrix<Scalar, Dim, Eigen::Dynamic>>& points,
              Eigen::Ref<Eigen::Matrix<Scalar, Dim, Eigen::Dynamic>> result)
 {
   const Eigen::Index m = points.cols ();

@@ -28,31 +28,28 @@ TransformationEstimationTPS<PointSource, PointTarget, Scalar>::configure (Spline
 
 template <typename PointSource, typename PointTarget, typename Scalar>
 void
-TransformationEstimationTPS<PointSource, PointTarget, Scalar>::estimateTransformation (const PointCloudSource& cloud_src,
-                                                                                      const PointCloudTarget& cloud_tgt,
-                                                                                      Spline& spline) const
+TransformationEstimationTPS<PointSource, PointTarget, Scalar>::estimateTransformation (
+    const PointCloudSource& cloud_src, const PointCloudTarget& cloud_tgt, Spline& spline) const
 {
   configure (spline).fit (cloud_src, cloud_tgt);
 }
 
 template <typename PointSource, typename PointTarget, typename Scalar>
 void
-TransformationEstimationTPS<PointSource, PointTarget, Scalar>::estimateTransformation (const PointCloudSource& cloud_src,
-                                                                                      const pcl::Indices& indices_src,
-                                                                                      const PointCloudTarget& cloud_tgt,
-                                                                                      Spline& spline) const
+TransformationEstimationTPS<PointSource, PointTarget, Scalar>::estimateTransformation (
+    const PointCloudSource& cloud_src, const pcl::Indices& indices_src, const PointCloudTarget& cloud_tgt,
+    Spline& spline) const
 {
   detail::requireIndices (indices_src, "indices_src");
-  configure (spline).fit (cloudCoordinates<Scalar, 3> (cloud_src, indices_src), cloudCoordinates<Scalar, 3> (cloud_tgt));
+  configure (spline).fit (cloudCoordinates<Scalar, 3> (cloud_src, indices_src),
+                          cloudCoordinates<Scalar, 3> (cloud_tgt));
 }
 
 template <typename PointSource, typename PointTarget, typename Scalar>
 void
-TransformationEstimationTPS<PointSource, PointTarget, Scalar>::estimateTransformation (const PointCloudSource& cloud_src,
-                                                                                      const pcl::Indices& indices_src,
-                                                                                      const PointCloudTarget& cloud_tgt,
-                                                                                      const pcl::Indices& indices_tgt,
-                                                                                      Spline& spline) const
+TransformationEstimationTPS<PointSource, PointTarget, Scalar>::estimateTransformation (
+    const PointCloudSource& cloud_src, const pcl::Indices& indices_src, const PointCloudTarget& cloud_tgt,
+    const pcl::Indices& indices_tgt, Spline& spline) const
 {
   detail::requireIndices (indices_src, "indices_src");
   detail::requireIndices (indices_tgt, "indices_tgt");
