@@ -9,25 +9,42 @@ set(MORPHREG_PCH_HEADERS <Eigen/Core> <pcl/point_types.h> <pcl/point_cloud.h> <p
     <vector>)
 
 # morphreg_add_pch_target(<name> [POSITION_INDEPENDENT] LINKS <targets> [HEADERS <extra headers>]): an object
-# library that only precompiles MORPHREG_PCH_HEADERS (and HEADERS) with the usage requirements of LINKS.
+# library that only precompiles MORPHREG_PCH_HEADERS (and HEADERS) with the usage requirements of LINKS; for
+# executables, a twin <name>_visualization also links morphreg::visualization, whose Qt dependency compiles with
+# -fPIC (GCC refuses a header precompiled without it there).
 function(morphreg_add_pch_target name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "POSITION_INDEPENDENT" "" "LINKS;HEADERS")
   if(NOT MORPHREG_PRECOMPILED_HEADERS)
     return()
   endif()
+  morphreg_add_pch_object_library(${name} "${arg_POSITION_INDEPENDENT}" "${arg_LINKS}" "${arg_HEADERS}")
+  if(NOT arg_POSITION_INDEPENDENT)
+    morphreg_add_pch_object_library(${name}_visualization OFF "${arg_LINKS};morphreg::visualization"
+                                    "${arg_HEADERS}")
+  endif()
+endfunction()
+
+function(morphreg_add_pch_object_library name position_independent links headers)
   set(source "${CMAKE_CURRENT_BINARY_DIR}/${name}.cpp")
   file(CONFIGURE OUTPUT "${source}" CONTENT "// Empty: ${name} only precompiles headers.\n")
   add_library(${name} OBJECT "${source}")
-  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ${arg_POSITION_INDEPENDENT})
-  target_link_libraries(${name} PRIVATE ${arg_LINKS})
-  target_precompile_headers(${name} PRIVATE ${MORPHREG_PCH_HEADERS} ${arg_HEADERS})
+  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ${position_independent})
+  target_link_libraries(${name} PRIVATE ${links})
+  target_precompile_headers(${name} PRIVATE ${MORPHREG_PCH_HEADERS} ${headers})
 endfunction()
 
-# morphreg_reuse_pch(<pch target> <targets>...): the targets compile with <pch target>'s precompiled headers.
+# morphreg_reuse_pch(<pch target> <targets>...): the targets compile with <pch target>'s precompiled headers (its
+# _visualization twin for a target that links morphreg::visualization; call after target_link_libraries).
 function(morphreg_reuse_pch pch_target)
-  if(MORPHREG_PRECOMPILED_HEADERS)
-    foreach(target ${ARGN})
-      target_precompile_headers(${target} REUSE_FROM ${pch_target})
-    endforeach()
+  if(NOT MORPHREG_PRECOMPILED_HEADERS)
+    return()
   endif()
+  foreach(target ${ARGN})
+    get_target_property(links ${target} LINK_LIBRARIES)
+    if("morphreg::visualization" IN_LIST links AND TARGET ${pch_target}_visualization)
+      target_precompile_headers(${target} REUSE_FROM ${pch_target}_visualization)
+    else()
+      target_precompile_headers(${target} REUSE_FROM ${pch_target})
+    endif()
+  endforeach()
 endfunction()
