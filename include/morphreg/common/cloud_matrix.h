@@ -37,4 +37,19 @@ normalsOf (const pcl::PointCloud<PointT>& cloud)
     normals.col (static_cast<Eigen::Index> (i)) = cloud[i].getNormalVector3fMap ().template cast<double> ();
   return normals;
 }
+
+/** \brief The normals of \a cloud as columns when its point type has normals, else an empty matrix (the caller then
+ *  estimates them).
+ *  \param[in] cloud any point type with x, y, z
+ *  \return a 3 x cloud.size () matrix, or 3 x 0
+ */
+template <typename PointT>
+Eigen::Matrix3Xd
+normalsIfAny (const pcl::PointCloud<PointT>& cloud)
+{
+  if constexpr (pcl::traits::has_normal_v<PointT>)
+    return normalsOf (cloud);
+  else
+    return Eigen::Matrix3Xd (3, 0);
+}
 } // namespace morphreg

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/order_statistics.h>
 #include <morphreg/io/cloud_io.h>
@@ -49,31 +50,6 @@ restack (const Eigen::VectorXd& coefficients, const ComponentSelection& from, co
     result.segment (to.offset (r), shared) = coefficients.segment (from.offset (r), shared);
   }
   return result;
-}
-
-/** The columns of \a cloud's points (3 x N). */
-template <typename PointT>
-Eigen::Matrix3Xd
-cloudPoints (const pcl::PointCloud<PointT>& cloud)
-{
-  Eigen::Matrix3Xd points (3, cloud.size ());
-  for (size_t i = 0; i < cloud.size (); ++i)
-    points.col (static_cast<Eigen::Index> (i)) = cloud[i].getVector3fMap ().template cast<double> ();
-  return points;
-}
-
-/** The columns of \a cloud's normals (3 x N), or empty for point types without normals. */
-template <typename PointT>
-Eigen::Matrix3Xd
-cloudNormals (const pcl::PointCloud<PointT>& cloud)
-{
-  Eigen::Matrix3Xd normals;
-  if constexpr (pcl::traits::has_normal_v<PointT>) {
-    normals.resize (3, cloud.size ());
-    for (size_t i = 0; i < cloud.size (); ++i)
-      normals.col (static_cast<Eigen::Index> (i)) = cloud[i].getNormalVector3fMap ().template cast<double> ();
-  }
-  return normals;
 }
 } // namespace detail
 
@@ -292,7 +268,7 @@ MorphableICP<PointTarget, Scalar>::resolveTargetUnit () const
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
   const Eigen::Vector3d centroid = mean.rowwise ().mean ();
   const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
-  return guessLengthUnit (detail::cloudPoints (*this->target_), model_radius);
+  return guessLengthUnit (pointsOf (*this->target_), model_radius);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -358,11 +334,11 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess)
     }
     return similarityFromLandmarks (from, to);
   }
-  const Eigen::Matrix3Xd target = detail::cloudPoints (*this->target_);
+  const Eigen::Matrix3Xd target = pointsOf (*this->target_);
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
   if (mode == IcpInitialisation::global) {
     const GlobalAlignment found =
-        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, detail::cloudNormals (*this->target_));
+        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normalsIfAny (*this->target_));
     report_.initialisation_detail = found.method;
     report_.initialisation_confidence = found.confidence;
     report_.head_points = static_cast<int> (found.head_indices.size ());
@@ -390,7 +366,7 @@ MorphableICP<PointTarget, Scalar>::prepareEstimators ()
     const auto tree = this->tree_;
     const PointCloudTargetConstPtr cloud = this->target_;
     target_surface_->setInputTarget (
-        detail::cloudPoints (*cloud), detail::cloudNormals (*cloud),
+        pointsOf (*cloud), normalsIfAny (*cloud),
         [tree, cloud] (pcl::index_t i, int k, pcl::Indices& indices, std::vector<float>& squared) {
           tree->nearestKSearch ((*cloud)[i], k, indices, squared);
         });
