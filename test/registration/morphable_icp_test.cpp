@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -199,6 +200,26 @@ TEST_F (MorphableIcpTest, CoarseToFineScheduleFitsAndIsValidated)
   EXPECT_THROW (icp.align (output), morphreg::InvalidInputError);
   EXPECT_THROW (icp.setShapeSchedule ({{selection, -1.0}}), morphreg::InvalidInputError);
   EXPECT_THROW (icp.setRefinementSmoothnessWeight (std::nan ("")), morphreg::InvalidInputError);
+}
+
+TEST_F (MorphableIcpTest, IterationBudgetEndingBeforeAPhaseLeavesAConsistentFit)
+{
+  const MorphableModel& model = **model_;
+  const morphreg::ComponentSelection selection = model.firstComponents (10);
+  const auto scan = withinModelScan (model, selection, 13, 500);
+  Icp icp = makeIcp ();
+  icp.setComponentSelection (selection);
+  icp.setTargetLandmarks (scan.landmarks);
+  icp.setShapeSchedule ({{model.firstComponents (2), 1.0}, {model.firstComponents (5), 1.0}, {selection, 0.1}});
+  icp.setMaximumIterations (3); // one similarity and two shape iterations: the last phase gets none
+  const double rms = fit (icp, scan);
+  const auto& report = icp.getRegistrationReport ();
+  EXPECT_EQ (report.similarity_iterations, 1);
+  EXPECT_EQ (report.shape_iterations, 2) << "one iteration for each of the first two shape phases";
+  EXPECT_TRUE (std::isfinite (rms));
+  EXPECT_TRUE (icp.getFittedVertices ().allFinite ());
+  EXPECT_EQ (icp.getShapeCoefficients ().size (), selection.total ()) << "coefficients stacked like the selection";
+  EXPECT_TRUE (icp.getShapeCoefficients ().allFinite ());
 }
 
 TEST_F (MorphableIcpTest, FrozenShapeAgreesWithPclIcpOnRigidData)

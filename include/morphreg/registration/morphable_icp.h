@@ -449,10 +449,11 @@ private:
   PoseShapeLeastSquares
   solver (const Phase& phase) const;
 
-  /** Restacks \a state for \a phase's components and starts it in \a convergence; false if no iterations are
-   *  left. */
+  /** Restacks \a state for \a phase's components and starts it in \a convergence with \a solver's prior standard
+   *  deviations; false if no iterations are left. */
   bool
-  startPhase (const Phase& phase, int phases_left, PoseShapeState& state, MorphableConvergence& convergence);
+  startPhase (const Phase& phase, const PoseShapeLeastSquares& solver, int phases_left, PoseShapeState& state,
+              MorphableConvergence& convergence);
 
   /** Iterates \a phase until \a convergence ends it; \a best is the phase's lowest-cost state. */
   void

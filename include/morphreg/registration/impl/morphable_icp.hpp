@@ -448,17 +448,15 @@ MorphableICP<PointTarget, Scalar>::solver (const Phase& phase) const
 
 template <typename PointTarget, typename Scalar>
 bool
-MorphableICP<PointTarget, Scalar>::startPhase (const Phase& phase, int phases_left, PoseShapeState& state,
-                                               MorphableConvergence& convergence)
+MorphableICP<PointTarget, Scalar>::startPhase (const Phase& phase, const PoseShapeLeastSquares& solver, int phases_left,
+                                               PoseShapeState& state, MorphableConvergence& convergence)
 {
-  Eigen::VectorXd sigma;
   if (phase.shape) {
     const ComponentSelection& components = phase.settings.components;
     state.coefficients = detail::restack (state.coefficients, state.selection, components);
     state.selection = components;
     state.vertices = model_->generate (state.coefficients, state.selection);
     state.last_step.resize (0);
-    sigma = model_->variances (components).cwiseSqrt ();
   }
   const int remaining = convergence.remaining ();
   if (remaining <= 0)
@@ -468,7 +466,7 @@ MorphableICP<PointTarget, Scalar>::startPhase (const Phase& phase, int phases_le
   const int budget = phase.shape       ? std::max (1, remaining / phases_left)
                      : phases_left > 1 ? std::min (similarity_iterations_, std::max (1, this->max_iterations_ / 2))
                                        : remaining;
-  convergence.startPhase (budget, phase.shape, sigma);
+  convergence.startPhase (budget, phase.shape, solver.sigma ());
   return true;
 }
 
@@ -640,9 +638,10 @@ MorphableICP<PointTarget, Scalar>::computeTransformation (PointCloudSource& outp
   PoseShapeLeastSquares solver = this->solver (phases.front ());
   PoseShapeState best = state;
   for (size_t k = 0; k < phases.size () && !convergence.hasDiverged (); ++k) {
-    if (!startPhase (phases[k], static_cast<int> (phases.size () - k), state, convergence))
+    if (k > 0)
+      solver = this->solver (phases[k]);
+    if (!startPhase (phases[k], solver, static_cast<int> (phases.size () - k), state, convergence))
       break;
-    solver = this->solver (phases[k]);
     runPhase (phases[k], solver, state, best, convergence);
   }
   this->nr_iterations_ = convergence.iterations ();
