@@ -264,6 +264,32 @@ TEST_F (MorphableIcpTest, FrozenShapeAgreesWithPclIcpOnRigidData)
   EXPECT_LT (icp.getShapeCoefficients ().cwiseAbs ().maxCoeff (), 1e-3);
 }
 
+TEST_F (MorphableIcpTest, BoundaryRejectionIsTheDefaultChainAndAUsersChainReplacesIt)
+{
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed).mesh, startLandmarks (**model_), 300);
+  auto firstKept = [&] (bool reject_boundary,
+                        const std::vector<pcl::registration::CorrespondenceRejector::Ptr>& chain) {
+    Icp icp = makeIcp ();
+    icp.setMaximumIterations (1);
+    icp.setTargetLandmarks (scan.landmarks);
+    icp.setRejectTargetBoundary (reject_boundary);
+    for (const auto& rejector : chain)
+      icp.addCorrespondenceRejector (rejector ? rejector : icp.getTargetBoundaryRejector ());
+    icp.setInputTarget (scan.cloud);
+    pcl::PointCloud<pcl::PointNormal> output;
+    icp.align (output);
+    return icp.getRegistrationReport ().history.front ().kept;
+  };
+  auto everything = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
+  everything->setMaximumDistance (1e6f);
+  const int by_default = firstKept (true, {});
+  const int without_boundary = firstKept (false, {});
+  EXPECT_LT (by_default, without_boundary) << "the scan's hole borders are rejected by default";
+  EXPECT_EQ (firstKept (true, {everything}), without_boundary) << "a chain replaces the default boundary rejection";
+  EXPECT_EQ (firstKept (true, {nullptr, everything}), by_default) << "getTargetBoundaryRejector keeps it in a chain";
+}
+
 TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
 {
   const auto scan =
