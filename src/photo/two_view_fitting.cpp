@@ -139,6 +139,23 @@ twoViewProblem (const MorphableModel& model, const PoseShapeSettings& settings, 
           sagittal_weight,   max_distance};
 }
 
+/** What a silhouette that the model's profile cannot follow should be checked for. */
+const char* const kSilhouetteHint =
+    "that the silhouette traces this face's profile (forehead, nose, lips, chin) in the photo's pixel coordinates";
+
+/** Throws InvalidInputError when, after a fit, fewer than a quarter of the model's \a profile_count profile-line
+ *  vertices lie on the silhouette (\a matched): the silhouette does not show this face's profile, and a fit to a few
+ *  of its points would look converged but be meaningless.
+ */
+void
+requireSilhouetteMatch (int matched, Eigen::Index profile_count)
+{
+  if (4 * static_cast<Eigen::Index> (matched) < profile_count)
+    throw InvalidInputError ("the profile photo's silhouette does not match the model's profile: after the fit only " +
+                             std::to_string (matched) + " of the model's " + std::to_string (profile_count) +
+                             " profile-line vertices lie on it (at least a quarter must); check " + kSilhouetteHint);
+}
+
 /** \a state with the constrained vertices of \a problem. */
 PoseShapeState
 onProblem (PoseShapeState state, const PoseShapeLeastSquares& problem)
@@ -516,9 +533,10 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
       TwoViewIteration iteration;
       iteration.stage = stage;
       const std::vector<PoseShapeRow> rows = currentRows (problem, silhouette, state, iteration);
-      requireEnoughRows (static_cast<size_t> (iteration.profile_correspondences), 3, "TwoViewFitting",
-                         "profile-line vertices lie within " + std::to_string (max_distance_) + " mm of the silhouette",
-                         "the silhouette and the max correspondence distance");
+      requireEnoughRows (static_cast<size_t> (iteration.profile_correspondences), 3, "the profile photo",
+                         "profile-line vertices of the model lie within " + std::to_string (max_distance_) +
+                             " mm of the silhouette",
+                         kSilhouetteHint);
       result.history.push_back (iteration);
       const Eigen::Matrix3Xd before = state.posed ();
       if (!solver.step (state, rows))
@@ -529,6 +547,7 @@ TwoViewFitting::fit (const ProfileView& profile, const FrontalView* frontal) con
   }
   result.final_residuals.stage = result.history.empty () ? TwoViewStage::similarity : result.history.back ().stage;
   currentRows (problem, silhouette, state, result.final_residuals);
+  requireSilhouetteMatch (result.final_residuals.profile_correspondences, problem.profile_count);
   result.selection = settings_.components;
   result.returned = frontal ? "joint" : "profile";
   result.ignored_landmarks = targets.ignored;

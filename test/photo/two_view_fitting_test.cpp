@@ -448,7 +448,22 @@ TEST_F (PhotoFittingTest, SilhouetteFarFromTheModelIsReported)
   for (Eigen::Vector2d& point : shifted)
     point.y () += 3000.0; // the silhouette moved far below its nose tip: nothing is near the model's profile
   const morphreg::ProfileView profile (1000, 1200, shifted, photos.profile.normalisation ().noseTip ());
-  expectInvalid ([&] { fitting ().fitProfile (profile); }, "profile-line vertices lie within");
+  expectInvalid ([&] { fitting ().fitProfile (profile); }, "profile-line vertices of the model lie within");
+}
+
+TEST_F (PhotoFittingTest, SilhouetteThatTheProfileCannotFollowIsReported)
+{
+  const SimulatedPhotos photos = photograph (unseenHead (0), 100);
+  const Eigen::Vector2d nose = photos.profile.normalisation ().noseTip ();
+  std::vector<Eigen::Vector2d> shrunk = photos.profile.silhouette (), shifted = shrunk;
+  for (Eigen::Vector2d& point : shrunk)
+    point = nose + 0.02 * (point - nose); // a few points around the nose tip
+  for (Eigen::Vector2d& point : shifted)
+    point.x () -= 600.0; // the outline of the back of a head, away from the marked nose tip
+  for (const auto& silhouette : {shrunk, shifted}) {
+    const morphreg::ProfileView profile (1000, 1200, silhouette, nose);
+    expectInvalid ([&] { fitting ().fitJoint (profile, photos.frontal); }, "that the silhouette traces this face");
+  }
 }
 
 TEST_F (PhotoFittingTest, SettingsAreValidated)
