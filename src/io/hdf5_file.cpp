@@ -1,5 +1,6 @@
 #include "hdf5_file.h"
 
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/file_checks.h>
 
 #include <cmath>
@@ -35,12 +36,16 @@ openFile (const std::string& path)
   }
 }
 
+/** A new HDF5 file held in memory (the core driver without a backing store): HDF5 never touches the disk, so a
+ *  full disk cannot leave it in a failed state; close() writes the finished image. */
 H5::H5File
-createFile (const std::string& path)
+createFileInMemory (const std::string& path)
 {
   H5::Exception::dontPrint ();
   try {
-    return H5::H5File (path, H5F_ACC_TRUNC);
+    H5::FileAccPropList access;
+    access.setCore (std::size_t (1) << 20, false);
+    return H5::H5File (path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, access);
   }
   catch (const H5::Exception& e) {
     throw IoError (path + ": cannot create the HDF5 file: " + e.getDetailMsg ());
@@ -176,7 +181,23 @@ Reader::readString (const std::string& name) const
   }
 }
 
-Writer::Writer (const std::string& path) : path_ (path), file_ (createFile (path)) {}
+Writer::Writer (const std::string& path) : path_ (path), file_ (createFileInMemory (path)) {}
+
+void
+Writer::close ()
+{
+  std::string image;
+  guarded ("the file", [&] {
+    file_.flush (H5F_SCOPE_GLOBAL);
+    const ssize_t size = H5Fget_file_image (file_.getId (), nullptr, 0);
+    if (size < 0)
+      throw H5::FileIException ("H5Fget_file_image", "cannot read the file image");
+    image.resize (static_cast<std::size_t> (size));
+    H5Fget_file_image (file_.getId (), image.data (), image.size ());
+    file_.close ();
+  });
+  writeFileAtomically (path_, image);
+}
 
 template <typename Call>
 void

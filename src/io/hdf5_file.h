@@ -71,11 +71,16 @@ private:
   H5::H5File file_;
 };
 
-/** \brief Write access to a new HDF5 file (truncated if it exists); IoError naming the file on failure. */
+/** \brief A new HDF5 file, built in memory and written to \a path, whole or not at all, by close() (a file that is not
+ *  closed is not written); IoError naming the file on failure, a full disk included. */
 class Writer
 {
 public:
   explicit Writer (const std::string& path);
+
+  /** \brief Writes the finished file (writeFileAtomically()); IoError if it cannot be written. */
+  void
+  close ();
 
   /** \brief Creates the group \a name (parents must exist). */
   void

@@ -1,9 +1,9 @@
 #include <morphreg/common/error.h>
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/json_file.h>
 
 #include <fstream>
-#include <iomanip>
 
 namespace morphreg
 {
@@ -23,11 +23,7 @@ readJsonFile (const std::string& path)
 void
 writeJsonFile (const std::string& path, const nlohmann::json& document)
 {
-  std::ofstream stream (path, std::ios::trunc);
-  stream << std::setw (2) << document << '\n';
-  stream.close ();
-  if (!stream)
-    throw IoError (path + ": cannot be written");
+  writeFileAtomically (path, document.dump (2) + '\n');
 }
 
 } // namespace morphreg

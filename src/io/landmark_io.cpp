@@ -1,6 +1,7 @@
 #include "text_fields.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/landmark_io.h>
 
@@ -84,16 +85,6 @@ readWholeFile (const std::string& path)
   std::ostringstream content;
   content << stream.rdbuf ();
   return content.str ();
-}
-
-void
-writeWholeFile (const std::string& path, const std::string& content)
-{
-  std::ofstream stream (path, std::ios::binary | std::ios::trunc);
-  stream << content;
-  stream.close ();
-  if (!stream)
-    throw IoError (path + ": cannot be written");
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -486,11 +477,11 @@ save (const std::string& path, const NamedPoints<Dim>& points)
   const auto ordered = orderedForWriting<Dim> (points, path);
   const std::string ext = fileExtension (path);
   if (ext == ".json")
-    writeWholeFile (path, jsonText<Dim> (ordered));
+    writeFileAtomically (path, jsonText<Dim> (ordered));
   else if (ext == ".csv")
-    writeWholeFile (path, csvText<Dim> (ordered));
+    writeFileAtomically (path, csvText<Dim> (ordered));
   else if constexpr (Dim == 3)
-    writeWholeFile (path, pickedPointsText (ordered));
+    writeFileAtomically (path, pickedPointsText (ordered));
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "off_reader.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
 #include <morphreg/io/mesh_io.h>
@@ -45,15 +46,18 @@ savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh)
 {
   requireExtension (path, ".ply .obj .vtk", "mesh");
   const std::string ext = fileExtension (path);
-  const int status = callPclIo (path, [&] {
-    if (ext == ".ply")
-      return pcl::io::savePLYFileBinary (path, mesh);
-    if (ext == ".obj")
-      return pcl::io::saveOBJFile (path, mesh);
-    return pcl::io::saveVTKFile (path, mesh);
+  writeAtomically (path, [&] (const std::string& partial) {
+    const int status = callPclIo (path, [&] {
+      if (ext == ".ply")
+        return pcl::io::savePLYFileBinary (partial, mesh);
+      if (ext == ".obj")
+        return pcl::io::saveOBJFile (partial, mesh);
+      return pcl::io::saveVTKFile (partial, mesh);
+    });
+    if (status < 0)
+      throw IoError (path + ": cannot write the mesh");
+    requireCompletelyWritten (partial, path);
   });
-  if (status < 0)
-    throw IoError (path + ": cannot write the mesh");
 }
 
 TriangleMesh

@@ -314,6 +314,7 @@ saveModel (const std::string& path, const MorphableModel& model)
   hdf5::Writer file (path);
   writeStatismo (file, model);
   writeMorphreg (file, model);
+  file.close ();
 }
 
 MorphableModel::Ptr

@@ -1,4 +1,5 @@
 #include <morphreg/common/error.h>
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/impl/registration_visualizer.hpp>
@@ -19,7 +20,8 @@
 #include <Eigen/Geometry>
 
 #include <cstdlib>
-#include <filesystem>
+#include <algorithm>
+#include <fstream>
 
 // Debian's VTK needs its rendering back end registered explicitly in programs that use it directly.
 VTK_MODULE_INIT (vtkRenderingOpenGL2)
@@ -81,6 +83,20 @@ largestResidual (const Eigen::VectorXd& residuals)
     if (std::isfinite (residuals[i]))
       largest = std::max (largest, residuals[i]);
   return largest > 0.0 ? largest : 1.0;
+}
+
+/** Whether \a path ends with a PNG's closing IEND chunk: a PNG cut short by a full disk does not. */
+bool
+endsWithPngEnd (const std::string& path)
+{
+  static const char kEnd[] = {'I', 'E', 'N', 'D', '\xAE', '\x42', '\x60', '\x82'};
+  std::ifstream file (path, std::ios::binary | std::ios::ate);
+  if (!file || file.tellg () < static_cast<std::streamoff> (sizeof (kEnd)))
+    return false;
+  char tail[sizeof (kEnd)];
+  file.seekg (-static_cast<std::streamoff> (sizeof (kEnd)), std::ios::end);
+  file.read (tail, sizeof (tail));
+  return file && std::equal (tail, tail + sizeof (tail), kEnd);
 }
 } // namespace
 
@@ -392,14 +408,14 @@ RegistrationVisualizer::saveScreenshot (const std::string& png_path, int width, 
   capture->SetInputBufferTypeToRGB ();
   capture->ReadFrontBufferOff ();
   capture->Update ();
-  auto writer = vtkSmartPointer<vtkPNGWriter>::New ();
-  writer->SetFileName (png_path.c_str ());
-  writer->SetInputConnection (capture->GetOutputPort ());
-  writer->Write ();
-  std::error_code ec;
-  if (writer->GetErrorCode () != 0 || !std::filesystem::exists (png_path, ec) ||
-      std::filesystem::file_size (png_path, ec) == 0)
-    throw IoError (png_path + ": cannot write the screenshot");
+  writeAtomically (png_path, [&] (const std::string& partial) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New ();
+    writer->SetFileName (partial.c_str ());
+    writer->SetInputConnection (capture->GetOutputPort ());
+    writer->Write ();
+    if (writer->GetErrorCode () != 0 || !endsWithPngEnd (partial))
+      throw IoError (png_path + ": cannot write the screenshot (disk full, or no permission?)");
+  });
 }
 
 void

@@ -45,4 +45,20 @@ writeAtomically (const std::string& path, Write write)
   commitPartial (partial, path);
 }
 
+/** \brief Throws IoError naming \a path if \a written, a mesh or cloud file that PCL has just written, is incomplete
+ *  (its header promises more than the file holds): PCL's writers do not report a full disk or a file size limit.
+ *  \param[in] written the file as written (the temporary file of writeAtomically())
+ *  \param[in] path the name to report
+ */
+void
+requireCompletelyWritten (const std::string& written, const std::string& path);
+
+/** \brief Writes \a content to \a path atomically (see writeAtomically()), checking every write and the close, so
+ *  that a full disk or a file size limit is an IoError naming the file, never a file cut short.
+ *  \param[in] path the file to write
+ *  \param[in] content its bytes
+ */
+void
+writeFileAtomically (const std::string& path, const std::string& content);
+
 } // namespace morphreg

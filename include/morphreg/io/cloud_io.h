@@ -19,7 +19,8 @@ template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr
 loadCloud (const std::string& path);
 
-/** \brief Saves a cloud as binary .pcd or .ply, or as .obj vertices; throws IoError naming the file on failure.
+/** \brief Saves a cloud as binary .pcd or .ply, or as .obj vertices, whole or not at all (as savePolygonMesh());
+ *  throws IoError naming the file on failure, a full disk included.
  *  \param[in] path the file; its extension chooses the format
  *  \param[in] cloud the points to write
  */

@@ -16,11 +16,11 @@ namespace morphreg
 nlohmann::json
 readJsonFile (const std::string& path);
 
-/** \brief Writes \a document to \a path (indented); IoError if the file cannot be written.
+/** \brief Writes \a document to \a path (indented), atomically: whole or not at all (writeFileAtomically()); IoError
+ *  naming the file if it cannot be written.
  *  \param[in] path the file
  *  \param[in] document the JSON to write
  */
-
 void
 writeJsonFile (const std::string& path, const nlohmann::json& document);
 

@@ -21,7 +21,8 @@ namespace morphreg
 pcl::PolygonMesh
 loadPolygonMesh (const std::string& path);
 
-/** \brief Saves \a mesh (.ply binary, .obj, .vtk); throws IoError naming the file on failure.
+/** \brief Saves \a mesh (.ply binary, .obj, .vtk), whole or not at all (written under a temporary name, checked to
+ *  be complete, then renamed); throws IoError naming the file on failure, a full disk included.
  *  \param[in] path the file; its extension chooses the format
  *  \param[in] mesh the mesh to write
  */

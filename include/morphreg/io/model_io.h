@@ -19,7 +19,8 @@
 
 namespace morphreg
 {
-/** \brief Writes \a model to \a path (HDF5, usually .h5); throws IoError naming the file on failure.
+/** \brief Writes \a model to \a path (HDF5, usually .h5), whole or not at all (a temporary file renamed when
+ *  complete); throws IoError naming the file on failure.
  *  \param[in] path the model file
  *  \param[in] model the model to write
  */

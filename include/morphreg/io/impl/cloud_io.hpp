@@ -1,5 +1,6 @@
 #pragma once
 #include <morphreg/common/error.h>
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
@@ -51,17 +52,20 @@ saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud)
   if (cloud.empty ())
     throw InvalidInputError (path + ": refusing to write an empty cloud");
   const std::string ext = fileExtension (path);
-  const int status = callPclIo (path, [&] {
-    if (ext == ".pcd")
-      return pcl::io::savePCDFileBinary (path, cloud);
-    if (ext == ".ply")
-      return pcl::io::savePLYFileBinary (path, cloud);
-    pcl::PolygonMesh vertices_only; // OBJ holds clouds as a mesh without faces
-    pcl::toPCLPointCloud2 (cloud, vertices_only.cloud);
-    return pcl::io::saveOBJFile (path, vertices_only);
+  writeAtomically (path, [&] (const std::string& partial) {
+    const int status = callPclIo (path, [&] {
+      if (ext == ".pcd")
+        return pcl::io::savePCDFileBinary (partial, cloud);
+      if (ext == ".ply")
+        return pcl::io::savePLYFileBinary (partial, cloud);
+      pcl::PolygonMesh vertices_only; // OBJ holds clouds as a mesh without faces
+      pcl::toPCLPointCloud2 (cloud, vertices_only.cloud);
+      return pcl::io::saveOBJFile (partial, vertices_only);
+    });
+    if (status < 0)
+      throw IoError (path + ": cannot write the point cloud");
+    requireCompletelyWritten (partial, path);
   });
-  if (status < 0)
-    throw IoError (path + ": cannot write the point cloud");
 }
 
 template <typename PointT>
