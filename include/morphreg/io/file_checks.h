@@ -5,6 +5,7 @@
 #include <morphreg/common/error.h>
 
 #include <string>
+#include <vector>
 
 namespace morphreg
 {
@@ -13,6 +14,21 @@ namespace morphreg
  */
 void
 requireReadableFile (const std::string& path);
+
+/** \brief Throws IoError naming \a path if a file cannot be written there: its folder is missing, is not a folder or
+ *  is not writable, or \a path is itself a folder. Run before long work, so that a bad output path fails at once.
+ *  \param[in] path the file to be written
+ */
+void
+requireWritableOutput (const std::string& path);
+
+/** \brief Throws InvalidInputError if \a output is the same file as one of \a inputs (by path or hard link): writing
+ *  it would destroy that input.
+ *  \param[in] output the file to be written
+ *  \param[in] inputs the files the run reads (empty names are skipped)
+ */
+void
+requireNotAnInput (const std::string& output, const std::vector<std::string>& inputs);
 
 /** \brief Lower-case extension of \a path including the dot (".ply"), or "" if none.
  *  \param[in] path a file name
