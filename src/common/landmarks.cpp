@@ -2,6 +2,8 @@
 #include <morphreg/common/landmarks.h>
 
 #include <algorithm>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -110,6 +112,41 @@ requireKnownLandmarkId (const std::string& id, const std::string& source)
     msg << ' ' << known;
   msg << " and the iBUG-68 points ibug68_00 .. ibug68_67";
   throw InvalidInputError (msg.str ());
+}
+
+namespace
+{
+/** The diagonal of the bounding box of \a landmarks (0 for fewer than two). */
+double
+extentOf (const LandmarkPositions& landmarks)
+{
+  Eigen::Vector3d low = Eigen::Vector3d::Constant (std::numeric_limits<double>::infinity ()), high = -low;
+  for (const auto& entry : landmarks) {
+    low = low.cwiseMin (entry.second);
+    high = high.cwiseMax (entry.second);
+  }
+  return landmarks.size () < 2 ? 0.0 : (high - low).norm ();
+}
+} // namespace
+
+void
+requireOneTargetPerPoint (const LandmarkPositions& source, const LandmarkPositions& target,
+                          const std::string& source_name, const std::string& target_name)
+{
+  const double source_tolerance = 1e-9 * extentOf (source), target_tolerance = 1e-9 * extentOf (target);
+  for (auto a = source.begin (); a != source.end (); ++a)
+    for (auto b = std::next (a); b != source.end (); ++b) {
+      if ((a->second - b->second).norm () > source_tolerance || !target.count (a->first) || !target.count (b->first))
+        continue;
+      const double apart = (target.at (a->first) - target.at (b->first)).norm ();
+      if (apart > target_tolerance) {
+        std::ostringstream msg;
+        msg << "landmarks " << a->first << " and " << b->first << " are at one position (" << a->second.x () << ", "
+            << a->second.y () << ", " << a->second.z () << ") in " << source_name << " but " << apart << " mm apart in "
+            << target_name << "; a warp cannot send one point to two places";
+        throw InvalidInputError (msg.str ());
+      }
+    }
 }
 
 std::vector<std::string>

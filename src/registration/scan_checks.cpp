@@ -69,4 +69,19 @@ requireRegistrableScan (const Eigen::Matrix3Xd& points, const std::string& name)
   requireThreeDimensionalSpread (points, name);
 }
 
+void
+requireLandmarksOnScan (const LandmarkPositions& landmarks, const Eigen::Matrix3Xd& points, const std::string& name)
+{
+  const Eigen::Vector3d low = points.rowwise ().minCoeff (), high = points.rowwise ().maxCoeff ();
+  const double diagonal = (high - low).norm ();
+  for (const auto& [id, position] : landmarks) {
+    const double outside = (position - position.cwiseMax (low).cwiseMin (high)).norm ();
+    if (!(outside <= diagonal))
+      throw InvalidInputError (name + ": landmark " + id + " " + pointText (position) + " lies " +
+                               numberText (outside) + " mm outside the scan, whose bounding box is " +
+                               numberText (diagonal) +
+                               " mm across; are the file's units (and \"units\" field) and frame the scan's?");
+  }
+}
+
 } // namespace morphreg

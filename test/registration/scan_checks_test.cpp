@@ -82,4 +82,25 @@ TEST (FitPlausibilityTest, NamesEveryFailedCheck)
                 InvalidInputError);
 }
 
+TEST (ScanChecksTest, LandmarksOffTheScanAreRejectedNamingTheFileAndTheUnits)
+{
+  Eigen::Matrix3Xd scan (3, 8); // a 200 mm box
+  for (int i = 0; i < 8; ++i)
+    scan.col (i) = 100.0 * Eigen::Vector3d (i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+  const morphreg::LandmarkPositions on_scan = {{"nose_tip", {0.0, 30.0, 110.0}}, {"chin", {0.0, -40.0, 95.0}}};
+  EXPECT_NO_THROW (morphreg::requireLandmarksOnScan (on_scan, scan, "landmarks.json"));
+  // Millimetre values in a file that says metres: converted, they lie kilometres away.
+  morphreg::LandmarkPositions in_metres = on_scan;
+  for (auto& entry : in_metres)
+    entry.second *= 1000.0;
+  try {
+    morphreg::requireLandmarksOnScan (in_metres, scan, "landmarks.json");
+    ADD_FAILURE () << "landmarks 110 m away accepted";
+  }
+  catch (const InvalidInputError& e) {
+    const std::string message = e.what ();
+    EXPECT_NE (message.find ("landmarks.json: landmark "), std::string::npos) << message;
+    EXPECT_NE (message.find ("units"), std::string::npos) << message;
+  }
+}
 } // namespace

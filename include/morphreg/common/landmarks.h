@@ -54,6 +54,18 @@ requireKnownLandmarkId (const std::string& id, const std::string& source);
 /** \brief Named 3D landmark positions (mm), e.g. marked on a scan: id -> position. */
 using LandmarkPositions = std::map<std::string, Eigen::Vector3d>;
 
+/** \brief Throws InvalidInputError naming both ids and both files when two landmarks at one position in \a source
+ *  (within 1e-9 of its extent) are apart in \a target: a warp cannot send one point to two places. Landmarks that
+ *  coincide in both (a bone's tail at the next bone's head) are fine: a warp merges them.
+ *  \param[in] source the source landmarks
+ *  \param[in] target the target landmarks, with the same ids
+ *  \param[in] source_name where \a source was read, for the message
+ *  \param[in] target_name where \a target was read, for the message
+ */
+void
+requireOneTargetPerPoint (const LandmarkPositions& source, const LandmarkPositions& target,
+                          const std::string& source_name, const std::string& target_name);
+
 /** \brief Named landmark vertices of a mesh or model: id -> vertex index. */
 using LandmarkVertices = std::map<std::string, int>;
 

@@ -2,6 +2,8 @@
 /** \file scan_checks.h
  *  \brief Checks that a scan can be registered at all, before any fitting: enough finite points spread in 3D.
  */
+#include <morphreg/common/landmarks.h>
+
 #include <Eigen/Core>
 
 #include <string>
@@ -17,5 +19,15 @@ namespace morphreg
  */
 void
 requireRegistrableScan (const Eigen::Matrix3Xd& points, const std::string& name);
+
+/** \brief Throws InvalidInputError naming \a name when a landmark lies farther from the scan's bounding box than the
+ *  box's diagonal: landmarks marked on a scan lie on it, so such a file is in another frame or in another unit than
+ *  it declares (e.g. millimetre values in a file whose "units" says metres).
+ *  \param[in] landmarks the landmarks, in the scan's frame and unit
+ *  \param[in] points the scan points (3 x N, finite)
+ *  \param[in] name the landmark file, for the message
+ */
+void
+requireLandmarksOnScan (const LandmarkPositions& landmarks, const Eigen::Matrix3Xd& points, const std::string& name);
 
 } // namespace morphreg
