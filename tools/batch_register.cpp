@@ -167,7 +167,7 @@ registerTask (const Task& task, const MorphableModel::Ptr& model)
         {"scan", {{"file", task.entry.scan}, {"landmarks", task.entry.landmarks}}},
         {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
     const std::string path = reportPath (task.options);
-    writeAtomically (path, [&] (const std::string& partial) { writeJsonFile (partial, failure); });
+    writeJsonFile (path, failure);
     return failure;
   }
 }

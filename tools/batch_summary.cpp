@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -134,15 +133,8 @@ void
 writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard)
 {
   std::sort (rows.begin (), rows.end (), [] (const ScanSummary& a, const ScanSummary& b) { return a.id < b.id; });
-  writeAtomically (base + ".json",
-                   [&] (const std::string& partial) { writeJsonFile (partial, summaryJson (rows, shard)); });
-  writeAtomically (base + ".csv", [&] (const std::string& partial) {
-    std::ofstream stream (partial, std::ios::trunc);
-    stream << csvText (rows);
-    stream.close ();
-    if (!stream)
-      throw IoError (partial + ": cannot be written");
-  });
+  writeJsonFile (base + ".json", summaryJson (rows, shard));
+  writeFileAtomically (base + ".csv", csvText (rows));
 }
 
 std::vector<ScanSummary>

@@ -1,6 +1,8 @@
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
 #include "commands.h"
 #include "mesh_annotations.h"
+#include "option_checks.h"
+#include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
 
@@ -137,12 +139,27 @@ runBuildModel (const BuildModelOptions& options)
             << " region(s), components per region " << summary["components"].dump () << ", " << summary["landmarks"]
             << " landmarks (" << summary["seconds"] << " s)\n";
 }
+
+/** The files build-model reads, which its output must not overwrite. */
+std::vector<std::string>
+inputFiles (const BuildModelOptions& options)
+{
+  std::vector<std::string> inputs = options.meshes;
+  if (!options.directory.empty ()) {
+    const std::vector<std::string> folder_files = readMeshFolder (options.directory).files;
+    inputs.insert (inputs.end (), folder_files.begin (), folder_files.end ());
+    inputs.push_back (options.directory + "/population.json");
+  }
+  inputs.insert (inputs.end (), {options.regions, options.landmark_vertices, options.ict_directory});
+  return inputs;
+}
 } // namespace
 
 nlohmann::json
 buildModelFile (const BuildModelOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
+  OutputFiles outputs ({options.out}, inputFiles (options));
   nlohmann::json summary = {{"file", options.out},
                             {"settings",
                              {{"max_components", options.settings.max_components},
@@ -162,6 +179,7 @@ buildModelFile (const BuildModelOptions& options)
   summary["vertices"] = model->numVertices ();
   summary["landmarks"] = model->landmarks ().size ();
   summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  outputs.keep ();
   return summary;
 }
 
@@ -170,7 +188,7 @@ addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
 {
   command
       ->add_option ("--components", settings.max_components, "at most this many components per region (0 = no limit)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--variance", settings.explained_variance,
@@ -178,7 +196,7 @@ addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
       ->check (CLI::Range (1e-6, 1.0))
       ->capture_default_str ();
   command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
 }

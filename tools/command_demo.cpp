@@ -2,6 +2,8 @@
 // 7-region model from it, simulates a scan of a head not in the population, registers the model to the scan and
 // writes the fitted mesh, the JSON report and a PNG overlay, with the fit's error against the true head.
 #include "commands.h"
+#include "option_checks.h"
+#include "output_files.h"
 #include "pipeline.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
@@ -56,6 +58,7 @@ runDemo (DemoOptions options)
   if (options.screenshot && !std::getenv ("DISPLAY"))
     throw InvalidInputError ("demo: the overlay screenshot renders through X and $DISPLAY is unset; run under "
                              "`xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
+  OutputFolder output (options.out, {});
   const synthetic::HeadGenerator generator (options.resolution);
   const std::string population = options.out + "/population";
   writePopulation (population, generator, generator.population (options.count, options.seed), options.seed,
@@ -83,7 +86,7 @@ runDemo (DemoOptions options)
   fit.report = options.out + "/report.json";
   fit.screenshot = options.screenshot ? options.out + "/overlay.png" : "";
   fit.quiet = options.quiet;
-  const nlohmann::json report = registerScanFile (fit);
+  const nlohmann::json report = keepOnSuccessOrFitFailure (output, [&] { return registerScanFile (fit); });
 
   const nlohmann::json& truth = report["truth_vertex_error_mm"];
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
@@ -109,9 +112,10 @@ registerDemoCommand (CLI::App& app)
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "population seed")->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
+      ->check (CLI::Range (20, 44))
       ->capture_default_str ();
   command->add_option ("--model-components", options->model_components, "components per region kept in the model")
-      ->check (CLI::PositiveNumber)
+      ->check (positive ())
       ->capture_default_str ();
   command->add_flag ("--no-screenshot{false}", options->screenshot, "skip the PNG overlay (runs without X)");
   command->add_flag ("--use-landmarks", options->use_landmarks,

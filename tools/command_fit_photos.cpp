@@ -3,6 +3,8 @@
 // written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.
 #include "commands.h"
 #include "distance_statistics.h"
+#include "option_checks.h"
+#include "output_files.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
@@ -122,11 +124,17 @@ fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model
   if (!options.quiet)
     std::cerr << "fitting " << options.model << " to " << options.profile
               << (options.approach == "profile" ? "" : " and " + options.frontal) << " (" << options.approach << ")\n";
-  if (options.approach == "profile")
-    return fitting.fitProfile (profile);
-  if (options.approach == "tps")
-    return fitting.fitTpsIcp (profile, *frontal);
-  return fitting.fitJoint (profile, *frontal);
+  try {
+    if (options.approach == "profile")
+      return fitting.fitProfile (profile);
+    if (options.approach == "tps")
+      return fitting.fitTpsIcp (profile, *frontal);
+    return fitting.fitJoint (profile, *frontal);
+  }
+  catch (const InvalidInputError& e) { // the annotations were read, but the model cannot be fitted to them
+    throw InvalidInputError ("fit-photos: " + options.profile +
+                             (options.approach == "profile" ? "" : " and " + options.frontal) + ": " + e.what ());
+  }
 }
 
 /** The report's warnings (implausible coefficients, outline landmarks left out), the latter also on stderr. */
@@ -208,6 +216,8 @@ void
 runFitPhotos (const FitPhotosOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
+  OutputFiles outputs ({options.out, options.report},
+                       {options.model, options.profile, options.frontal, options.photo, options.truth});
   const MorphableModel::ConstPtr model = loadModel (options.model);
   const ProfileView profile = loadProfileView (options.profile);
   if (options.frontal.empty () && options.approach != "profile")
@@ -230,6 +240,7 @@ runFitPhotos (const FitPhotosOptions& options)
   report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
     writeJsonFile (options.report, report);
+  outputs.keep ();
   std::cout << "wrote " << options.out << " (model frame, mm; colours: " << colouring << ")\n";
 }
 } // namespace
@@ -255,38 +266,38 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--truth", options->truth,
                        "true head and pose (JSON of `synth --photos`): report the fit's error, colour by it");
   command->add_option ("--smoothness", options->lambda1, "lambda_1, the smoothness prior across regions (> 0)")
-      ->check (CLI::PositiveNumber)
+      ->check (positive ())
       ->capture_default_str ();
   command
       ->add_option ("--shape-prior", options->lambda2,
                     "lambda_2, the shape prior (coefficients in prior standard deviations, >= 0)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--components", options->components,
                     "shape components per region: one count for all, or one per region")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--coefficient-limit", options->coefficient_limit,
                     "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
-      ->check (CLI::PositiveNumber)
+      ->check (positive ())
       ->capture_default_str ();
   command->add_option ("--frontal-weight", options->frontal_weight, "weight of each frontal landmark's rows (> 0)")
-      ->check (CLI::PositiveNumber)
+      ->check (positive ())
       ->capture_default_str ();
   command
       ->add_option ("--contour-weight", options->contour_weight,
                     "weight of the frontal outline landmarks (jaw, chin, neck, head contour; 0 leaves them out)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--sagittal-weight", options->sagittal_weight,
                     "weight of the rows that keep the profile in the plane X = 0 (0 for a turned or tilted head)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_option ("--colour-max", options->colour_max, "error (mm) at the top of the colour scale with --truth")
-      ->check (CLI::PositiveNumber)
+      ->check (positive ())
       ->capture_default_str ();
   command->add_option ("-o,--out", options->out, "fitted head to write (PLY, model frame, mm)")->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write");

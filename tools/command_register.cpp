@@ -2,13 +2,14 @@
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
 #include "distance_statistics.h"
+#include "option_checks.h"
+#include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
-#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
@@ -92,6 +93,21 @@ loadScan (const std::string& path)
   return scan;
 }
 
+/** Throws when the scan's size, against the model's, is beyond a head's in every unit by orders of magnitude (a
+ *  kilometre-sized or micrometre-sized "head"): the file is corrupt or not a scan. */
+void
+requireHeadScale (const LengthUnitGuess& unit, const std::string& scan)
+{
+  constexpr double kLargest = 1e4, kSmallest = 1e-5; // a metre scan of a head is about 1e-3 of the model's size
+  if (unit.size_ratio <= kLargest && unit.size_ratio >= kSmallest)
+    return;
+  std::ostringstream message;
+  message << std::setprecision (3) << scan << ": the scan is " << unit.size_ratio
+          << " times the model's size, which is no head in any unit (mm, cm, m, in); is the file corrupt? ("
+          << unit.reason << ")";
+  throw InvalidInputError (message.str ());
+}
+
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
@@ -103,6 +119,7 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
     const Eigen::Vector3d centroid = mean.rowwise ().mean ();
     const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
     unit = guessLengthUnit (pointsOf (scan), model_radius);
+    requireHeadScale (unit, options.scan);
   }
   else {
     unit.unit = parseLengthUnit (options.units);
@@ -128,11 +145,14 @@ checkFit (Icp& icp, const MorphableModel& model)
                                in_sigma, icp.getRegistrationReport ());
 }
 
-/** The scan landmarks of the file that the model also has; the others are named on \a warnings and skipped. */
+/** The scan landmarks of the file that the model also has; the others are named on \a warnings and skipped. The
+ *  landmarks must lie on the \a scan (in mm). */
 LandmarkPositions
-modelLandmarks (const RegisterOptions& options, const MorphableModel& model, std::ostream& warnings)
+modelLandmarks (const RegisterOptions& options, const MorphableModel& model,
+                const pcl::PointCloud<pcl::PointNormal>& scan, std::ostream& warnings)
 {
   LandmarkPositions landmarks = loadLandmarks (options.landmarks);
+  requireLandmarksOnScan (landmarks, pointsOf (scan), options.landmarks);
   std::string skipped;
   for (auto it = landmarks.begin (); it != landmarks.end ();)
     if (model.landmarks ().count (it->first)) {
@@ -151,7 +171,7 @@ modelLandmarks (const RegisterOptions& options, const MorphableModel& model, std
 }
 
 void
-configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Ptr& model, std::ostream& warnings)
+configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Ptr& model)
 {
   icp.setModel (model);
   icp.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
@@ -185,8 +205,6 @@ configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Pt
     rejector->setOverlapRatio (static_cast<float> (options.reject_trimmed));
     icp.addCorrespondenceRejector (rejector);
   }
-  if (!options.landmarks.empty ())
-    icp.setTargetLandmarks (modelLandmarks (options, *model, warnings), options.landmark_weight);
 }
 
 /** Prints one progress line per iteration: the kept correspondences and their RMS distance. */
@@ -332,12 +350,16 @@ nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
   const auto start = Clock::now ();
+  OutputFiles outputs ({options.out, reportPath (options), options.screenshot},
+                       {options.scan, options.model, options.landmarks, options.truth});
   // Without X the screenshot would fail after the fit: open the offscreen viewer first.
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
   const MorphableModel::Ptr model = loadModel (options.model);
-  return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
+  return keepOnSuccessOrFitFailure (outputs, [&] {
+    return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
+  });
 }
 
 namespace
@@ -354,7 +376,7 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                                  {"scan", {{"file", options.scan}, {"points", scan_points}}},
                                  {"settings", settingsJson (options)},
                                  {"fitted_mesh", nullptr}};
-  writeAtomically (report_path, [&] (const std::string& partial) { writeJsonFile (partial, report); });
+  writeJsonFile (report_path, report);
   throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
 }
 
@@ -440,6 +462,9 @@ alignScan (Icp& icp, const RegisterOptions& options, std::size_t scan_points)
   catch (const TooFewCorrespondencesError& e) {
     reportLostFit (options, scan_points, e);
   }
+  catch (const InvalidInputError& e) { // the scan passed the checks before the fit, but the fit cannot use it
+    throw InvalidInputError (options.scan + ": cannot be registered: " + e.what ());
+  }
   progress.finish (static_cast<int> (icp.getRegistrationReport ().history.size ()));
 }
 } // namespace
@@ -452,7 +477,9 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const auto scan = loadScan (options.scan);
   const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
   Icp icp;
-  configureIcp (icp, options, model, warnings);
+  configureIcp (icp, options, model);
+  if (!options.landmarks.empty ())
+    icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
   icp.setInputTarget (scan);
   const double load_seconds = model_seconds + secondsSince (start);
 
@@ -465,7 +492,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
   const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
-  writeAtomically (options.out, [&] (const std::string& partial) { savePolygonMesh (partial, coloured); });
+  savePolygonMesh (options.out, coloured);
   const double write_seconds = secondsSince (write_start);
 
   nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
@@ -484,7 +511,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
                          {"screenshot", screenshot_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeAtomically (reportPath (options), [&] (const std::string& partial) { writeJsonFile (partial, report); });
+  writeJsonFile (reportPath (options), report);
   concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
   return report;
 }
@@ -507,12 +534,12 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->check (CLI::Range (1, 10000))
       ->capture_default_str ();
   command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--components", options.components,
                     "shape components per region: one count for all, or one per region")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
                      "point-to-plane residuals along the scan normals (default) or point-to-point");
@@ -524,10 +551,10 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--shape-prior", options.shape_prior,
                     "weight of the shape prior (coefficients in prior standard deviations)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_option ("--landmark-weight", options.landmark_weight, "one landmark counts as this many correspondences")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_flag ("--target-smoothing,!--no-target-smoothing", options.target_smoothing,
                      "fit to each scan point projected onto its neighbours' plane (default; off for sparse or curved "
@@ -541,16 +568,16 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->check (CLI::IsMember ({"none", "huber", "tukey"}))
       ->capture_default_str ();
   command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--reject-distance", options.reject_distance,
                     "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
-      ->check (CLI::PositiveNumber);
+      ->check (positive ());
   command
       ->add_option ("--reject-median", options.reject_median,
                     "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
-      ->check (CLI::PositiveNumber);
+      ->check (positive ());
   command->add_flag ("--reject-one-to-one", options.reject_one_to_one,
                      "keep one correspondence per scan point (CorrespondenceRejectorOneToOne)");
   command
@@ -576,7 +603,7 @@ registerRegisterCommand (CLI::App& app)
                        "landmarks on the scan (.pp .json .csv .pts) to start from (Umeyama on >= 3)");
   command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");
   command->add_option ("--colour-max", options->colour_max, "residual colour scale maximum (mm, 0 = 95th percentile)")
-      ->check (CLI::NonNegativeNumber);
+      ->check (nonNegative ());
   addRegistrationOptions (command, *options);
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
   command->footer ("The scan is checked before fitting (at least 100 finite points spread in 3D; else exit 1) and "

@@ -1,5 +1,6 @@
 // `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a).
 #include "commands.h"
+#include "output_files.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
@@ -46,6 +47,10 @@ runRender (const RenderOptions& options)
 {
   if (options.meshes.empty () && options.clouds.empty ())
     throw InvalidInputError ("render: nothing to show; give at least one --mesh or --cloud");
+  std::vector<std::string> inputs = options.meshes;
+  inputs.insert (inputs.end (), options.clouds.begin (), options.clouds.end ());
+  inputs.insert (inputs.end (), options.landmarks.begin (), options.landmarks.end ());
+  OutputFiles outputs ({options.out}, inputs);
   RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
   for (std::size_t i = 0; i < options.meshes.size (); ++i)
     viewer.addModelMesh (loadPolygonMesh (options.meshes[i]), options.opacity, "mesh_" + std::to_string (i));
@@ -58,6 +63,7 @@ runRender (const RenderOptions& options)
                          2.5, true, "landmarks_" + std::to_string (i) + "_");
   viewer.resetCamera (viewDirection (options.view));
   viewer.saveScreenshot (options.out, options.width, options.height);
+  outputs.keep ();
   std::cout << "wrote " << options.out << " (" << options.width << "x" << options.height << ")\n";
 }
 } // namespace

@@ -1,5 +1,7 @@
 // `morphreg synth`: the built-in synthetic head population and simulated scans of it, written to disk.
 #include "commands.h"
+#include "option_checks.h"
+#include "output_files.h"
 #include "progress.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
@@ -50,6 +52,7 @@ void
 runSynth (const SynthOptions& options)
 {
   const synthetic::ScanSimulator scanner (options.scanner); // bad scanner settings fail before anything is written
+  OutputFolder output (options.out, {});
   const synthetic::HeadGenerator generator (options.resolution);
   const std::vector<synthetic::SyntheticHead> heads = generator.population (options.count, options.seed);
   writePopulation (options.out, generator, heads, options.seed, options.quiet);
@@ -63,6 +66,7 @@ runSynth (const SynthOptions& options)
   if (options.scans > 0)
     progress.finish ();
   writeHeadPhotos (options, generator, heads);
+  output.keep ();
   std::cout << "wrote " << options.count << " heads, " << options.scans << " scans and " << options.photos
             << " photo pairs to " << options.out << '\n';
 }
@@ -81,14 +85,15 @@ registerSynthCommand (CLI::App& app)
   command->add_option ("-s,--seed", options->seed, "seed of the first head (head i uses seed + i)")
       ->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
+      ->check (CLI::Range (20, 44))
       ->capture_default_str ();
   command->add_option ("--scans", options->scans, "simulate scans of the first N heads")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--photos", options->photos,
                     "annotated profile and frontal photos of the first N heads (for fit-photos)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
   addScannerOptions (command, options->scanner);

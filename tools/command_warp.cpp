@@ -2,6 +2,8 @@
 // with blended seams; with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
 #include "mesh_annotations.h"
+#include "option_checks.h"
+#include "output_files.h"
 #include "progress.h"
 
 #include <morphreg/common/error.h>
@@ -50,6 +52,7 @@ landmarkPairs (const std::string& source_path, const std::string& target_path)
   if (!missing.empty ())
     throw InvalidInputError ("warp: the landmark files " + source_path + " and " + target_path +
                              " must name the same landmarks; not in both:" + missing);
+  requireOneTargetPerPoint (source, target, source_path, target_path);
   Eigen::Matrix3Xd from (3, static_cast<Eigen::Index> (source.size ())), to (3, from.cols ());
   Eigen::Index column = 0;
   for (const auto& [name, position] : source) {
@@ -57,20 +60,6 @@ landmarkPairs (const std::string& source_path, const std::string& target_path)
     to.col (column++) = target.at (name);
   }
   return {from, to};
-}
-
-/** Accepts a number >= 0, including inf (CLI::NonNegativeNumber stops at the largest finite double). */
-CLI::Validator
-nonNegativeOrInfinite ()
-{
-  return CLI::Validator (
-      [] (std::string& text) {
-        double value = 0.0;
-        if (!CLI::detail::lexical_cast (text, value) || !(value >= 0.0))
-          return "Value " + text + " is not a number >= 0 (or inf)";
-        return std::string ();
-      },
-      "NONNEGATIVE or inf");
 }
 
 /** The \a values of \a option: given once they apply to every segment; otherwise one value per segment. */
@@ -85,6 +74,20 @@ valuePerSegment (const std::vector<double>& values, int num_segments, const std:
   return values;
 }
 
+/** Runs \a fit (the spline's or the segments' fit to the landmarks); a configuration it cannot use (too few,
+ *  collinear or flat landmarks) is reported with both landmark files. */
+template <typename Fit>
+auto
+fitToLandmarks (const WarpOptions& options, Fit fit) -> decltype (fit ())
+{
+  try {
+    return fit ();
+  }
+  catch (const InvalidInputError& e) {
+    throw InvalidInputError ("warp: the landmarks of " + options.source + " -> " + options.target + ": " + e.what ());
+  }
+}
+
 TriangleMesh
 warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& report)
 {
@@ -93,7 +96,7 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
   if (options.labels.empty ()) {
     ThinPlateSpline<double, 3> spline;
     spline.setRegularization (options.lambda);
-    spline.fit (source, target);
+    fitToLandmarks (options, [&] { spline.fit (source, target); });
     report["mode"] = "global";
     report["bending_energy"] = spline.bendingEnergy ();
     report["merged_landmarks"] = spline.mergedLandmarks ();
@@ -107,7 +110,7 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
   for (int s = 0; s < num_segments; ++s)
     warp.setSegmentBlendWidth (s, blend[static_cast<std::size_t> (s)]);
   const std::vector<double> overlap = valuePerSegment (options.overlap, num_segments, "--overlap");
-  const auto subsets = warp.setLandmarks (mesh, source, target, overlap);
+  const auto subsets = fitToLandmarks (options, [&] { return warp.setLandmarks (mesh, source, target, overlap); });
   for (const auto& subset : subsets)
     report["segment_landmarks"].push_back (subset.size ());
   report["mode"] = "segmented";
@@ -120,6 +123,8 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
 void
 runWarp (const WarpOptions& options)
 {
+  OutputFiles outputs ({options.out, options.report},
+                       {options.mesh, options.source, options.target, options.labels, options.truth});
   const TriangleMesh mesh = loadTriangleMesh (options.mesh);
   nlohmann::json report = {{"units", "mm"}, {"mesh", options.mesh}, {"output", options.out}};
   const TriangleMesh warped = warpMesh (options, mesh, report);
@@ -146,6 +151,7 @@ runWarp (const WarpOptions& options)
   }
   if (!options.report.empty ())
     writeJsonFile (options.report, report);
+  outputs.keep ();
   std::cout << "wrote " << options.out << '\n';
 }
 } // namespace
@@ -166,7 +172,7 @@ registerWarpCommand (CLI::App& app)
                     "how far each segment's warp reaches into its neighbours along the mesh (mm; one value, or one "
                     "per segment separated by commas; 0 = hard segments)")
       ->delimiter (',')
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command
       ->add_option ("--overlap", options->overlap,
@@ -176,7 +182,7 @@ registerWarpCommand (CLI::App& app)
       ->check (nonNegativeOrInfinite ())
       ->capture_default_str ();
   command->add_option ("--lambda", options->lambda, "TPS regularisation (0 = exact interpolation)")
-      ->check (CLI::NonNegativeNumber)
+      ->check (nonNegative ())
       ->capture_default_str ();
   command->add_option ("--truth", options->truth, "true target mesh (same topology): report the warp's error");
   command->add_option ("--report", options->report, "JSON report to write");

@@ -6,11 +6,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <iostream>
 
 int
 main (int argc, char** argv)
 {
+  // A file size limit (ulimit -f) then makes a write fail with an error the writers report, instead of killing us.
+  std::signal (SIGXFSZ, SIG_IGN);
   CLI::App app{"morphreg: morphable-model registration and thin plate spline warping for PCL"};
   app.set_version_flag ("--version", std::string ("morphreg ") + MORPHREG_VERSION);
   app.require_subcommand (1);

@@ -12,11 +12,19 @@ namespace tools
 inline void
 addScannerOptions (CLI::App* command, synthetic::ScanSimulator::Parameters& parameters)
 {
-  command->add_option ("--noise", parameters.noise_sigma, "scanner range noise sigma (mm)")->capture_default_str ();
-  command->add_option ("--outliers", parameters.outlier_fraction, "fraction of outlier points")->capture_default_str ();
-  command->add_option ("--angular-samples", parameters.angular_samples, "scanner rays per turn")
+  using synthetic::ScanSimulator;
+  command->add_option ("--noise", parameters.noise_sigma, "scanner range noise sigma (mm)")
+      ->check (CLI::Range (0.0, 100.0))
       ->capture_default_str ();
-  command->add_option ("--row-spacing", parameters.row_spacing, "scanner row spacing (mm)")->capture_default_str ();
+  command->add_option ("--outliers", parameters.outlier_fraction, "fraction of outlier points")
+      ->check (CLI::Range (0.0, 0.5))
+      ->capture_default_str ();
+  command->add_option ("--angular-samples", parameters.angular_samples, "scanner rays per turn")
+      ->check (CLI::Range (8, ScanSimulator::kMaxAngularSamples))
+      ->capture_default_str ();
+  command->add_option ("--row-spacing", parameters.row_spacing, "scanner row spacing (mm)")
+      ->check (CLI::Range (ScanSimulator::kMinRowSpacing, 1000.0))
+      ->capture_default_str ();
   command->add_flag ("--range-mesh", parameters.range_mesh, "also write the triangulated range image");
 }
 } // namespace tools

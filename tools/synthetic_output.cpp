@@ -10,7 +10,6 @@
 #include <morphreg/photo/photo_view_io.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 

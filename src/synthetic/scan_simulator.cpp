@@ -187,8 +187,10 @@ triangulateRangeImage (const RangeImage& image, double max_edge_length)
 ScanSimulator::ScanSimulator (const Parameters& parameters) : parameters_ (parameters)
 {
   const Parameters& p = parameters;
-  requireSetting (p.angular_samples >= 8, "angular_samples", p.angular_samples, "at least 8");
-  requireSetting (p.row_spacing > 0.0, "row_spacing", p.row_spacing, "positive (mm)");
+  // The upper limits keep a scan within memory: at most 10^5 rays per turn, rows at least 0.01 mm apart.
+  requireSetting (p.angular_samples >= 8 && p.angular_samples <= kMaxAngularSamples, "angular_samples",
+                  p.angular_samples, "in [8, 100000]");
+  requireSetting (p.row_spacing >= kMinRowSpacing, "row_spacing", p.row_spacing, "at least 0.01 (mm)");
   requireSetting (p.max_incidence_deg > 0.0 && p.max_incidence_deg < 90.0, "max_incidence_deg", p.max_incidence_deg,
                   "in (0, 90)");
   requireSetting (p.camera_elevation_deg >= 0.0 && p.camera_elevation_deg < 90.0, "camera_elevation_deg",

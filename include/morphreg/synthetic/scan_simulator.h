@@ -50,11 +50,14 @@ struct SimulatedScan
 class ScanSimulator
 {
 public:
+  static constexpr int kMaxAngularSamples = 100000; ///< the most rays per turn (a scan must fit in memory)
+  static constexpr double kMinRowSpacing = 0.01;    ///< mm, the closest scan rows
+
   /** \brief Scanner settings; the defaults give about 60k points on an average head. */
   struct Parameters
   {
-    int angular_samples = 400;         ///< rays per turn around the vertical axis
-    double row_spacing = 1.5;          ///< mm between scan rows
+    int angular_samples = 400;         ///< rays per turn around the vertical axis (8 to kMaxAngularSamples)
+    double row_spacing = 1.5;          ///< mm between scan rows (at least kMinRowSpacing)
     double max_incidence_deg = 65;     ///< surfaces seen more obliquely than this by the laser or camera are lost
     double camera_elevation_deg = 25;  ///< the triangulating camera looks down at the laser plane from above
     double noise_sigma = 0.2;          ///< mm, Gaussian range noise along each ray
