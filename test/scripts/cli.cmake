@@ -30,7 +30,7 @@ add_test(NAME CliTest.SynthWritesHeadsAndScans
 set_tests_properties(CliTest.SynthWritesHeadsAndScans PROPERTIES PASS_REGULAR_EXPRESSION "wrote 2 heads, 1 scans and 0 photo pairs"
   FIXTURES_SETUP cli_synth)
 morphreg_cli_expect_exit(BadArgumentExits2 2 "--count" synth --count 0)
-morphreg_cli_expect_exit(BadScannerSettingIsNamed 1 "noise_sigma" synth --count 1 --scans 1 --noise -1 --quiet
+morphreg_cli_expect_exit(BadScannerSettingIsNamed 2 "--noise" synth --count 1 --scans 1 --noise -1 --quiet
   --out ${cli_dir}/bad)
 
 # build-model and register on a small population (12 heads of 3458 vertices, a coarse scan of the first).

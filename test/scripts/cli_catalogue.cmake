@@ -140,7 +140,8 @@ foreach(i RANGE 199)
 endforeach()
 foreach(case "one;1 point" "three;3 points" "few;50 points, at least 100" "flat;the 200 points lie in a plane"
         "line;the 200 points are collinear" "same;all 200 points are identical"
-        "nan;the scan has no valid (finite) points" "inf;point 17 is not finite (inf, 0, 1)" "enormous;1e+3")
+        "nan;the scan has no valid (finite) points" "inf;point 17 is not finite (inf, 0, 1)"
+        "enormous;no head in any unit")
   list(GET case 0 kind)
   list(GET case 1 text)
   list(LENGTH ${kind} count)
@@ -162,9 +163,8 @@ morphreg_bad_input(ModelMissing 1 TEXT "missing.h5: no such file" SETUP ${scan}
   ARGS register --scan @CASE@/scan.pcd --model @CASE@/missing.h5 --out @CASE@/fit.ply)
 
 # --- Landmark files ---------------------------------------------------------------------------------------------------
-bad_file(metres.json "{\"units\": \"m\", \"landmarks\": [{\"id\": \"nose_tip\", \"position\": [0, 30, 110]},"
-         "{\"id\": \"right_eye_outer\", \"position\": [-45, 60, 70]}, {\"id\": \"left_eye_outer\", \"position\": [45, 60, 70]},"
-         "{\"id\": \"chin\", \"position\": [0, -40, 95]}]}")
+# (JSON written as one argument: CMake does not split a list inside unbalanced square brackets)
+bad_file(metres.json "{\"units\": \"m\", \"landmarks\": [{\"id\": \"nose_tip\", \"position\": [0, 30, 110]}, {\"id\": \"right_eye_outer\", \"position\": [-45, 60, 70]}, {\"id\": \"left_eye_outer\", \"position\": [45, 60, 70]}, {\"id\": \"chin\", \"position\": [0, -40, 95]}]}")
 bad_file(malformed.json "{\"landmarks\": [{\"id\": \"nose_tip\", \"position\": [0, 30")
 bad_file(wrong_columns.csv "id,x,y,z" "nose_tip,1,2" "chin,0,-40,95")
 bad_file(malformed.pp "<!DOCTYPE PickedPoints>" "<PickedPoints>" "<point x=\"1\" y=\"2\" name=\"nose_tip\"/>"
@@ -181,30 +181,37 @@ foreach(case "metres.json;metres.json: ;units" "malformed.json;malformed.json: "
   morphreg_bad_input(Landmarks_${name} 1 TEXT ${text} SETUP ${setup}
     ARGS register --scan @CASE@/scan.pcd --landmarks @CASE@/${file} ${register_args})
 endforeach()
-# TPS landmark sets: two landmarks at one place, no landmark in common, all on one line.
+# TPS landmark pairs: two landmarks at one place sent to two places, no landmark in common, all on one line.
 bad_file(coincident.csv "id,x,y,z" "nose_tip,0,30,110" "chin,0,-40,95" "right_eye_outer,-45,60,70"
          "left_eye_outer,45,60,70" "right_eyebrow,0,30,110")
+bad_file(coincident_target.csv "id,x,y,z" "nose_tip,0,30,110" "chin,0,-40,95" "right_eye_outer,-45,60,70"
+         "left_eye_outer,45,60,70" "right_eyebrow,-30,70,80")
 bad_file(other_ids.csv "id,x,y,z" "a,0,30,110" "b,0,-40,95" "c,-45,60,70" "d,45,60,70")
 bad_file(collinear.csv "id,x,y,z" "nose_tip,0,0,0" "chin,0,10,0" "right_eye_outer,0,20,0" "left_eye_outer,0,30,0"
          "right_eyebrow,0,40,0")
-foreach(case "coincident;nose_tip;right_eyebrow" "other_ids;other_ids.csv" "collinear;collinear.csv")
+foreach(case "coincident;coincident_target.csv;nose_tip;right_eyebrow;one position"
+        "other_ids;target.json;other_ids.csv;not in both" "collinear;collinear.csv;collinear.csv")
   list(GET case 0 kind)
-  list(SUBLIST case 1 -1 text)
+  list(GET case 1 target_file)
+  list(SUBLIST case 2 -1 text)
   set(setup ${mesh})
   given(${kind}.csv)
+  if(target_file STREQUAL "target.json")
+    list(APPEND setup ${target})
+  elseif(NOT target_file STREQUAL "${kind}.csv")
+    given(${target_file})
+  endif()
   morphreg_bad_input(WarpLandmarks_${kind} 1 TEXT ${text} SETUP ${setup}
-    ARGS warp --mesh @CASE@/head.ply --source @CASE@/${kind}.csv --target @CASE@/${kind}.csv --out @CASE@/warped.ply)
+    ARGS warp --mesh @CASE@/head.ply --source @CASE@/${kind}.csv --target @CASE@/${target_file} --out @CASE@/warped.ply)
 endforeach()
 
 # --- Photo annotations ------------------------------------------------------------------------------------------------
-bad_file(tiny_silhouette.json "{\"view\": \"profile\", \"image\": {\"width\": 1000, \"height\": 1200}, \"units\": \"px\","
-         "\"nose_tip\": [649, 600], \"silhouette\": [[641, 608], [642, 605], [643, 603], [644, 601], [645, 600],"
-         "[646, 599], [647, 598], [648, 598], [649, 599], [648, 601], [647, 603], [646, 605]]}")
+bad_file(tiny_silhouette.json "{\"view\": \"profile\", \"image\": {\"width\": 1000, \"height\": 1200}, \"units\": \"px\", \"nose_tip\": [649, 600], \"silhouette\": [[641, 608], [642, 605], [643, 603], [644, 601], [645, 600], [646, 599], [647, 598], [648, 598], [649, 599], [648, 601], [647, 603], [646, 605]]}")
 bad_file(malformed_profile.json "{\"view\": \"profile\", \"image\": {\"width\": 1000")
 bad_file(negative_size.json "{\"view\": \"profile\", \"image\": {\"width\": -1000, \"height\": 1200}, \"units\": \"px\","
          "\"nose_tip\": [649, 600], \"silhouette\": [[641, 608], [642, 605], [643, 603]]}")
-foreach(case "tiny_silhouette;tiny_silhouette.json;silhouette does not match" "malformed_profile;malformed_profile.json: "
-        "negative_size;negative_size.json: ;width")
+foreach(case "tiny_silhouette;tiny_silhouette.json;check that the silhouette traces" "malformed_profile;malformed_profile.json: "
+        "negative_size;negative_size.json: ;image size -1000 x 1200 px must be positive")
   list(GET case 0 kind)
   list(SUBLIST case 1 -1 text)
   set(setup ${model} ${frontal})
@@ -244,7 +251,7 @@ morphreg_bad_input(FitPhotosDiskFull 1 TEXT "photos.ply" SETUP ${model} ${profil
 morphreg_bad_input(BuildModelDiskFull 1 TEXT "model_out.h5" SETUP ${mesh} ${mesh_1} ${full_disk}
   ARGS build-model --mesh @CASE@/head.ply --mesh @CASE@/head_1.ply --out @CASE@/model_out.h5)
 morphreg_bad_input(SynthDiskFull 1 TEXT "synth/" ${full_disk}
-  ARGS synth --count 2 --resolution 16 --quiet --out @CASE@/synth)
+  ARGS synth --count 2 --resolution 20 --quiet --out @CASE@/synth)
 
 # --- Options out of range ---------------------------------------------------------------------------------------------
 morphreg_bad_input(ComponentsNegative 2 TEXT "--components" SETUP ${scan} ${model}
