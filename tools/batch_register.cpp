@@ -2,6 +2,7 @@
 // resumable (a scan's report on disk means it is done), shardable over a job array, summarised.
 #include "batch_summary.h"
 #include "pipeline.h"
+#include "progress.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -109,39 +110,40 @@ finishedReport (const std::string& path)
   }
 }
 
-/** Counts, rate and ETA on one stderr line. */
+/** Counts, rate and ETA as the steps of a Progress, from any worker thread. */
 class BatchProgress
 {
 public:
-  BatchProgress (int total, bool quiet) : total_ (total), quiet_ (quiet), start_ (Clock::now ()) {}
+  BatchProgress (int total, bool quiet)
+    : total_ (total), progress_ ("registering", total, quiet), start_ (Clock::now ())
+  {}
 
   void
   done (bool ok)
   {
     std::lock_guard<std::mutex> lock (mutex_);
     ++(ok ? ok_ : failed_);
-    if (quiet_)
-      return;
     const int finished = ok_ + failed_;
     const double minutes = std::chrono::duration<double> (Clock::now () - start_).count () / 60.0;
     const double rate = finished / std::max (minutes, 1e-9);
     const long eta = std::lround ((total_ - finished) / std::max (rate, 1e-9) * 60.0);
-    std::cerr << "\rregistering [" << finished << '/' << total_ << "] " << ok_ << " ok, " << failed_ << " failed, "
-              << std::fixed << std::setprecision (1) << rate << " scans/min, ETA " << eta / 3600 << ':' << std::setw (2)
-              << std::setfill ('0') << eta / 60 % 60 << ':' << std::setw (2) << eta % 60 << std::setfill (' ')
-              << std::defaultfloat << "    " << std::flush;
+    std::ostringstream detail;
+    detail << ' ' << ok_ << " ok, " << failed_ << " failed, " << std::fixed << std::setprecision (1) << rate
+           << " scans/min, ETA " << eta / 3600 << ':' << std::setw (2) << std::setfill ('0') << eta / 60 % 60 << ':'
+           << std::setw (2) << eta % 60;
+    progress_.step (finished, detail.str ());
   }
 
   void
   finish () const
   {
-    if (!quiet_ && ok_ + failed_ > 0)
-      std::cerr << '\n';
+    if (ok_ + failed_ > 0)
+      progress_.finish (ok_ + failed_);
   }
 
 private:
   int total_, ok_ = 0, failed_ = 0;
-  bool quiet_;
+  const Progress progress_;
   Clock::time_point start_;
   std::mutex mutex_;
 };

@@ -1,5 +1,6 @@
 // The morphreg command line: subcommands are registered by the tools/command_*.cpp files.
 #include "commands.h"
+#include "console.h"
 #include "pipeline.h"
 
 #include <morphreg/common/error.h>
@@ -21,6 +22,7 @@ main (int argc, char** argv)
               "4 the fit failed its checks (register: the fitted mesh and the report are written, the report's "
               "status is \"failed\").");
   morphreg::tools::registerCommands (app);
+  morphreg::tools::addVerbosityOptions (app);
   try {
     app.parse (argc, argv);
   }
@@ -29,16 +31,20 @@ main (int argc, char** argv)
     return status == 0 ? 0 : morphreg::tools::kExitBadArguments;
   }
   catch (const morphreg::tools::FitCheckFailure& e) {
+    morphreg::tools::printHeldErrors ();
     std::cerr << "morphreg: the fit failed its checks: " << e.what () << '\n';
     return morphreg::tools::kExitFitFailedChecks;
   }
   catch (const morphreg::Error& e) {
+    morphreg::tools::discardHeldErrors (); // the message names the problem
     std::cerr << "morphreg: error: " << e.what () << '\n';
     return morphreg::tools::kExitInputError;
   }
   catch (const std::exception& e) {
+    morphreg::tools::printHeldErrors ();
     std::cerr << "morphreg: internal error: " << e.what () << '\n';
     return morphreg::tools::kExitInternalError;
   }
+  morphreg::tools::printHeldErrors ();
   return 0;
 }

@@ -1,40 +1,48 @@
 #pragma once
-// A one-line progress display on stderr for long CLI work ("generating heads [12/200]").
-#include <iostream>
+// A progress display on stderr for long CLI work ("generating heads [12/200]"): one line redrawn in place on a
+// terminal; in a log, separate lines and only a few of them.
+#include <chrono>
+#include <ostream>
 #include <string>
 
 namespace morphreg
 {
 namespace tools
 {
-/** Rewrites one stderr line per step; finish() ends the line. Quiet mode prints nothing. */
+/** Shows the steps of one stage; finish() ends it. Quiet mode prints nothing. On a terminal each step rewrites the
+ *  line with '\r'; elsewhere (a log, a pipe) a step writes a line of its own only when it is the first, starts a new
+ *  tenth of the total or comes an interval after the last line, and finish() writes the last line.
+ */
 class Progress
 {
 public:
-  Progress (std::string label, int total, bool quiet = false)
-    : label_ (std::move (label)), total_ (total), quiet_ (quiet)
-  {}
+  using Clock = std::chrono::steady_clock;
+
+  /** Progress on stderr, redrawn in place when stderr is a terminal; in a log at most a line per tenth or 5 s. */
+  Progress (std::string label, int total, bool quiet = false);
+
+  /** Progress on \a out; \a redraw rewrites one line with '\r', otherwise a line is written at most per tenth of
+   *  \a total or per \a interval.
+   */
+  Progress (std::string label, int total, bool quiet, std::ostream& out, bool redraw, Clock::duration interval);
 
   /** Shows \a done of the total, followed by \a detail (e.g. the current error). */
   void
-  step (int done, const std::string& detail = "") const
-  {
-    if (!quiet_)
-      std::cerr << '\r' << label_ << " [" << done << '/' << total_ << ']' << detail << "    " << std::flush;
-  }
+  step (int done, const std::string& detail = "") const;
 
-  /** Ends the line; \a done < 0 means all steps ran (work that may stop early, like ICP, passes its count). */
+  /** Ends the stage; \a done < 0 means all steps ran (work that may stop early, like ICP, passes its count). */
   void
-  finish (int done = -1) const
-  {
-    if (!quiet_)
-      std::cerr << '\r' << label_ << " [" << (done < 0 ? total_ : done) << '/' << total_ << "] done    \n";
-  }
+  finish (int done = -1) const;
 
 private:
   std::string label_;
   int total_;
   bool quiet_;
+  std::ostream& out_;
+  bool redraw_;
+  Clock::duration interval_;
+  mutable int last_line_done_ = -1; ///< the step of the last line written when not redrawing; -1 before the first
+  mutable Clock::time_point last_line_time_;
 };
 } // namespace tools
 } // namespace morphreg

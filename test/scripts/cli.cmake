@@ -22,7 +22,8 @@ add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
 set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
 foreach(command synth build-model register fit-photos warp render demo model-info merge-summaries)
   add_test(NAME CliTest.Help.${command} COMMAND morphreg_cli ${command} --help)
-  set_tests_properties(CliTest.Help.${command} PROPERTIES PASS_REGULAR_EXPRESSION "Usage: .*${command}")
+  set_tests_properties(CliTest.Help.${command} PROPERTIES
+    PASS_REGULAR_EXPRESSION "Usage: .*${command}.*-q,--quiet.*-v,--verbose")
 endforeach()
 
 add_test(NAME CliTest.SynthWritesHeadsAndScans
@@ -75,7 +76,7 @@ add_test(NAME CliTest.RegisterSynthScanMatchesTruth
 set_tests_properties(CliTest.RegisterSynthScanMatchesTruth PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
   FIXTURES_SETUP cli_fit
   PASS_REGULAR_EXPRESSION "vertices the scan covers: RMS 0\\.[0-9]+ mm.*registered .* iterations \\([a-z_]*converged"
-  # progress: one line per iteration, each with its correspondences (none for PCL's call at callback registration)
+  # progress: iterations with their correspondences (none for PCL's call at callback registration)
   FAIL_REGULAR_EXPRESSION "\\] 0 correspondences")
 add_test(NAME CliTest.RegisterReportIsComplete
   COMMAND ${CMAKE_COMMAND} -DREPORT=${cli_dir}/fit.json -DMAX_TRUTH_RMS=1.0 -P ${cli_scripts}/check_register_report.cmake)
@@ -99,6 +100,37 @@ morphreg_cli_expect_exit(RegisterWrongTruthIsNamed 1 "synth/head_000.ply: 9602 v
   register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --iterations 2 --quiet
   --truth ${cli_dir}/synth/head_000.ply --out ${cli_dir}/bad.ply)
 morphreg_cli_expect_exit(RegisterBadLossExits2 2 "--loss" register --scan a.pcd --model b.h5 --loss cauchy)
+
+# Output on stderr in a log (a file, not a terminal): progress as separate lines, no '\r'; PCL's warnings (a PLY
+# scan's unhandled faces; a PCD scan without normals: "Failed to find match for field 'normal_x'") only with
+# --verbose; nothing at all with -q.
+function(morphreg_cli_check_stderr name)
+  cmake_parse_arguments(PARSE_ARGV 1 check "EMPTY" "CODE;REQUIRE;FORBID;FIXTURES" "ARGS")
+  list(JOIN check_ARGS "|" arguments)
+  add_test(NAME CliTest.${name}
+    COMMAND ${CMAKE_COMMAND} "-DARGS=${arguments}" -DLOG=${cli_dir}/${name}.log -DEXPECT_CODE=${check_CODE}
+            "-DREQUIRE=${check_REQUIRE}" "-DFORBID=${check_FORBID}" -DEMPTY=${check_EMPTY}
+            -P ${cli_scripts}/check_stderr.cmake)
+  set_tests_properties(CliTest.${name} PROPERTIES FIXTURES_REQUIRED "${check_FIXTURES}")
+endfunction()
+set(register_ply_scan $<TARGET_FILE:morphreg_cli> register --scan ${cli_dir}/small/head_001.ply
+    --model ${cli_dir}/small_model.h5 --iterations 30)
+morphreg_cli_check_stderr(RegisterLogHasProgressLinesAndNoPclWarnings FIXTURES "cli_small;cli_model"
+  REQUIRE "(^|\n)registering [^\n]*\\[1/30\\] [0-9]+ correspondences[^\n]*\n(.*\n)?registering [^\n]*\\] done\n"
+  FORBID "\\[pcl::" ARGS ${register_ply_scan} --out ${cli_dir}/log_fit.ply)
+morphreg_cli_check_stderr(RegisterVerboseShowsPclWarnings FIXTURES "cli_small;cli_model"
+  REQUIRE "\\[pcl::PLYReader\\]" ARGS ${register_ply_scan} --verbose --out ${cli_dir}/verbose_fit.ply)
+morphreg_cli_check_stderr(RegisterQuietPrintsNothingOnStderr FIXTURES "cli_small;cli_model" EMPTY
+  ARGS ${register_ply_scan} -q --out ${cli_dir}/quiet_fit.ply)
+morphreg_cli_check_stderr(RegisterScanWithoutNormalsHasNoPclWarning FIXTURES "cli_small;cli_model" CODE 1
+  REQUIRE "scan_few.pcd: 50 points" FORBID "Failed to find match|\\[pcl::"
+  ARGS $<TARGET_FILE:morphreg_cli> register --scan ${cli_dir}/scan_few.pcd --model ${cli_dir}/small_model.h5
+  --out ${cli_dir}/bad.ply)
+morphreg_cli_check_stderr(RegisterVerboseShowsMissingNormals FIXTURES "cli_small;cli_model" CODE 1
+  REQUIRE "Failed to find match for field 'normal_x'"
+  ARGS $<TARGET_FILE:morphreg_cli> register --scan ${cli_dir}/scan_few.pcd --model ${cli_dir}/small_model.h5
+  --verbose --out ${cli_dir}/bad.ply)
+morphreg_cli_expect_exit(VerboseExcludesQuiet 2 "--quiet excludes --verbose" synth --count 1 -v -q)
 
 # Scans that cannot be registered are rejected before fitting, naming the file and the problem.
 function(write_ascii_pcd path points)
@@ -252,6 +284,17 @@ add_test(NAME CliTest.RenderWritesPng
           --cloud ${cli_dir}/synth/scan_0.pcd --width 320 --height 240 --view oblique --out ${cli_dir}/render.png)
 set_tests_properties(CliTest.RenderWritesPng PROPERTIES FIXTURES_REQUIRED cli_synth RESOURCE_LOCK xvfb
   PASS_REGULAR_EXPRESSION "wrote .*render.png \\(320x240\\)")
+# VTK's warnings reach stderr only with --verbose (landmark spheres: 12 deprecation warnings each, from VTK's
+# mapper copies for PCL's level-of-detail actors); -q leaves stderr empty.
+morphreg_cli_check_stderr(RenderPrintsNoVtkMessages FIXTURES "cli_small;cli_synth" FORBID "[vV][tT][kK]|Warning"
+  ARGS ${xvfb} $<TARGET_FILE:morphreg_cli> render --mesh ${cli_dir}/small/head_000.ply
+  --landmarks ${cli_dir}/small/head_000_landmarks.json --cloud ${cli_dir}/synth/scan_0.pcd --width 320 --height 240
+  --out ${cli_dir}/render_log.png)
+morphreg_cli_check_stderr(RenderQuietPrintsNothingOnStderr FIXTURES cli_synth EMPTY
+  ARGS ${xvfb} $<TARGET_FILE:morphreg_cli> render --mesh ${cli_dir}/synth/head_000.ply --width 320 --height 240 -q
+  --out ${cli_dir}/render_quiet.png)
+set_tests_properties(CliTest.RenderPrintsNoVtkMessages CliTest.RenderQuietPrintsNothingOnStderr PROPERTIES
+  RESOURCE_LOCK xvfb)
 morphreg_cli_expect_exit(RenderMissingFileIsNamed 2 "no_such_mesh.ply" render --mesh ${cli_dir}/no_such_mesh.ply)
 add_test(NAME CliTest.DemoWritesScreenshot
   COMMAND ${xvfb} $<TARGET_FILE:morphreg_cli> demo --count 6 --resolution 20 --angular-samples 150
