@@ -24,6 +24,7 @@ GeometryFileReader::nextLine (std::string& line)
   if (!std::getline (stream_, line))
     return false;
   ++line_number_;
+  offset_ += line.size () + (stream_.eof () ? 0 : 1);
   if (!line.empty () && line.back () == '\r')
     line.pop_back ();
   return true;
@@ -33,6 +34,7 @@ bool
 GeometryFileReader::readBytes (char* out, std::uint64_t bytes)
 {
   stream_.read (out, static_cast<std::streamsize> (bytes));
+  offset_ += static_cast<std::uint64_t> (stream_.gcount ());
   return static_cast<std::uint64_t> (stream_.gcount ()) == bytes;
 }
 
@@ -41,17 +43,13 @@ GeometryFileReader::skipBytes (std::uint64_t bytes)
 {
   if (bytes > remaining ())
     return false;
-  stream_.seekg (static_cast<std::streamoff> (bytes), std::ios::cur);
+  // Short skips stay in the stream's buffer; a seek would drop it and read the file again.
+  if (bytes < (1u << 20))
+    stream_.ignore (static_cast<std::streamsize> (bytes));
+  else
+    stream_.seekg (static_cast<std::streamoff> (bytes), std::ios::cur);
+  offset_ += bytes;
   return static_cast<bool> (stream_);
-}
-
-std::uint64_t
-GeometryFileReader::offset ()
-{
-  if (!stream_)
-    return size_;
-  const std::streamoff position = stream_.tellg ();
-  return position < 0 ? size_ : static_cast<std::uint64_t> (position);
 }
 
 void

@@ -34,13 +34,16 @@ public:
 
   /** The offset of the next byte to be read. */
   std::uint64_t
-  offset ();
-
-  /** The bytes after the next one to be read. */
-  std::uint64_t
-  remaining ()
+  offset () const
   {
-    return size_ - offset ();
+    return offset_;
+  }
+
+  /** The bytes from the next one to be read to the end of the file. */
+  std::uint64_t
+  remaining () const
+  {
+    return offset_ < size_ ? size_ - offset_ : 0;
   }
 
   /** The file's size in bytes. */
@@ -89,6 +92,7 @@ private:
   std::string path_;
   std::ifstream stream_;
   std::uint64_t size_ = 0;
+  std::uint64_t offset_ = 0;
   std::uint64_t line_number_ = 0;
 };
 
