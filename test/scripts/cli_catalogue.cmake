@@ -91,7 +91,7 @@ bad_file(garbage.ply "this is not a mesh" "at all")
 bad_file(points.xyz "0 0 0" "1 0 0")
 file(WRITE ${bad}/empty.ply "")
 foreach(case "huge.ply;huge.ply: ;2000000000" "huge.pcd;huge.pcd: ;2000000000" "malformed.stl;malformed.stl:5"
-        "too_few_points.vtk;too_few_points.vtk" "bad_count.off;bad_count.off:6" "garbage.ply;garbage.ply: "
+        "bad_count.off;bad_count.off:6" "garbage.ply;garbage.ply: "
         "empty.ply;empty.ply: ;empty" "points.xyz;points.xyz: ;unsupported")
   list(GET case 0 file)
   list(SUBLIST case 1 -1 text)
@@ -100,6 +100,11 @@ foreach(case "huge.ply;huge.ply: ;2000000000" "huge.pcd;huge.pcd: ;2000000000" "
   given(${file})
   morphreg_bad_input(Scan_${name} 1 TEXT ${text} SETUP ${setup} ARGS register --scan @CASE@/${file} ${register_args})
 endforeach()
+# VTK files are meshes only (register takes no .vtk scan): warp reads this one.
+morphreg_bad_input(WarpVtk_too_few_points 1 TEXT "too_few_points.vtk: " "header claims 1000 points"
+  SETUP copy,${bad}/too_few_points.vtk,@CASE@/too_few_points.vtk ${source} ${target}
+  ARGS warp --mesh @CASE@/too_few_points.vtk --source @CASE@/source.json --target @CASE@/target.json
+       --out @CASE@/warped.ply)
 morphreg_bad_input(ScanBinaryPlyCutShort 1 TEXT "cut.ply: "
   SETUP head,${small}/head_000.ply,@CASE@/cut.ply,20000 ${model} ARGS register --scan @CASE@/cut.ply ${register_args})
 morphreg_bad_input(ScanBinaryPcdCutShort 1 TEXT "cut.pcd: "
@@ -233,6 +238,10 @@ morphreg_bad_input(BuildModelOutIsAMesh 1 TEXT "head.ply" "input" SETUP ${mesh} 
 morphreg_bad_input(FitPhotosReportIsTheFrontal 1 TEXT "frontal.json" "input" SETUP ${model} ${profile} ${frontal}
   ARGS fit-photos --model @CASE@/model.h5 --profile @CASE@/profile.json --frontal @CASE@/frontal.json
        --report @CASE@/frontal.json --out @CASE@/photos.ply)
+morphreg_bad_input(RenderOutIsTheMesh 1 TEXT "head.ply" "input" SETUP ${mesh} XVFB
+  ARGS render --mesh @CASE@/head.ply --width 64 --height 64 --out @CASE@/head.ply)
+morphreg_bad_input(SynthOutIsAFile 1 TEXT "head.ply: exists and is not a folder" SETUP ${mesh}
+  ARGS synth --count 1 --resolution 20 --quiet --out @CASE@/head.ply)
 morphreg_bad_input(RegisterOutFolderMissing 1 TEXT "@CASE@/no_such_folder" SETUP ${scan} ${model} FORBID "registering"
   ARGS register --scan @CASE@/scan.pcd --model @CASE@/model.h5 --out @CASE@/no_such_folder/fit.ply)
 morphreg_bad_input(RegisterOutUnderAFile 1 TEXT "scan.pcd" SETUP ${scan} ${model} FORBID "registering"
