@@ -28,8 +28,10 @@ loadPolygonMesh (const std::string& path)
     }
     if (format == FileFormat::Ply)
       return pcl::io::loadPLYFile (path, mesh);
-    if (format == FileFormat::Obj)
-      return pcl::io::loadOBJFile (path, mesh);
+    if (format == FileFormat::Obj) {
+      mesh = readObjFile (path);
+      return 0;
+    }
     return pcl::io::loadPolygonFile (path, mesh) > 0 ? 0 : -1;
   });
   if (status < 0)

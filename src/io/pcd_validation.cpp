@@ -201,6 +201,8 @@ validatePcdFile (const std::string& path)
   PcdHeader header = parseHeader (reader);
   const std::uint64_t point_bytes = checkHeader (reader, header);
   const auto points = static_cast<std::uint64_t> (header.points);
+  if (points == 0)
+    reader.fail ("the PCD file holds no points (POINTS 0)");
   if (header.data == "binary")
     requireCountFits (path, points, static_cast<double> (point_bytes), reader.remaining (), "points");
   else if (header.data == "binary_compressed")

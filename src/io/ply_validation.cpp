@@ -329,6 +329,8 @@ validatePlyFile (const std::string& path)
 {
   GeometryFileReader reader (path);
   const PlyHeader header = parseHeader (reader);
+  if (header.vertex_count == 0) // PCL's conversions misbehave on an empty cloud, and it is no mesh or scan
+    reader.fail ("the PLY file holds no vertices (no 'element vertex' with a count above 0)");
   checkElements (reader, header);
   if (header.encoding == PlyEncoding::Ascii)
     walkAscii (reader, header);

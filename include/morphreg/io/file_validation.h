@@ -5,12 +5,13 @@
  *  and line. Sizes read from a header never drive an allocation before they are checked against the file.
  *
  *  What each format must satisfy:
- *  - PLY: a well-formed header; every element count fits in the file; binary data (lists walked row by row) ends
+ *  - PLY: a well-formed header with at least one vertex; every element count fits in the file; binary data (lists walked row by row) ends
  *    within the file; ASCII rows have the right number of finite numbers; face indices lie in [0, vertex count).
- *  - PCD: FIELDS, SIZE, TYPE and COUNT of one length and valid types, WIDTH * HEIGHT = POINTS; binary data fits in
+ *  - PCD: at least one point; FIELDS, SIZE, TYPE and COUNT of one length and valid types, WIDTH * HEIGHT = POINTS; binary data fits in
  *    the file; binary_compressed sizes agree with the file and with POINTS; ASCII rows have one number per value.
- *  - OBJ: v has 3, 4 or 6 finite numbers, vn 3, vt 1 to 3; faces have at least 3 corners whose indices (v, v/t,
- *    v//n, v/t/n, negative = relative) are in range; no more vn than v lines (PCL stores one normal per vertex).
+ *  - OBJ: read by morphreg's own reader (readObjFile; PCL's crashes on some malformed files): v has 3, 4 or 6 finite
+ *    numbers, vn 3, vt 1 to 3; faces have at least 3 corners whose indices (v, v/t, v//n, v/t/n, negative =
+ *    relative) are in range.
  *  - STL: binary files are exactly 84 + 50 N bytes; ASCII files follow solid / facet normal / outer loop / 3 vertex
  *    / endloop / endfacet / endsolid with finite coordinates.
  *  - VTK legacy: ASCII or BINARY POLYDATA; POINTS n has its 3n values; VERTICES, LINES, POLYGONS and

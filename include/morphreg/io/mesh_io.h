@@ -21,6 +21,16 @@ namespace morphreg
 pcl::PolygonMesh
 loadPolygonMesh (const std::string& path);
 
+/** \brief Reads an OBJ file with morphreg's own reader (PCL's crashes or hangs on some malformed files): its vertices
+ *  (with an rgb colour when every vertex has one, with normals when there are as many vn as v lines) and its
+ *  polygons, if any (texture coordinates and materials are ignored). FormatError naming the file and line of a
+ *  malformed vertex, normal or face, or of a face index beyond the file's vertices.
+ *  \param[in] path the OBJ file
+ *  \return the mesh (no polygons for a file of vertices only)
+ */
+pcl::PolygonMesh
+readObjFile (const std::string& path);
+
 /** \brief Saves \a mesh (.ply binary, .obj, .vtk), whole or not at all (written under a temporary name, checked to
  *  be complete, then renamed); throws IoError naming the file on failure, a full disk included.
  *  \param[in] path the file; its extension chooses the format

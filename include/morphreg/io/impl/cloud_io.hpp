@@ -21,6 +21,10 @@ loadCloud (const std::string& path)
 {
   const FileFormat format = checkGeometryFile (path, ".pcd .ply .obj .stl .off", "point cloud");
   typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
+  if (format == FileFormat::Obj) { // its vertices, faces or not
+    pcl::fromPCLPointCloud2 (readObjFile (path).cloud, *cloud);
+    return cloud;
+  }
   if (format == FileFormat::StlAscii || format == FileFormat::StlBinary || format == FileFormat::Off) {
     // mesh-only formats: the mesh's vertices are the cloud
     pcl::fromPCLPointCloud2 (loadPolygonMesh (path).cloud, *cloud);
@@ -29,13 +33,7 @@ loadCloud (const std::string& path)
   const int status = callPclIo (path, [&] {
     if (format == FileFormat::Pcd)
       return pcl::io::loadPCDFile (path, *cloud);
-    if (format == FileFormat::Ply)
-      return pcl::io::loadPLYFile (path, *cloud);
-    pcl::PolygonMesh mesh; // an OBJ file's vertices are the cloud
-    const int obj_status = pcl::io::loadOBJFile (path, mesh);
-    if (obj_status >= 0)
-      pcl::fromPCLPointCloud2 (mesh.cloud, *cloud);
-    return obj_status;
+    return pcl::io::loadPLYFile (path, *cloud);
   });
   if (status < 0)
     throw FormatError (path + ": not a readable point cloud");

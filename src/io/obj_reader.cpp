@@ -1,12 +1,23 @@
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
 
+#include <morphreg/io/mesh_io.h>
+
+#include <pcl/conversions.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cstdint>
+
 namespace morphreg
-{
-namespace validation
 {
 namespace
 {
+using validation::GeometryFileReader;
+using validation::isFiniteFloat;
+using validation::parseInteger;
+using validation::parseNumber;
+using validation::splitTokens;
 /** The v, vt or vn lines read so far, and the largest positive index a face gave for them (checked at the end, since
  *  a face may name a vertex defined after it).
  */
@@ -45,8 +56,9 @@ checkVertex (const GeometryFileReader& reader, const std::string& line, const st
   checkNumbers (reader, tokens, n, n, "vertex");
 }
 
-/** One index of a corner: a nonzero whole number, negative ones counting back from the last definition. */
-void
+/** One index of a corner: a nonzero whole number, negative ones counting back from the last definition; returns
+ *  the 0-based index (a positive one is checked against the count at the end of the file). */
+long long
 checkIndex (const GeometryFileReader& reader, std::string_view token, ObjIndexRange& range)
 {
   long long index = 0;
@@ -61,20 +73,24 @@ checkIndex (const GeometryFileReader& reader, std::string_view token, ObjIndexRa
     range.max_positive = index;
     range.max_line = reader.lineNumber ();
   }
+  return index > 0 ? index - 1 : static_cast<long long> (range.count) + index;
 }
 
-/** "f c1 c2 c3 ...", each corner v, v/t, v//n or v/t/n. */
-void
-checkFace (const GeometryFileReader& reader, const std::vector<std::string_view>& tokens, ObjIndexRange* ranges)
+/** "f c1 c2 c3 ...", each corner v, v/t, v//n or v/t/n; returns the polygon's 0-based vertex indices. */
+pcl::Vertices
+readFace (const GeometryFileReader& reader, const std::vector<std::string_view>& tokens, ObjIndexRange* ranges)
 {
   if (tokens.size () < 4)
     reader.failAtLine ("face has " + std::to_string (tokens.size () - 1) + " corners, expected at least 3");
+  pcl::Vertices polygon;
   for (std::size_t c = 1; c < tokens.size (); ++c) {
     std::string_view corner = tokens[c];
     for (int part = 0; part < 3; ++part) {
       const std::size_t slash = corner.find ('/');
       const std::string_view index = corner.substr (0, slash);
-      if (!(part == 1 && index.empty () && slash != std::string_view::npos))
+      if (part == 0)
+        polygon.vertices.push_back (static_cast<pcl::index_t> (checkIndex (reader, index, ranges[part])));
+      else if (!(part == 1 && index.empty () && slash != std::string_view::npos))
         checkIndex (reader, index, ranges[part]);
       if (slash == std::string_view::npos)
         break;
@@ -83,6 +99,7 @@ checkFace (const GeometryFileReader& reader, const std::vector<std::string_view>
       corner.remove_prefix (slash + 1);
     }
   }
+  return polygon;
 }
 
 void
@@ -90,23 +107,92 @@ checkRangesAtEnd (const GeometryFileReader& reader, const ObjIndexRange* ranges)
 {
   if (ranges[0].count == 0)
     reader.fail ("the OBJ file has no vertices (v lines)");
-  if (ranges[2].count > ranges[0].count)
-    reader.fail ("the OBJ file has more vertex normals (" + std::to_string (ranges[2].count) + ") than vertices (" +
-                 std::to_string (ranges[0].count) + "); PCL's reader keeps one normal per vertex");
   for (int part = 0; part < 3; ++part)
     if (static_cast<std::uint64_t> (ranges[part].max_positive) > ranges[part].count)
       throw FormatError (reader.path () + ":" + std::to_string (ranges[part].max_line) + ": face " + ranges[part].what +
                          " index " + std::to_string (ranges[part].max_positive) + " is beyond the file's " +
                          std::to_string (ranges[part].count) + " " + ranges[part].plural);
 }
-} // namespace
+/** What an OBJ file holds: its vertices (with a colour each if every v line has one), its normals in file order
+ *  (a normal per vertex when there are as many vn as v lines) and its polygons. */
+struct ObjContent
+{
+  std::vector<float> positions, colours, normals;
+  std::vector<pcl::Vertices> polygons;
+};
 
 void
-validateObjFile (const std::string& path)
+addNumbers (const std::vector<std::string_view>& tokens, std::size_t first, std::size_t count, std::vector<float>& out)
+{
+  for (std::size_t i = first; i < first + count; ++i) {
+    double value = 0.0;
+    parseNumber (tokens[i], value);
+    out.push_back (static_cast<float> (value));
+  }
+}
+
+/** A v line: x y z (w dropped) and an r g b colour in [0, 1] if it has one. */
+void
+addVertex (const std::vector<std::string_view>& tokens, ObjContent& content)
+{
+  addNumbers (tokens, 1, 3, content.positions);
+  if (tokens.size () == 7)
+    addNumbers (tokens, 4, 3, content.colours);
+}
+
+/** The cloud of the vertices: x y z, with rgb when every vertex has a colour, with normals when every vertex has one. */
+template <typename PointT>
+pcl::PCLPointCloud2
+vertexCloud (const ObjContent& content, bool colours, bool normals)
+{
+  pcl::PointCloud<PointT> cloud;
+  const std::size_t count = content.positions.size () / 3;
+  cloud.resize (count);
+  for (std::size_t i = 0; i < count; ++i) {
+    auto& point = cloud[i];
+    point.x = content.positions[3 * i], point.y = content.positions[3 * i + 1], point.z = content.positions[3 * i + 2];
+    if constexpr (pcl::traits::has_normal_v<PointT>)
+      if (normals)
+        point.getNormalVector3fMap () = Eigen::Map<const Eigen::Vector3f> (&content.normals[3 * i]);
+    if constexpr (pcl::traits::has_color_v<PointT>)
+      if (colours) {
+        const auto channel = [&] (int c) {
+          return static_cast<std::uint8_t> (std::clamp (content.colours[3 * i + c], 0.0f, 1.0f) * 255.0f + 0.5f);
+        };
+        point.r = channel (0), point.g = channel (1), point.b = channel (2);
+      }
+  }
+  pcl::PCLPointCloud2 blob;
+  pcl::toPCLPointCloud2 (cloud, blob);
+  return blob;
+}
+
+pcl::PolygonMesh
+toPolygonMesh (ObjContent content)
+{
+  const std::size_t count = content.positions.size () / 3;
+  const bool colours = content.colours.size () == 3 * count, normals = content.normals.size () == 3 * count;
+  pcl::PolygonMesh mesh;
+  if (colours && normals)
+    mesh.cloud = vertexCloud<pcl::PointXYZRGBNormal> (content, true, true);
+  else if (colours)
+    mesh.cloud = vertexCloud<pcl::PointXYZRGB> (content, true, false);
+  else if (normals)
+    mesh.cloud = vertexCloud<pcl::PointNormal> (content, false, true);
+  else
+    mesh.cloud = vertexCloud<pcl::PointXYZ> (content, false, false);
+  mesh.polygons = std::move (content.polygons);
+  return mesh;
+}
+} // namespace
+
+pcl::PolygonMesh
+readObjFile (const std::string& path)
 {
   GeometryFileReader reader (path);
   ObjIndexRange ranges[3] = {
       {"vertex", "vertices"}, {"texture coordinate", "texture coordinates"}, {"normal", "normals"}};
+  ObjContent content;
   std::string line;
   std::vector<std::string_view> tokens;
   while (reader.nextLine (line)) {
@@ -116,6 +202,7 @@ validateObjFile (const std::string& path)
     const std::string_view keyword = tokens[0];
     if (keyword == "v") {
       checkVertex (reader, line, tokens);
+      addVertex (tokens, content);
       ++ranges[0].count;
     }
     else if (keyword == "vt") {
@@ -124,15 +211,22 @@ validateObjFile (const std::string& path)
     }
     else if (keyword == "vn") {
       checkNumbers (reader, tokens, 3, 3, "vertex normal");
+      addNumbers (tokens, 1, 3, content.normals);
       ++ranges[2].count;
     }
     else if (keyword == "f")
-      checkFace (reader, tokens, ranges);
-    else if ((keyword == "mtllib" || keyword == "usemtl") && tokens.size () < 2)
-      reader.failAtLine (std::string (keyword) + " has no name");
+      content.polygons.push_back (readFace (reader, tokens, ranges));
   }
   checkRangesAtEnd (reader, ranges);
+  return toPolygonMesh (std::move (content));
 }
 
+namespace validation
+{
+void
+validateObjFile (const std::string& path)
+{
+  readObjFile (path);
+}
 } // namespace validation
 } // namespace morphreg
