@@ -19,7 +19,7 @@ namespace detail
 namespace
 {
 constexpr int kMaxSteps = 6;           ///< plane refits along the ray before giving up
-constexpr double kConverged = 1e-3;    ///< mm: the hit moved less than this in the last refit
+constexpr double kConverged = 0.01;    ///< mm: the hit moved less than this in the last refit
 constexpr double kMinIncidence = 0.2;  ///< |cos| between the ray and the plane normal below which the ray misses
 constexpr int kSpacingNeighbour = 4;   ///< the local spacing: the distance to a point's 4th nearest other point
 constexpr double kSpacingFactor = 1.5; ///< a hit farther than this many spacings from every scan point misses
