@@ -471,7 +471,7 @@ alignScan (Icp& icp, const RegisterOptions& options, std::size_t scan_points)
 
 nlohmann::json
 registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
-              double model_seconds, std::ostream& out, std::ostream& warnings)
+              double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
   const auto scan = loadScan (options.scan);
@@ -505,6 +505,8 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
     screenshot_seconds = secondsSince (shot_start);
     report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
   }
+  if (follow_up)
+    follow_up (*scan, fitted, report);
   report["timings_s"] = {{"load", load_seconds},
                          {"fit", fit_seconds},
                          {"write_mesh", write_seconds},

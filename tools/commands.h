@@ -30,6 +30,8 @@ registerFitPhotosCommand (CLI::App& app);
 void
 registerModelInfoCommand (CLI::App& app);
 void
+registerResampleCommand (CLI::App& app);
+void
 registerMergeSummariesCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
@@ -39,6 +41,7 @@ registerCommands (CLI::App& app)
   registerSynthCommand (app);
   registerBuildModelCommand (app);
   registerRegisterCommand (app);
+  registerResampleCommand (app);
   registerFitPhotosCommand (app);
   registerMergeSummariesCommand (app);
   registerModelInfoCommand (app);

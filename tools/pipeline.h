@@ -1,13 +1,18 @@
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
 #include <morphreg/model/model_builder.h>
+#include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/model/morphable_model.h>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 
 #include <nlohmann/json.hpp>
 
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -83,14 +88,20 @@ public:
 nlohmann::json
 registerScanFile (const RegisterOptions& options);
 
+/** Work on a finished fit before its report is written (resample: the scan resampled into the model's topology):
+ *  given the scan (mm, the frame of the fit) and the fitted mesh, it adds its results to the report. */
+using FitFollowUp = std::function<void (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
+                                        nlohmann::json& report)>;
+
 /** registerScanFile() with the model already loaded (\a model_seconds it took, counted in the report's load time)
  *  and the viewer already open (nullptr: no screenshot); progress and results go to \a out, warnings (landmarks
- *  the model lacks) to \a warnings. The fitted mesh and then the report are written atomically, so a report on
- *  disk means complete outputs. Throws FitCheckFailure after writing them if the fit failed its checks.
+ *  the model lacks) to \a warnings; \a follow_up, if given, runs on the fit before the report is written. The fitted
+ *  mesh and then the report are written atomically, so a report on disk means complete outputs. Throws
+ *  FitCheckFailure after writing them if the fit failed its checks.
  */
 nlohmann::json
 registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
-              double model_seconds, std::ostream& out, std::ostream& warnings);
+              double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up = {});
 
 /** The report file of a registration: --report, else the --out path with .json. */
 std::string

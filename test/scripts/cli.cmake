@@ -20,7 +20,7 @@ endfunction()
 
 add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
 set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
-foreach(command synth build-model register fit-photos warp render demo model-info merge-summaries)
+foreach(command synth build-model register resample fit-photos warp render demo model-info merge-summaries)
   add_test(NAME CliTest.Help.${command} COMMAND morphreg_cli ${command} --help)
   set_tests_properties(CliTest.Help.${command} PROPERTIES
     PASS_REGULAR_EXPRESSION "Usage: .*${command}.*-q,--quiet.*-v,--verbose")
@@ -177,6 +177,22 @@ foreach(case "few;50 points, at least 100" "flat;the 200 points lie in a plane" 
   set_tests_properties(CliTest.RegisterRejectsScan_${kind} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 endforeach()
 morphreg_cli_expect_exit(RegisterBadUnitExits2 2 "--units" register --scan a.pcd --model b.h5 --units furlong)
+# resample: the small scan registered and resampled into the model's topology; a scan refused by the resampler (its
+# largest hole over the allowed share) exits 1 and leaves no output.
+add_test(NAME CliTest.ResampleSynthScan
+  COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|resample|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--quiet|--out|${cli_dir}/resampled.ply"
+          -DREPORT=${cli_dir}/resampled.json -DMESH=${cli_dir}/resampled.ply -DFIT=${cli_dir}/resampled_fit.ply
+          -DEXPECT_CODE=0 -DMIN_COVERAGE=0.5 -P ${cli_scripts}/check_resample.cmake)
+set_tests_properties(CliTest.ResampleSynthScan PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+add_test(NAME CliTest.ResampleRefusedScanLeavesNoOutput
+  COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|resample|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--max-hole-fraction|0.01|--quiet|--out|${cli_dir}/refused.ply"
+          -DREPORT=${cli_dir}/refused.json -DMESH=${cli_dir}/refused.ply -DFIT=${cli_dir}/refused_fit.ply
+          -DEXPECT_CODE=1 "-DEXPECT_TEXT=scan_0.pcd: cannot be resampled into the model's topology: ScanResampler: a hole of"
+          -P ${cli_scripts}/check_resample.cmake)
+set_tests_properties(CliTest.ResampleRefusedScanLeavesNoOutput PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+morphreg_cli_expect_exit(ResampleBadRayDistanceExits2 2 "--ray-distance" resample --scan a.pcd --model b.h5
+  --ray-distance 0)
+
 # The scan's unit: given (no rescaling, the report says "given"), or detected (a scan in metres, rescaled to mm).
 add_test(NAME CliTest.RegisterGivenUnitIsReported
   COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|register|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--units|mm|--quiet|--out|${cli_dir}/units_mm.ply"

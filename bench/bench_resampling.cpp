@@ -1,0 +1,184 @@
+// ScanResampler: an 11618-vertex reference (HeadGenerator resolution 44, smoothly offset from the truth by up to
+// 1.5 mm) resampled onto a ScanSimulator scan of about 80k points, as a point cloud (local planes) and as its
+// triangulated range image (ray casting through vtkStaticCellLocator); the search structures' build timed apart; and the
+// same ray queries (both directions from every reference vertex, first hit) through VTK's vtkOBBTree,
+// vtkStaticCellLocator and vtkModifiedBSPTree.
+#include <morphreg/mesh/mesh_normals.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/resampling/scan_resampler.h>
+#include <morphreg/synthetic/head_generator.h>
+#include <morphreg/synthetic/scan_simulator.h>
+
+#include <vtkCellArray.h>
+#include <vtkGenericCell.h>
+#include <vtkModifiedBSPTree.h>
+#include <vtkOBBTree.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStaticCellLocator.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace
+{
+constexpr double kReach = 5.0; ///< mm, the resampler's default search distance
+
+struct Fixture
+{
+  morphreg::TriangleMesh reference;
+  Eigen::Matrix3Xd normals;
+  morphreg::synthetic::SimulatedScan scan;
+  morphreg::TriangleMesh scan_mesh;
+  vtkSmartPointer<vtkPolyData> scan_data;
+
+  Fixture ()
+  {
+    const morphreg::synthetic::HeadGenerator generator (44);
+    const morphreg::TriangleMesh head = generator.sample (1001).mesh;
+    morphreg::synthetic::ScanSimulator::Parameters parameters;
+    parameters.angular_samples = 440;
+    parameters.range_mesh = true;
+    scan = morphreg::synthetic::ScanSimulator (parameters).scan (head, 1001);
+    scan_mesh = morphreg::fromPolygonMesh (scan.range_mesh, "range mesh");
+    reference = head;
+    reference.vertices = scan.head_to_scan * head.vertices;
+    const Eigen::Matrix3Xd truth_normals = morphreg::vertexNormals (reference);
+    for (Eigen::Index v = 0; v < reference.numVertices (); ++v) {
+      const Eigen::Vector3d p = reference.vertices.col (v);
+      reference.vertices.col (v) += 1.5 * std::sin (p.x () / 40.0) * std::cos (p.y () / 50.0) * truth_normals.col (v);
+    }
+    normals = morphreg::vertexNormals (reference);
+    scan_data = polyData (scan_mesh);
+  }
+
+  static vtkSmartPointer<vtkPolyData>
+  polyData (const morphreg::TriangleMesh& mesh)
+  {
+    auto points = vtkSmartPointer<vtkPoints>::New ();
+    points->SetDataTypeToDouble ();
+    for (Eigen::Index v = 0; v < mesh.numVertices (); ++v)
+      points->InsertNextPoint (mesh.vertices.col (v).data ());
+    auto cells = vtkSmartPointer<vtkCellArray>::New ();
+    for (Eigen::Index t = 0; t < mesh.numTriangles (); ++t) {
+      const vtkIdType ids[3] = {mesh.triangles (0, t), mesh.triangles (1, t), mesh.triangles (2, t)};
+      cells->InsertNextCell (3, ids);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New ();
+    data->SetPoints (points);
+    data->SetPolys (cells);
+    return data;
+  }
+};
+
+const Fixture&
+fixture ()
+{
+  static const Fixture f;
+  return f;
+}
+
+void
+sizeCounters (benchmark::State& state)
+{
+  const Fixture& f = fixture ();
+  state.counters["reference_vertices"] = static_cast<double> (f.reference.numVertices ());
+  state.counters["scan_points"] = static_cast<double> (f.scan.cloud->size ());
+  state.counters["scan_triangles"] = static_cast<double> (f.scan_mesh.numTriangles ());
+}
+
+/** Building the resampler's search structure: the cloud's k-d tree and spacings (0) or the mesh's cell locator (1). */
+void
+BM_ResamplerSetScan (benchmark::State& state)
+{
+  const Fixture& f = fixture ();
+  for (auto _ : state) {
+    morphreg::ScanResampler resampler;
+    if (state.range (0) == 0)
+      resampler.setInputScan (*f.scan.cloud);
+    else
+      resampler.setInputScan (f.scan_mesh);
+    benchmark::ClobberMemory ();
+  }
+  sizeCounters (state);
+}
+BENCHMARK (BM_ResamplerSetScan)->ArgName ("mesh")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+
+/** resample(): the rays and the hole fills, on the cloud (0) or the mesh (1); the parts as counters (ms). */
+void
+BM_Resample (benchmark::State& state)
+{
+  const Fixture& f = fixture ();
+  morphreg::ScanResampler resampler;
+  resampler.setInputReference (f.reference);
+  if (state.range (0) == 0)
+    resampler.setInputScan (*f.scan.cloud);
+  else
+    resampler.setInputScan (f.scan_mesh);
+  morphreg::ResamplingStatistics stats;
+  for (auto _ : state)
+    stats = resampler.resample ().statistics;
+  sizeCounters (state);
+  state.counters["rays_ms"] = 1e3 * stats.ray_seconds;
+  state.counters["fill_ms"] = 1e3 * stats.fill_seconds;
+  state.counters["coverage"] = stats.coverage;
+  state.counters["holes"] = static_cast<double> (stats.holes.size ());
+}
+BENCHMARK (BM_Resample)->ArgName ("mesh")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+
+/** A VTK locator over the scan mesh: 0 vtkOBBTree, 1 vtkStaticCellLocator, 2 vtkModifiedBSPTree. */
+vtkSmartPointer<vtkAbstractCellLocator>
+makeLocator (int kind)
+{
+  vtkSmartPointer<vtkAbstractCellLocator> locator;
+  if (kind == 0)
+    locator = vtkSmartPointer<vtkOBBTree>::New ();
+  else if (kind == 1)
+    locator = vtkSmartPointer<vtkStaticCellLocator>::New ();
+  else
+    locator = vtkSmartPointer<vtkModifiedBSPTree>::New ();
+  locator->SetDataSet (fixture ().scan_data);
+  locator->LazyEvaluationOff (); // vtkModifiedBSPTree would otherwise build on its first query
+  locator->BuildLocator ();
+  return locator;
+}
+
+void
+BM_VtkLocatorBuild (benchmark::State& state)
+{
+  for (auto _ : state)
+    benchmark::DoNotOptimize (makeLocator (static_cast<int> (state.range (0))).Get ());
+  sizeCounters (state);
+}
+BENCHMARK (BM_VtkLocatorBuild)->ArgName ("locator")->DenseRange (0, 2)->Unit (benchmark::kMillisecond)->UseRealTime ();
+
+/** The resampler's ray queries without its normal test: from every reference vertex along +n and -n within the
+ *  reach, the first hit of each; the locator as in makeLocator. */
+void
+BM_VtkLocatorRays (benchmark::State& state)
+{
+  const Fixture& f = fixture ();
+  const auto locator = makeLocator (static_cast<int> (state.range (0)));
+  auto cell = vtkSmartPointer<vtkGenericCell>::New ();
+  int hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    for (Eigen::Index v = 0; v < f.reference.numVertices (); ++v)
+      for (const double sign : {1.0, -1.0}) {
+        const Eigen::Vector3d from = f.reference.vertices.col (v);
+        const Eigen::Vector3d to = from + sign * kReach * f.normals.col (v);
+        double t = 0.0, x[3], pcoords[3];
+        int sub_id = 0;
+        vtkIdType cell_id = -1;
+        hits += locator->IntersectWithLine (from.data (), to.data (), 0.0, t, x, pcoords, sub_id, cell_id, cell);
+      }
+  }
+  sizeCounters (state);
+  state.counters["hits"] = hits;
+}
+BENCHMARK (BM_VtkLocatorRays)->ArgName ("locator")->DenseRange (0, 2)->Unit (benchmark::kMillisecond)->UseRealTime ();
+} // namespace
+
+BENCHMARK_MAIN ();

@@ -1,0 +1,389 @@
+#include "hole_filling.h"
+#include "scan_surface.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/mesh/mesh_normals.h>
+#include <morphreg/mesh/mesh_topology.h>
+#include <morphreg/resampling/scan_resampler.h>
+
+#include <pcl/common/io.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+namespace morphreg
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+/** Sizes further apart than this factor are another unit (cm, inches and m are 10, 25.4 and 1000 times mm), not a
+ *  partial scan of the same head. */
+constexpr double kMaxSizeRatio = 4.0;
+
+double
+secondsSince (Clock::time_point start)
+{
+  return std::chrono::duration<double> (Clock::now () - start).count ();
+}
+
+/** RMS distance of the columns from their centroid. */
+double
+rmsRadius (const Eigen::Matrix3Xd& points)
+{
+  const Eigen::Vector3d centroid = points.rowwise ().mean ();
+  return std::sqrt ((points.colwise () - centroid).colwise ().squaredNorm ().mean ());
+}
+
+void
+requireComparableSize (const Eigen::Matrix3Xd& reference, const Eigen::Matrix3Xd& scan)
+{
+  const double ratio = rmsRadius (scan) / std::max (rmsRadius (reference), std::numeric_limits<double>::min ());
+  if (ratio <= kMaxSizeRatio && ratio >= 1.0 / kMaxSizeRatio)
+    return;
+  std::ostringstream message;
+  message << "ScanResampler: the scan is " << ratio << " times the reference's size; are they in different units "
+          << "(both must be in mm)?";
+  throw InvalidInputError (message.str ());
+}
+
+/** Each vertex's share of the surface: a third of the area of each triangle it belongs to. */
+Eigen::VectorXd
+vertexAreas (const TriangleMesh& mesh)
+{
+  const Eigen::VectorXd triangle = triangleAreas (mesh);
+  Eigen::VectorXd areas = Eigen::VectorXd::Zero (mesh.numVertices ());
+  for (Eigen::Index t = 0; t < mesh.numTriangles (); ++t)
+    for (int k = 0; k < 3; ++k)
+      areas[mesh.triangles (k, t)] += triangle[t] / 3.0;
+  return areas;
+}
+
+double
+median (std::vector<double> values)
+{
+  if (values.empty ())
+    return 0.0;
+  const auto middle = values.begin () + static_cast<std::ptrdiff_t> (values.size () / 2);
+  std::nth_element (values.begin (), middle, values.end ());
+  return *middle;
+}
+
+/** Per triangle: its normal turned by more than 90 degrees from the reference's (or it became degenerate). */
+std::vector<char>
+foldedTriangles (const TriangleMesh& reference, const TriangleMesh& resampled)
+{
+  const Eigen::Matrix3Xd before = faceNormals (reference), after = faceNormals (resampled);
+  std::vector<char> folded (static_cast<std::size_t> (reference.numTriangles ()));
+  for (Eigen::Index t = 0; t < reference.numTriangles (); ++t)
+    folded[t] = before.col (t).dot (after.col (t)) <= 0.0 ? 1 : 0;
+  return folded;
+}
+
+/** Marks missed the hits whose displacement along the normal differs by more than \a jump (mm) from the median of
+ *  their observed neighbours' (a ray that met another surface: an ear's back, an outlier's plane), and those with
+ *  fewer observed neighbours than missed ones (ragged hole borders and islands in holes, where the scan's edge is
+ *  least reliable). */
+void
+rejectInconsistentHits (const MeshTopology& topology, const Eigen::Matrix3Xd& offsets, const Eigen::Matrix3Xd& normals,
+                        double jump, std::vector<char>& missed)
+{
+  const Eigen::VectorXd along = offsets.cwiseProduct (normals).colwise ().sum ().transpose ();
+  std::vector<char> rejected (missed.size (), 0);
+  std::vector<double> around;
+  for (std::size_t v = 0; v < missed.size (); ++v) {
+    if (missed[v])
+      continue;
+    around.clear ();
+    const auto [begin, end] = topology.neighbours (static_cast<int> (v));
+    for (const int* n = begin; n != end; ++n)
+      if (!missed[*n])
+        around.push_back (along[*n]);
+    const bool isolated = 2 * static_cast<int> (around.size ()) < topology.valence (static_cast<int> (v));
+    rejected[v] = isolated || std::abs (along[v] - median (around)) > jump ? 1 : 0;
+  }
+  for (std::size_t v = 0; v < missed.size (); ++v)
+    missed[v] = missed[v] || rejected[v];
+}
+
+/** The holes of a resampling, largest first: their vertices and their statistics. */
+struct Holes
+{
+  std::vector<std::vector<int>> vertices;
+  std::vector<ResamplingHole> holes;
+};
+
+/** The connected misses as holes, largest (by area) first; throws if the largest covers more than \a max_fraction
+ *  of the reference's area. */
+Holes
+findHoles (const MeshTopology& topology, const Eigen::VectorXd& areas, const std::vector<char>& missed,
+           double max_fraction)
+{
+  std::vector<std::vector<int>> components = detail::connectedMisses (topology, missed);
+  std::vector<double> component_area;
+  for (const auto& component : components) {
+    double area = 0.0;
+    for (const int v : component)
+      area += areas[v];
+    component_area.push_back (area);
+  }
+  std::vector<std::size_t> order (components.size ());
+  std::iota (order.begin (), order.end (), 0);
+  std::sort (order.begin (), order.end (),
+             [&] (std::size_t a, std::size_t b) { return component_area[a] > component_area[b]; });
+  Holes result;
+  for (const std::size_t k : order) {
+    ResamplingHole hole;
+    hole.vertices = static_cast<int> (components[k].size ());
+    hole.area = component_area[k];
+    result.holes.push_back (hole);
+    result.vertices.push_back (std::move (components[k]));
+  }
+  const double total = areas.sum ();
+  if (!result.holes.empty () && result.holes.front ().area > max_fraction * total) {
+    std::ostringstream message;
+    message << "ScanResampler: a hole of " << result.holes.front ().vertices << " vertices covers "
+            << 100.0 * result.holes.front ().area / total << " % of the reference's surface (at most "
+            << 100.0 * max_fraction << " % may be filled); the scan covers too little of the reference";
+    throw InvalidInputError (message.str ());
+  }
+  return result;
+}
+
+/** Fills every hole (see detail::fillHole), recording its anchors and largest fill. */
+void
+fillHoles (const MeshTopology& topology, const Eigen::Matrix3Xd& reference, const std::vector<char>& missed, int rings,
+           double lambda, Holes& holes, Eigen::Matrix3Xd& displacement)
+{
+  for (std::size_t h = 0; h < holes.holes.size (); ++h) {
+    const std::vector<int>& hole = holes.vertices[h];
+    try {
+      holes.holes[h].ring_vertices = detail::fillHole (topology, reference, hole, missed, rings, lambda, displacement);
+    }
+    catch (const Error& e) {
+      throw InvalidInputError ("ScanResampler: the hole of " + std::to_string (hole.size ()) +
+                               " vertices around reference vertex " + std::to_string (hole.front ()) +
+                               " cannot be filled from the observed vertices around it: " + e.what ());
+    }
+    for (const int v : hole)
+      holes.holes[h].max_fill = std::max (holes.holes[h].max_fill, displacement.col (v).norm ());
+  }
+}
+
+/** Counts the folded triangles, in all and per hole (those with a vertex in it). */
+void
+countFolds (const TriangleMesh& reference, const TriangleMesh& resampled, Holes& holes, ResamplingStatistics& stats)
+{
+  std::vector<int> hole_of (static_cast<std::size_t> (reference.numVertices ()), -1);
+  for (std::size_t h = 0; h < holes.vertices.size (); ++h)
+    for (const int v : holes.vertices[h])
+      hole_of[v] = static_cast<int> (h);
+  const std::vector<char> folded = foldedTriangles (reference, resampled);
+  for (Eigen::Index t = 0; t < reference.numTriangles (); ++t) {
+    if (!folded[t])
+      continue;
+    ++stats.folded_triangles;
+    int counted[3] = {-1, -1, -1};
+    for (int k = 0; k < 3; ++k) {
+      const int h = hole_of[reference.triangles (k, t)];
+      if (h >= 0 && h != counted[0] && h != counted[1]) {
+        ++holes.holes[h].folded_triangles;
+        counted[k] = h;
+      }
+    }
+  }
+}
+} // namespace
+
+ScanResampler::ScanResampler () = default;
+ScanResampler::~ScanResampler () = default;
+
+void
+ScanResampler::setInputReference (const TriangleMesh& reference)
+{
+  validateMesh (reference, "ScanResampler reference");
+  reference_ = reference;
+}
+
+void
+ScanResampler::setInputScan (const pcl::PointCloud<pcl::PointNormal>& scan)
+{
+  Eigen::Matrix3Xd points (3, scan.size ()), normals (3, scan.size ());
+  Eigen::Index kept = 0;
+  for (const auto& point : scan)
+    if (std::isfinite (point.x) && std::isfinite (point.y) && std::isfinite (point.z)) {
+      points.col (kept) = point.getVector3fMap ().cast<double> ();
+      normals.col (kept++) = point.getNormalVector3fMap ().cast<double> ().normalized ();
+    }
+  if (kept < neighbours_)
+    throw InvalidInputError ("ScanResampler: the scan has " + std::to_string (kept) + " finite points; at least " +
+                             std::to_string (neighbours_) + " are needed");
+  surface_ = detail::makeCloudSurface (points.leftCols (kept), normals.leftCols (kept), neighbours_);
+}
+
+void
+ScanResampler::setInputScan (const pcl::PointCloud<pcl::PointXYZ>& scan)
+{
+  pcl::PointCloud<pcl::PointNormal> with_normals;
+  pcl::copyPointCloud (scan, with_normals);
+  for (auto& point : with_normals)
+    point.getNormalVector3fMap ().setConstant (std::numeric_limits<float>::quiet_NaN ());
+  setInputScan (with_normals);
+}
+
+void
+ScanResampler::setInputScan (const TriangleMesh& scan)
+{
+  validateMesh (scan, "ScanResampler scan");
+  surface_ = detail::makeMeshSurface (scan);
+}
+
+void
+ScanResampler::setMaxDistance (double distance)
+{
+  if (!(distance > 0.0) || !std::isfinite (distance))
+    throw InvalidInputError ("ScanResampler::setMaxDistance: " + std::to_string (distance) +
+                             " is not a positive "
+                             "distance (mm)");
+  max_distance_ = distance;
+}
+
+void
+ScanResampler::setNormalAgreement (double degrees)
+{
+  if (!(degrees > 0.0 && degrees <= 180.0))
+    throw InvalidInputError ("ScanResampler::setNormalAgreement: " + std::to_string (degrees) +
+                             " is not an angle in (0, 180] degrees");
+  normal_agreement_deg_ = degrees;
+}
+
+void
+ScanResampler::setRingWidth (int rings)
+{
+  if (rings < 1)
+    throw InvalidInputError ("ScanResampler::setRingWidth: " + std::to_string (rings) + " rings; at least 1");
+  ring_width_ = rings;
+}
+
+void
+ScanResampler::setMaxHoleFraction (double fraction)
+{
+  if (!(fraction > 0.0 && fraction <= 1.0))
+    throw InvalidInputError ("ScanResampler::setMaxHoleFraction: " + std::to_string (fraction) +
+                             " is not a fraction in (0, 1]");
+  max_hole_fraction_ = fraction;
+}
+
+void
+ScanResampler::setNeighbours (int k)
+{
+  if (k < 4)
+    throw InvalidInputError ("ScanResampler::setNeighbours: " + std::to_string (k) + " neighbours; at least 4");
+  neighbours_ = k;
+}
+
+void
+ScanResampler::setMaxJump (double jump)
+{
+  if (!(jump > 0.0))
+    throw InvalidInputError ("ScanResampler::setMaxJump: " + std::to_string (jump) +
+                             " is not a positive distance (mm)");
+  max_jump_ = jump;
+}
+
+void
+ScanResampler::setFillRegularization (double lambda)
+{
+  if (!(lambda >= 0.0) || !std::isfinite (lambda))
+    throw InvalidInputError ("ScanResampler::setFillRegularization: " + std::to_string (lambda) +
+                             " is not a weight >= 0");
+  fill_regularization_ = lambda;
+}
+
+Eigen::Matrix3Xd
+ScanResampler::castRays (const Eigen::Matrix3Xd& normals) const
+{
+  const double min_cos = std::cos (normal_agreement_deg_ * M_PI / 180.0);
+  const Eigen::Index n = reference_.numVertices ();
+  Eigen::Matrix3Xd hits = Eigen::Matrix3Xd::Constant (3, n, std::numeric_limits<double>::quiet_NaN ());
+#pragma omp parallel for schedule(dynamic, 256) if (surface_->threadSafe())
+  for (Eigen::Index v = 0; v < n; ++v) {
+    Eigen::Vector3d hit;
+    if (normals.col (v).squaredNorm () > 0.0 &&
+        surface_->intersect (reference_.vertices.col (v), normals.col (v), max_distance_, min_cos, hit))
+      hits.col (v) = hit;
+  }
+  return hits;
+}
+
+ResamplingResult
+ScanResampler::resample () const
+{
+  if (reference_.numVertices () == 0)
+    throw InvalidInputError ("ScanResampler: no reference mesh (setInputReference)");
+  if (!surface_)
+    throw InvalidInputError ("ScanResampler: no scan (setInputScan)");
+  requireComparableSize (reference_.vertices, surface_->points ());
+  ResamplingResult result;
+  ResamplingStatistics& stats = result.statistics;
+  const Eigen::Index n = reference_.numVertices ();
+  const Eigen::Matrix3Xd normals = vertexNormals (reference_);
+  const auto ray_start = Clock::now ();
+  const Eigen::Matrix3Xd hits = castRays (normals);
+  const MeshTopology topology (reference_);
+  std::vector<char> missed (static_cast<std::size_t> (n));
+  result.displacement = hits - reference_.vertices;
+  for (Eigen::Index v = 0; v < n; ++v)
+    missed[v] = result.displacement.col (v).allFinite () ? 0 : 1;
+  rejectInconsistentHits (topology, result.displacement, normals, max_jump_, missed);
+  std::vector<double> moved;
+  for (Eigen::Index v = 0; v < n; ++v)
+    if (missed[v])
+      result.displacement.col (v).setZero ();
+    else
+      moved.push_back (result.displacement.col (v).norm ());
+  stats.ray_seconds = secondsSince (ray_start);
+  stats.vertices = static_cast<int> (n);
+  stats.observed = static_cast<int> (moved.size ());
+  stats.filled = stats.vertices - stats.observed;
+  if (stats.observed == 0)
+    throw InvalidInputError ("ScanResampler: no reference vertex meets the scan within " +
+                             std::to_string (max_distance_) +
+                             " mm along its normal; the scan and the reference do "
+                             "not overlap (is the reference fitted to this scan, in its frame?)");
+  stats.coverage = static_cast<double> (stats.observed) / stats.vertices;
+  stats.median_displacement = median (moved);
+  fillAndSummarise (topology, missed, result);
+  if (!result.mesh.vertices.allFinite ())
+    throw NumericalError ("ScanResampler: the resampled mesh has non-finite vertices");
+  return result;
+}
+
+void
+ScanResampler::fillAndSummarise (const MeshTopology& topology, const std::vector<char>& missed,
+                                 ResamplingResult& result) const
+{
+  ResamplingStatistics& stats = result.statistics;
+  const auto fill_start = Clock::now ();
+  const Eigen::VectorXd areas = vertexAreas (reference_);
+  Holes holes = findHoles (topology, areas, missed, max_hole_fraction_);
+  fillHoles (topology, reference_.vertices, missed, ring_width_, fill_regularization_, holes, result.displacement);
+  stats.fill_seconds = secondsSince (fill_start);
+
+  result.mesh = TriangleMesh{reference_.vertices + result.displacement, reference_.triangles};
+  result.state.resize (missed.size ());
+  double observed_area = 0.0;
+  for (std::size_t v = 0; v < missed.size (); ++v) {
+    result.state[v] = missed[v] ? ResampledVertex::filled : ResampledVertex::observed;
+    observed_area += missed[v] ? 0.0 : areas[static_cast<Eigen::Index> (v)];
+  }
+  stats.observed_area = observed_area / areas.sum ();
+  countFolds (reference_, result.mesh, holes, stats);
+  stats.largest_hole_area = holes.holes.empty () ? 0.0 : holes.holes.front ().area / areas.sum ();
+  stats.holes = std::move (holes.holes);
+}
+} // namespace morphreg

@@ -1,0 +1,188 @@
+// ScanResampler on synthetic heads with known truth: mesh scans and simulated laser scans (point clouds), the holes'
+// fills, the settings and bad input; and the accuracy protocol of raw-scan model building (unseen heads registered
+// with a model of a disjoint population, then resampled).
+#include <morphreg/common/error.h>
+#include <morphreg/mesh/mesh_normals.h>
+#include <morphreg/mesh/triangle_locator.h>
+#include <morphreg/model/model_builder.h>
+#include <morphreg/registration/morphable_icp.h>
+#include <morphreg/resampling/scan_resampler.h>
+#include <morphreg/synthetic/head_generator.h>
+#include <morphreg/synthetic/scan_simulator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace
+{
+using morphreg::ResampledVertex;
+using morphreg::ScanResampler;
+using morphreg::TriangleMesh;
+
+/** RMS distance (mm) from the vertices in \a state to the surface \a truth. */
+double
+rmsToSurface (const morphreg::ResamplingResult& result, ResampledVertex state, const TriangleMesh& truth)
+{
+  const morphreg::TriangleLocator locator (truth);
+  double sum = 0.0;
+  int count = 0;
+  for (Eigen::Index v = 0; v < result.mesh.numVertices (); ++v)
+    if (result.state[v] == state) {
+      sum += std::pow (locator.closestPoint (result.mesh.vertices.col (v)).distance, 2);
+      ++count;
+    }
+  return count ? std::sqrt (sum / count) : 0.0;
+}
+
+/** \a mesh with every vertex moved along its normal by a smooth offset of up to \a amplitude mm. */
+TriangleMesh
+smoothlyOffset (const TriangleMesh& mesh, double amplitude)
+{
+  const Eigen::Matrix3Xd normals = morphreg::vertexNormals (mesh);
+  TriangleMesh offset = mesh;
+  for (Eigen::Index v = 0; v < mesh.numVertices (); ++v) {
+    const Eigen::Vector3d p = mesh.vertices.col (v);
+    offset.vertices.col (v) += amplitude * std::sin (p.x () / 40.0) * std::cos (p.y () / 50.0) * normals.col (v);
+  }
+  return offset;
+}
+
+/** \a mesh without the triangles with a vertex beyond \a height along \a direction (e.g. +Y: a crown hole). */
+TriangleMesh
+cutBeyond (const TriangleMesh& mesh, const Eigen::Vector3d& direction, double height)
+{
+  TriangleMesh cut = mesh;
+  Eigen::Index kept = 0;
+  for (Eigen::Index t = 0; t < mesh.numTriangles (); ++t) {
+    bool above = false;
+    for (int k = 0; k < 3; ++k)
+      above = above || direction.dot (mesh.vertices.col (mesh.triangles (k, t))) > height;
+    if (!above)
+      cut.triangles.col (kept++) = mesh.triangles.col (t);
+  }
+  cut.triangles.conservativeResize (3, kept);
+  return cut;
+}
+
+const morphreg::synthetic::HeadGenerator&
+coarseGenerator ()
+{
+  static const morphreg::synthetic::HeadGenerator generator (20);
+  return generator;
+}
+
+TEST (ScanResamplerTest, MeshScanObservedVerticesLandOnItAndTheCrownIsFilledWithoutFolds)
+{
+  const TriangleMesh truth = coarseGenerator ().sample (3).mesh;
+  const double top = truth.vertices.row (1).maxCoeff ();
+  ScanResampler resampler;
+  resampler.setInputReference (smoothlyOffset (truth, 1.5));
+  resampler.setInputScan (cutBeyond (truth, Eigen::Vector3d::UnitY (), top - 40.0));
+  const morphreg::ResamplingResult result = resampler.resample ();
+  const auto& stats = result.statistics;
+  ASSERT_EQ (result.mesh.numVertices (), truth.numVertices ());
+  EXPECT_EQ (result.mesh.triangles, truth.triangles);
+  EXPECT_TRUE (result.mesh.vertices.allFinite ());
+  EXPECT_EQ (stats.observed + stats.filled, stats.vertices);
+  EXPECT_GT (stats.filled, 0);
+  EXPECT_GE (stats.holes.size (), 1u);
+  EXPECT_NEAR (stats.coverage, static_cast<double> (stats.observed) / stats.vertices, 1e-12);
+  EXPECT_LT (stats.largest_hole_area, 0.5);
+  EXPECT_EQ (stats.folded_triangles, 0);
+  const double observed = rmsToSurface (result, ResampledVertex::observed, truth);
+  const double filled = rmsToSurface (result, ResampledVertex::filled, truth);
+  std::printf ("[ mesh scan ] coverage %.3f, %zu holes, observed RMS %.4f mm, filled RMS %.3f mm\n", stats.coverage,
+               stats.holes.size (), observed, filled);
+  EXPECT_LT (observed, 1e-3) << "observed vertices lie on the scan's triangles";
+  EXPECT_LT (filled, 0.5) << "the smooth offset is interpolated from the crown's border";
+  double largest_observed_move = 0.0;
+  for (Eigen::Index v = 0; v < truth.numVertices (); ++v)
+    if (result.state[v] == ResampledVertex::observed)
+      largest_observed_move = std::max (largest_observed_move, result.displacement.col (v).norm ());
+  EXPECT_LT (largest_observed_move, 1.5 + 1e-6) << "no observed vertex moves farther than the offset";
+}
+
+TEST (ScanResamplerTest, SimulatedLaserScanIsResampledCloseToTheTruth)
+{
+  const morphreg::synthetic::HeadGenerator generator;
+  const TriangleMesh head = generator.sample (1001).mesh;
+  const auto scan = morphreg::synthetic::ScanSimulator ().scan (head, 5);
+  TriangleMesh posed = head;
+  posed.vertices = scan.head_to_scan * head.vertices;
+  ScanResampler resampler;
+  resampler.setInputReference (smoothlyOffset (posed, 1.5));
+  resampler.setInputScan (*scan.cloud);
+  const morphreg::ResamplingResult result = resampler.resample ();
+  const double observed = rmsToSurface (result, ResampledVertex::observed, posed);
+  const double filled = rmsToSurface (result, ResampledVertex::filled, posed);
+  std::printf ("[ laser scan ] coverage %.3f, %zu holes (largest %.3f of the area), observed RMS %.3f mm, filled "
+               "RMS %.3f mm, folded %d, rays %.3f s, fill %.3f s\n",
+               result.statistics.coverage, result.statistics.holes.size (), result.statistics.largest_hole_area,
+               observed, filled, result.statistics.folded_triangles, result.statistics.ray_seconds,
+               result.statistics.fill_seconds);
+  EXPECT_GT (result.statistics.coverage, 0.6);
+  EXPECT_LT (observed, 0.13) << "the local planes average the 0.2 mm range noise";
+  EXPECT_LT (filled, 0.6);
+  EXPECT_EQ (result.statistics.folded_triangles, 0);
+
+  // Without normals the planes' unoriented normals are tested: the same vertices are observed.
+  pcl::PointCloud<pcl::PointXYZ> bare;
+  pcl::copyPointCloud (*scan.cloud, bare);
+  resampler.setInputScan (bare);
+  const morphreg::ResamplingResult unoriented = resampler.resample ();
+  EXPECT_NEAR (unoriented.statistics.coverage, result.statistics.coverage, 0.01);
+}
+
+TEST (ScanResamplerTest, BadInputIsAClearErrorNeverNaN)
+{
+  const TriangleMesh truth = coarseGenerator ().sample (4).mesh;
+  ScanResampler resampler;
+  EXPECT_THROW (resampler.resample (), morphreg::InvalidInputError) << "no inputs";
+  resampler.setInputReference (truth);
+  EXPECT_THROW (resampler.resample (), morphreg::InvalidInputError) << "no scan";
+
+  TriangleMesh far = truth;
+  far.vertices.colwise () += Eigen::Vector3d (1000.0, 0.0, 0.0);
+  resampler.setInputScan (far);
+  EXPECT_THROW (resampler.resample (), morphreg::InvalidInputError) << "no overlap";
+
+  TriangleMesh metres = truth;
+  metres.vertices *= 1e-3;
+  resampler.setInputScan (metres);
+  try {
+    resampler.resample ();
+    ADD_FAILURE () << "a scan in metres was resampled";
+  }
+  catch (const morphreg::InvalidInputError& e) {
+    EXPECT_NE (std::string (e.what ()).find ("units"), std::string::npos) << e.what ();
+  }
+
+  // Only the face's front (+Z) is scanned: the rest, one hole, is more than half of the head.
+  const double front = truth.vertices.row (2).maxCoeff ();
+  resampler.setInputScan (cutBeyond (truth, -Eigen::Vector3d::UnitZ (), 30.0 - front));
+  try {
+    resampler.resample ();
+    ADD_FAILURE () << "a hole over most of the head was filled";
+  }
+  catch (const morphreg::InvalidInputError& e) {
+    EXPECT_NE (std::string (e.what ()).find ("covers"), std::string::npos) << e.what ();
+  }
+
+  EXPECT_THROW (resampler.setMaxDistance (0.0), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setMaxDistance (std::nan ("")), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setNormalAgreement (0.0), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setNormalAgreement (181.0), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setRingWidth (0), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setMaxHoleFraction (0.0), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setNeighbours (3), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setFillRegularization (-1.0), morphreg::InvalidInputError);
+  EXPECT_THROW (resampler.setMaxJump (0.0), morphreg::InvalidInputError);
+  pcl::PointCloud<pcl::PointXYZ> few;
+  few.resize (5);
+  EXPECT_THROW (resampler.setInputScan (few), morphreg::InvalidInputError);
+}
+} // namespace
