@@ -5,6 +5,7 @@
 
 #include "support/expect_error.h"
 #include "support/temp_directory.h"
+#include "support/text_file.h"
 #include "support/test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -17,15 +18,10 @@
 using morphreg::FileFormat;
 using morphreg::test::expectErrorContaining;
 using morphreg::test::TempDirectory;
+using morphreg::test::writeText;
 
 namespace
 {
-void
-writeText (const std::string& path, const std::string& text)
-{
-  std::ofstream (path, std::ios::binary) << text;
-}
-
 /** A binary STL of \a triangles zero triangles whose 80-byte header starts with \a header_text. */
 std::string
 binaryStl (std::uint32_t triangles, const std::string& header_text)

@@ -6,6 +6,7 @@
 
 #include "support/expect_error.h"
 #include "support/temp_directory.h"
+#include "support/text_file.h"
 #include "support/test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -22,15 +23,10 @@
 using morphreg::FileFormat;
 using morphreg::test::expectErrorContaining;
 using morphreg::test::TempDirectory;
+using morphreg::test::writeText;
 
 namespace
 {
-void
-writeText (const std::string& path, const std::string& text)
-{
-  std::ofstream (path, std::ios::binary) << text;
-}
-
 std::string
 readBytes (const std::string& path)
 {

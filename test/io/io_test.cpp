@@ -3,6 +3,7 @@
 #include <morphreg/io/mesh_io.h>
 
 #include "support/temp_directory.h"
+#include "support/text_file.h"
 #include "support/test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <fstream>
 
 using morphreg::test::TempDirectory;
+using morphreg::test::writeText;
 
 namespace
 {
@@ -29,12 +31,6 @@ makeCloud ()
     cloud.push_back (p);
   }
   return cloud;
-}
-
-void
-writeText (const std::string& path, const std::string& text)
-{
-  std::ofstream (path) << text;
 }
 
 /** Expects \a call to throw an error of type E whose message names \a path. */

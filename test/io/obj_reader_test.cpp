@@ -5,11 +5,10 @@
 #include <morphreg/io/mesh_io.h>
 
 #include "support/temp_directory.h"
+#include "support/text_file.h"
 
 #include <gtest/gtest.h>
 #include <pcl/conversions.h>
-
-#include <fstream>
 
 using morphreg::test::TempDirectory;
 
@@ -19,7 +18,7 @@ std::string
 writeObj (const TempDirectory& dir, const std::string& name, const std::string& text)
 {
   const std::string path = dir.file (name);
-  std::ofstream (path, std::ios::binary) << text;
+  morphreg::test::writeText (path, text);
   return path;
 }
 

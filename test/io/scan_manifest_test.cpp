@@ -3,6 +3,7 @@
 
 #include "support/expect_error.h"
 #include "support/temp_directory.h"
+#include "support/text_file.h"
 
 #include <gtest/gtest.h>
 
@@ -12,16 +13,10 @@
 #include <set>
 
 using morphreg::test::TempDirectory;
+using morphreg::test::writeText;
 
 namespace
 {
-void
-writeText (const std::string& path, const std::string& text)
-{
-  std::filesystem::create_directories (std::filesystem::path (path).parent_path ());
-  std::ofstream (path) << text;
-}
-
 /** Expects loading \a path to throw IoError (or FormatError) with a message containing \a fragment. */
 void
 expectListError (const std::string& path, const std::string& fragment)
