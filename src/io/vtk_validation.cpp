@@ -169,6 +169,8 @@ checkClassicCells (VtkSource& source, long long points, const std::string& secti
   long long used = 0;
   for (long long c = 0; c < cells; ++c) {
     const long long corners = nextInteger (source, 4, section);
+    if (corners == 0)
+      failInData (source, section + " cell " + std::to_string (c) + " has no indices");
     if (corners < 0 || used + 1 + corners > size)
       failInData (source, section + " cell " + std::to_string (c) + " has " + std::to_string (corners) +
                               " indices, beyond the " + std::to_string (size) + " values the section's header claims");
@@ -346,12 +348,14 @@ checkSections (VtkSource& source)
     if (keyword == "POINTS" && points < 0)
       points = checkPoints (source);
     else if (std::find (cell_sections.begin (), cell_sections.end (), keyword) != cell_sections.end () && points >= 0) {
+      if (source.tokens.size () != 3) // VTK's reader misreads what follows extra words (found by fuzzing)
+        source.reader.failAtLine ("expected '" + keyword + " <cells> <size>'");
       const long long cells = headerCount (source, 1, keyword + " cell count");
       const long long size = headerCount (source, 2, keyword + " size");
       source.major_version >= 5 ? checkOffsetCells (source, points, keyword, cells, size)
                                 : checkClassicCells (source, points, keyword, cells, size);
     }
-    else if (keyword == "METADATA")
+    else if (keyword == "METADATA" && source.tokens.size () == 1)
       skipMetadata (source);
     else if ((keyword == "POINT_DATA" || keyword == "CELL_DATA") && points >= 0)
       return checkAttributes (source);
