@@ -42,24 +42,26 @@ sanitize() {
   nice -n 10 ctest --output-on-failure -j2 --timeout 3600 -E '^PackageTest\.'
 }
 
-# Runs one fuzz target for $1 seconds: new inputs go to a scratch corpus and are merged into the committed one only
-# if they add coverage; crashes, leaks, timeouts and out-of-memory inputs are written to fuzz/crashes/<target>/.
+# Runs one fuzz target for $1 seconds over its committed corpus and its scratch corpus (build-fuzz/corpus/<target>/,
+# kept between runs), where new inputs go. Crashes, leaks, timeouts and out-of-memory inputs are written to
+# fuzz/crashes/<target>/. Then the scratch inputs that reach code the committed corpus does not are merged into it;
+# counting edges only (-use_counters=0) keeps the committed corpus small.
 fuzz_target() {
   local seconds=$1 target=$2
   local binary="build-fuzz/fuzz/fuzz_$target" corpus="fuzz/corpus/$target" scratch="build-fuzz/corpus/$target"
   local log="build-fuzz/logs/$target.log" crashes="fuzz/crashes/$target"
   mkdir -p "$scratch" "$crashes" "$(dirname "$log")"
   local status=0
-  nice -n 10 "$binary" "$scratch" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  /usr/bin/time -f 'cpu %U s user + %S s system' -o "$log.time" \
+    nice -n 10 "$binary" "$scratch" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -artifact_prefix="$crashes/" -print_final_stats=1 >"$log" 2>&1 || status=$?
-  nice -n 10 "$binary" -merge=1 "$corpus" "$scratch" >>"$log" 2>&1
+  nice -n 10 "$binary" -merge=1 -use_counters=0 "$corpus" "$scratch" >"$log.merge" 2>&1
   rmdir --ignore-fail-on-non-empty "$crashes"
-  local done_line
-  done_line=$(grep -E '^#[0-9]+ +(DONE|pulse|NEW|REDUCE|INITED)' "$log" | tail -1 || true)
-  printf '%-15s status %d  %s  execs %s  corpus %d files  findings %d\n' "$target" "$status" \
-    "$(grep -oE 'cov: [0-9]+ ft: [0-9]+' <<<"$done_line" || echo 'cov: ? ft: ?')" \
+  printf '%-15s status %d  %s  execs %s  %s  corpus %d files %d bytes  findings %d\n' "$target" "$status" \
+    "$(grep -oE 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || echo 'cov: ? ft: ?')" \
     "$(grep -oE 'number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+' || echo '?')" \
-    "$(find "$corpus" -type f | wc -l)" "$(find "$crashes" -type f 2>/dev/null | wc -l)"
+    "$(tail -1 "$log.time")" "$(find "$corpus" -type f | wc -l)" "$(cat "$corpus"/* | wc -c)" \
+    "$(find "$crashes" -type f 2>/dev/null | wc -l)"
   return "$status"
 }
 
