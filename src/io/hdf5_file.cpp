@@ -113,11 +113,14 @@ Reader::readArray (const std::string& name, int rank, H5T_class_t type_class, co
     if (actual_rank != rank)
       fail (name, "has " + std::to_string (actual_rank) + " dimensions " + dimsText (array.dims) + ", expected " +
                       std::to_string (rank));
+    // The element count, checked before each product so that a huge extent cannot wrap it around to a small one.
+    const hsize_t max_count = hsize_t (1) << 32;
     hsize_t count = 1;
-    for (const hsize_t d : array.dims)
+    for (const hsize_t d : array.dims) {
+      if (d != 0 && count > max_count / d)
+        fail (name, "implausibly large " + dimsText (array.dims));
       count *= d;
-    if (count > (hsize_t (1) << 32))
-      fail (name, "implausibly large " + dimsText (array.dims));
+    }
     array.values.resize (count);
     if (count > 0)
       dataset.read (array.values.data (), memory_type);

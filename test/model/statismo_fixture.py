@@ -94,6 +94,10 @@ def write(directory):
     write_model(os.path.join(directory, "bad_cell_index.h5"), edit=set_item("representer/cells", bad_cell))
     write_model(os.path.join(directory, "wrong_points_rank.h5"),
                 edit=set_item("representer/points", lambda a: a.reshape(-1)))
+    # [3, N] points whose element count 3N wraps around 2^64 to 2: no data is stored (chunked, never written).
+    write_model(os.path.join(directory, "wrapping_points_dims.h5"), edit=set_item("representer/points", lambda a: None))
+    with h5py.File(os.path.join(directory, "wrapping_points_dims.h5"), "r+") as f:
+        f.create_dataset("representer/points", shape=(3, (2 ** 64 + 2) // 3), dtype=np.float32, chunks=(3, 1))
     with open(os.path.join(directory, "statismo_v09.h5"), "rb") as f:
         whole = f.read()
     with open(os.path.join(directory, "truncated.h5"), "wb") as f:
