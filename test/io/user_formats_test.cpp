@@ -147,7 +147,7 @@ TEST (UserFormatsTest, ReadsStlAndOffScansAndMeshes)
   EXPECT_EQ (morphreg::loadPolygonMesh (dir.file ("cube.stl")).polygons.size (), 12u);
   writeText (dir.file ("cut.stl"), "solid cut\nfacet normal 0 0 0\nouter loop\nvertex 1 2\n");
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadCloud<pcl::PointXYZ> (dir.file ("cut.stl")); },
-                                                "cut.stl: not a readable stl mesh");
+                                                "cut.stl:4: vertex has 2 coordinates, expected 3");
 }
 
 TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
@@ -163,7 +163,7 @@ TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
   expectErrorContaining<morphreg::FormatError> (load ("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"),
                                                 "nan.off:4: vertex 1 coordinate y 'nan' is not a finite number");
   expectErrorContaining<morphreg::FormatError> (load ("cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
-                                                "cut.off:4: vertex 2 coordinate x '' is not a finite number");
+                                                "cut.off: header claims 1 faces (at least 8 bytes) but the file holds");
   expectErrorContaining<morphreg::FormatError> (load ("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
                                                 "no polygons");
 }

@@ -2,6 +2,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/file_checks.h>
+#include <morphreg/io/file_validation.h>
 #include <morphreg/io/mesh_io.h>
 
 #include <pcl/conversions.h>
@@ -17,18 +18,17 @@ template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr
 loadCloud (const std::string& path)
 {
-  requireReadableFile (path);
-  requireExtension (path, ".pcd .ply .obj .stl .off", "point cloud");
+  const FileFormat format = checkGeometryFile (path, ".pcd .ply .obj .stl .off", "point cloud");
   typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
-  const std::string ext = fileExtension (path);
-  if (ext == ".stl" || ext == ".off") { // mesh-only formats: the mesh's vertices are the cloud
+  if (format == FileFormat::StlAscii || format == FileFormat::StlBinary || format == FileFormat::Off) {
+    // mesh-only formats: the mesh's vertices are the cloud
     pcl::fromPCLPointCloud2 (loadPolygonMesh (path).cloud, *cloud);
     return cloud;
   }
   const int status = callPclIo (path, [&] {
-    if (ext == ".pcd")
+    if (format == FileFormat::Pcd)
       return pcl::io::loadPCDFile (path, *cloud);
-    if (ext == ".ply")
+    if (format == FileFormat::Ply)
       return pcl::io::loadPLYFile (path, *cloud);
     pcl::PolygonMesh mesh; // an OBJ file's vertices are the cloud
     const int obj_status = pcl::io::loadOBJFile (path, mesh);

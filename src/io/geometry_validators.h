@@ -1,0 +1,31 @@
+#pragma once
+// Private: one structural validator per format (src/io/<format>_validation.cpp), each throwing FormatError naming the
+// file (and line) on the first problem. validateGeometryFile (file_validation.h) chooses among them by content.
+#include <string>
+
+namespace morphreg
+{
+namespace validation
+{
+/** A PLY file: header, element counts against the file size, then the data (binary walked, ASCII parsed). */
+void
+validatePlyFile (const std::string& path);
+
+/** A PCD file: header consistency, then the data against POINTS (binary, binary_compressed or ASCII). */
+void
+validatePcdFile (const std::string& path);
+
+/** An OBJ file: every v, vn, vt and f line, and the face indices against the vertex count. */
+void
+validateObjFile (const std::string& path);
+
+/** An ASCII STL file: its grammar, with finite vertex coordinates. */
+void
+validateAsciiStlFile (const std::string& path);
+
+/** A VTK legacy POLYDATA file: header, points and cells. */
+void
+validateVtkFile (const std::string& path);
+
+} // namespace validation
+} // namespace morphreg

@@ -1,0 +1,79 @@
+#include "geometry_file_reader.h"
+#include "geometry_validators.h"
+
+namespace morphreg
+{
+namespace validation
+{
+namespace
+{
+/** Reads the next non-blank line into \a tokens; false at the end of the file. */
+bool
+nextTokens (GeometryFileReader& reader, std::string& line, std::vector<std::string_view>& tokens)
+{
+  while (reader.nextLine (line)) {
+    splitTokens (line, tokens);
+    if (!tokens.empty ())
+      return true;
+  }
+  return false;
+}
+
+/** The next line must start with \a first (and \a second, if given). */
+void
+expectLine (GeometryFileReader& reader, std::string& line, std::vector<std::string_view>& tokens,
+            const std::string& first, const std::string& second = "")
+{
+  const std::string expected = second.empty () ? first : first + " " + second;
+  if (!nextTokens (reader, line, tokens))
+    reader.fail ("the file ends inside a facet, before '" + expected + "' (the file is cut short)");
+  if (tokens[0] != first || (!second.empty () && (tokens.size () < 2 || tokens[1] != second)))
+    reader.failAtLine ("expected '" + expected + "', found '" + line.substr (0, 80) + "'");
+}
+
+/** "facet normal nx ny nz" (its first line already read), the loop of 3 vertices, "endfacet". */
+void
+checkFacet (GeometryFileReader& reader, std::string& line, std::vector<std::string_view>& tokens)
+{
+  double number = 0.0;
+  if (tokens.size () != 5 || tokens[1] != "normal" || !parseNumber (tokens[2], number) ||
+      !parseNumber (tokens[3], number) || !parseNumber (tokens[4], number))
+    reader.failAtLine ("expected 'facet normal nx ny nz', found '" + line.substr (0, 80) + "'");
+  expectLine (reader, line, tokens, "outer", "loop");
+  for (int corner = 0; corner < 3; ++corner) {
+    expectLine (reader, line, tokens, "vertex");
+    if (tokens.size () != 4)
+      reader.failAtLine ("vertex has " + std::to_string (tokens.size () - 1) + " coordinates, expected 3");
+    for (std::size_t i = 1; i < 4; ++i)
+      if (!isFiniteFloat (tokens[i]))
+        reader.failAtLine ("vertex coordinate '" + std::string (tokens[i]) + "' is not a finite number");
+  }
+  expectLine (reader, line, tokens, "endloop");
+  expectLine (reader, line, tokens, "endfacet");
+}
+} // namespace
+
+void
+validateAsciiStlFile (const std::string& path)
+{
+  GeometryFileReader reader (path);
+  std::string line;
+  std::vector<std::string_view> tokens;
+  bool in_solid = false;
+  while (nextTokens (reader, line, tokens)) {
+    if (!in_solid && tokens[0] == "solid")
+      in_solid = true;
+    else if (in_solid && tokens[0] == "endsolid")
+      in_solid = false;
+    else if (in_solid && tokens[0] == "facet")
+      checkFacet (reader, line, tokens);
+    else
+      reader.failAtLine ("expected '" + std::string (in_solid ? "facet normal' or 'endsolid" : "solid") + "', found '" +
+                         line.substr (0, 80) + "'");
+  }
+  if (in_solid)
+    reader.fail ("the STL file has no 'endsolid' (the file is cut short)");
+}
+
+} // namespace validation
+} // namespace morphreg
