@@ -43,26 +43,30 @@ sanitize() {
 }
 
 # Runs one fuzz target for $1 seconds over its committed corpus and its scratch corpus (build-fuzz/corpus/<target>/,
-# kept between runs), where new inputs go. Crashes, leaks, timeouts and out-of-memory inputs are written to
-# fuzz/crashes/<target>/. Then the scratch inputs that reach code the committed corpus does not are merged into it;
-# counting edges only (-use_counters=0) keeps the committed corpus small.
+# kept between runs), where new inputs go. -fork=1 runs one worker process, restarted after a finding: crashes,
+# leaks, timeouts and out-of-memory inputs are written to fuzz/crashes/<target>/ and the run goes on. Then the
+# scratch inputs that reach code the committed corpus does not are merged into it; counting edges only
+# (-use_counters=0) keeps the committed corpus small. Fails if the run found anything new.
 fuzz_target() {
   local seconds=$1 target=$2
   local binary="build-fuzz/fuzz/fuzz_$target" corpus="fuzz/corpus/$target" scratch="build-fuzz/corpus/$target"
   local log="build-fuzz/logs/$target.log" crashes="fuzz/crashes/$target"
   mkdir -p "$scratch" "$crashes" "$(dirname "$log")"
-  local status=0
+  local before status=0
+  before=$(find "$crashes" -type f | wc -l)
   /usr/bin/time -f 'cpu %U s user + %S s system' -o "$log.time" \
     nice -n 10 "$binary" "$scratch" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -artifact_prefix="$crashes/" -print_final_stats=1 >"$log" 2>&1 || status=$?
+    -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 -artifact_prefix="$crashes/" >"$log" 2>&1 ||
+    status=$?
   nice -n 10 "$binary" -merge=1 -use_counters=0 "$corpus" "$scratch" >"$log.merge" 2>&1
+  local found
+  found=$(( $(find "$crashes" -type f | wc -l) - before ))
   rmdir --ignore-fail-on-non-empty "$crashes"
-  printf '%-15s status %d  %s  execs %s  %s  corpus %d files %d bytes  findings %d\n' "$target" "$status" \
+  printf '%-15s status %d  %s  execs %s  %s  corpus %d files %d bytes  new findings %d\n' "$target" "$status" \
     "$(grep -oE 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || echo 'cov: ? ft: ?')" \
-    "$(grep -oE 'number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+' || echo '?')" \
-    "$(tail -1 "$log.time")" "$(find "$corpus" -type f | wc -l)" "$(cat "$corpus"/* | wc -c)" \
-    "$(find "$crashes" -type f 2>/dev/null | wc -l)"
-  return "$status"
+    "$(grep -oE '^#[0-9]+' "$log" | tail -1 | tr -d '#')" "$(tail -1 "$log.time")" \
+    "$(find "$corpus" -type f | wc -l)" "$(cat "$corpus"/* | wc -c)" "$found"
+  [ "$status" -eq 0 ] && [ "$found" -eq 0 ]
 }
 
 fuzz() {
