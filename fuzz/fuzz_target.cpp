@@ -26,9 +26,8 @@ class InputFile
 {
 public:
   InputFile (const std::string& extension, const std::uint8_t* data, std::size_t size)
-      : path_ ((std::filesystem::temp_directory_path () /
-                ("morphreg_fuzz_" + std::to_string (::getpid ()) + extension))
-                   .string ())
+    : path_ ((std::filesystem::temp_directory_path () / ("morphreg_fuzz_" + std::to_string (::getpid ()) + extension))
+                 .string ())
   {
     std::ofstream stream (path_, std::ios::binary | std::ios::trunc);
     stream.write (reinterpret_cast<const char*> (data), static_cast<std::streamsize> (size));

@@ -25,9 +25,9 @@ using Loader = std::function<void (const std::string& path)>;
  */
 struct Target
 {
-  std::string name;                ///< e.g. "npy"
-  std::string extension;           ///< with the dot, e.g. ".npy"
-  std::vector<Loader> loaders;     ///< each called on every input
+  std::string name;            ///< e.g. "npy"
+  std::string extension;       ///< with the dot, e.g. ".npy"
+  std::vector<Loader> loaders; ///< each called on every input
 };
 
 /** \brief Adds a target to targets(); called from a static initialiser in each target's source.

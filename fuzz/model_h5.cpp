@@ -6,9 +6,9 @@
 
 namespace
 {
-const bool registered = morphreg::fuzz::registerTarget (
-    {"model_h5",
-     ".h5",
-     {[] (const std::string& path) { morphreg::loadModel (path); },
-      [] (const std::string& path) { morphreg::loadStatismoModel (path, "shape"); }}});
+const bool registered =
+    morphreg::fuzz::registerTarget ({"model_h5",
+                                     ".h5",
+                                     {[] (const std::string& path) { morphreg::loadModel (path); },
+                                      [] (const std::string& path) { morphreg::loadStatismoModel (path, "shape"); }}});
 } // namespace
