@@ -4,6 +4,8 @@
 #include <morphreg/io/file_checks.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <sstream>
 
 namespace morphreg
@@ -50,6 +52,75 @@ createFileInMemory (const std::string& path)
   catch (const H5::Exception& e) {
     throw IoError (path + ": cannot create the HDF5 file: " + e.getDetailMsg ());
   }
+}
+/** \brief The \a size bytes of \a path from \a offset; none if the file ends before. */
+std::vector<unsigned char>
+readBytes (const std::string& path, std::uint64_t offset, std::uint64_t size)
+{
+  std::ifstream stream (path, std::ios::binary | std::ios::ate);
+  const auto file_size = static_cast<std::uint64_t> (std::max<std::streamoff> (stream.tellg (), 0));
+  if (!stream || offset > file_size || size > file_size - offset)
+    return {};
+  std::vector<unsigned char> bytes (size);
+  stream.seekg (static_cast<std::streamoff> (offset));
+  stream.read (reinterpret_cast<char*> (bytes.data ()), static_cast<std::streamsize> (size));
+  return stream ? bytes : std::vector<unsigned char> ();
+}
+
+/** \brief The little-endian unsigned integer of \a size bytes at \a offset of \a bytes (which must hold them). */
+std::uint64_t
+decodeUnsigned (const std::vector<unsigned char>& bytes, std::size_t offset, std::size_t size)
+{
+  std::uint64_t value = 0;
+  for (std::size_t i = size; i-- > 0;)
+    value = (value << 8) | bytes[offset + i];
+  return value;
+}
+
+/** \brief Where a variable-length string is kept: its length, and the global heap collection and object holding it. */
+struct HeapReference
+{
+  std::uint64_t length = 0;
+  std::uint64_t collection = 0;
+  std::uint64_t object = 0;
+};
+
+/** \brief Walks the global heap collection at \a reference.collection (an address from \a base) as HDF5 will, and
+ *  returns a problem if HDF5 would not read it safely ("" if it would): HDF5 1.10 trusts the collection, so an
+ *  object size of 0 makes it loop forever and an object index past the collection's reads out of bounds.
+ */
+std::string
+globalHeapProblem (const std::string& path, std::uint64_t base, const HeapReference& reference, std::size_t size_bytes)
+{
+  const std::size_t header_bytes = 8 + size_bytes;        // "GCOL", version, 3 reserved bytes, collection size
+  const std::size_t object_header_bytes = 8 + size_bytes; // index, reference count, 4 reserved bytes, object size
+  const std::vector<unsigned char> header = readBytes (path, base + reference.collection, header_bytes);
+  if (header.size () < header_bytes || std::string (header.begin (), header.begin () + 4) != "GCOL")
+    return "its global heap collection is missing";
+  const std::uint64_t collection_bytes = decodeUnsigned (header, 8, size_bytes);
+  if (collection_bytes < header_bytes)
+    return "its global heap collection has an invalid size " + std::to_string (collection_bytes);
+  const std::vector<unsigned char> collection = readBytes (path, base + reference.collection, collection_bytes);
+  if (collection.size () != collection_bytes)
+    return "its global heap collection runs past the end of the file";
+  // The whole collection, as HDF5 reads it all.
+  std::uint64_t found_bytes = 0;
+  for (std::uint64_t at = header_bytes; at + object_header_bytes <= collection_bytes;) {
+    const std::uint64_t index = decodeUnsigned (collection, at, 2);
+    const std::uint64_t object_bytes = decodeUnsigned (collection, at + 8, size_bytes);
+    // Index 0 is free space, whose size counts its header; an object's data is padded to 8 bytes.
+    const std::uint64_t step = index == 0 ? object_bytes : object_header_bytes + (object_bytes + 7) / 8 * 8;
+    if (object_bytes > collection_bytes || step < object_header_bytes || step > collection_bytes - at)
+      return "its global heap collection is corrupt (object " + std::to_string (index) + " of " +
+             std::to_string (object_bytes) + " bytes)";
+    if (index != 0 && index == reference.object)
+      found_bytes = object_bytes;
+    at += step;
+  }
+  if (found_bytes != reference.length)
+    return "its global heap object " + std::to_string (reference.object) +
+           (found_bytes ? " does not hold " + std::to_string (reference.length) + " bytes" : " is missing");
+  return "";
 }
 } // namespace
 
@@ -118,11 +189,14 @@ Reader::readArray (const std::string& name, int rank, H5T_class_t type_class, co
     if (actual_rank != rank)
       fail (name, "has " + std::to_string (actual_rank) + " dimensions " + dimsText (array.dims) + ", expected " +
                       std::to_string (rank));
+    // The element count, checked before each product so that a huge extent cannot wrap it around to a small one.
+    const hsize_t max_count = hsize_t (1) << 32;
     hsize_t count = 1;
-    for (const hsize_t d : array.dims)
+    for (const hsize_t d : array.dims) {
+      if (d != 0 && count > max_count / d)
+        fail (name, "implausibly large " + dimsText (array.dims));
       count *= d;
-    if (count > (hsize_t (1) << 32))
-      fail (name, "implausibly large " + dimsText (array.dims));
+    }
     array.values.resize (count);
     if (count > 0)
       dataset.read (array.values.data (), memory_type);
@@ -172,6 +246,10 @@ Reader::readString (const std::string& name) const
 {
   const H5::DataSet dataset = open (name, H5T_STRING);
   try {
+    if (dataset.getSpace ().getSimpleExtentNpoints () != 1)
+      fail (name, "expected a single string, found " + std::to_string (dataset.getSpace ().getSimpleExtentNpoints ()));
+    if (dataset.getStrType ().isVariableStr ())
+      requireIntactStringHeap (name, dataset);
     std::string value;
     dataset.read (value, dataset.getStrType ());
     return value;
@@ -179,6 +257,32 @@ Reader::readString (const std::string& name) const
   catch (const H5::Exception& e) {
     fail (name, "cannot be read as a string: " + e.getDetailMsg ());
   }
+}
+
+void
+Reader::requireIntactStringHeap (const std::string& name, const H5::DataSet& dataset) const
+{
+  const haddr_t offset = H5Dget_offset (dataset.getId ());
+  if (offset == HADDR_UNDEF)
+    return; // compact or chunked storage, whose raw data is not at one place in the file: left to HDF5
+  std::size_t address_bytes = 0, size_bytes = 0;
+  hsize_t user_block = 0;
+  const H5::FileCreatPropList properties = file_.getCreatePlist ();
+  H5Pget_sizes (properties.getId (), &address_bytes, &size_bytes);
+  H5Pget_userblock (properties.getId (), &user_block);
+  if (address_bytes > 8 || size_bytes > 8)
+    fail (name, "unsupported HDF5 address or length size");
+  // The string's raw data: its length (4 bytes), the collection's address and the object's index (4 bytes).
+  const std::vector<unsigned char> raw = readBytes (path_, offset, 8 + address_bytes);
+  if (raw.size () != 8 + address_bytes)
+    fail (name, "its data runs past the end of the file");
+  const HeapReference reference{decodeUnsigned (raw, 0, 4), decodeUnsigned (raw, 4, address_bytes),
+                                decodeUnsigned (raw, 4 + address_bytes, 4)};
+  if (reference.length == 0)
+    return; // an empty string is not kept in the heap
+  const std::string problem = globalHeapProblem (path_, user_block, reference, size_bytes);
+  if (!problem.empty ())
+    fail (name, "variable-length string: " + problem);
 }
 
 Writer::Writer (const std::string& path) : path_ (path), file_ (createFileInMemory (path)) {}

@@ -63,6 +63,12 @@ private:
   H5::DataSet
   open (const std::string& name, H5T_class_t type_class) const;
 
+  /** \brief FormatError unless the global heap holding the variable-length string of the single-element \a dataset
+   *  is intact (HDF5 1.10 hangs or crashes on a corrupt one); contiguous storage only.
+   */
+  void
+  requireIntactStringHeap (const std::string& name, const H5::DataSet& dataset) const;
+
   template <typename Scalar>
   Array<Scalar>
   readArray (const std::string& name, int rank, H5T_class_t type_class, const H5::PredType& memory_type) const;

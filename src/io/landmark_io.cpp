@@ -122,6 +122,16 @@ readPickedPoints (const std::string& path)
   return entries;
 }
 
+/** \brief The point count of a .pts header: a whole number, at most a billion (so it converts exactly). */
+long long
+parsePointCount (const std::string& text, const std::string& where)
+{
+  const double count = parseNumber (text, where, "n_points");
+  if (count < 0.0 || count > 1e9 || count != std::floor (count))
+    throw FormatError (where + ": n_points '" + trim (text) + "' is not a point count");
+  return static_cast<long long> (count);
+}
+
 std::vector<std::string>
 splitWhitespace (const std::string& line)
 {
@@ -151,7 +161,7 @@ readPts (const std::string& path)
     if (line.empty () || closed)
       continue;
     if (!open && line.rfind ("n_points:", 0) == 0)
-      declared = static_cast<long long> (parseNumber (line.substr (9), where, "n_points"));
+      declared = parsePointCount (line.substr (9), where);
     else if (!open && line == "{")
       open = true;
     else if (!open && line.rfind ("version:", 0) != 0)
@@ -255,7 +265,7 @@ parseJsonText (const std::string& text, const std::string& source)
   try {
     return nlohmann::json::parse (text);
   }
-  catch (const nlohmann::json::parse_error& e) {
+  catch (const nlohmann::json::exception& e) { // a syntax error, or a number too large for a double
     throw FormatError (source + ": malformed JSON (" + e.what () + ")");
   }
 }

@@ -1,6 +1,7 @@
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
 
+#include <algorithm>
 #include <map>
 
 namespace morphreg
@@ -174,7 +175,7 @@ checkElements (GeometryFileReader& reader, const PlyHeader& header)
       if (isFaceIndexList (element, property) && !property.type.integer)
         reader.fail ("the face vertex indices must be a list of integers");
     const double row_bytes = minimalRowBytes (element, header.encoding);
-    requireCountFits (reader.path (), element.count, row_bytes, static_cast<std::uint64_t> (available),
+    requireCountFits (reader.path (), element.count, row_bytes, static_cast<std::uint64_t> (std::max (available, 0.0)),
                       "'" + element.name + "' elements", header.encoding == PlyEncoding::Ascii);
     available -= static_cast<double> (element.count) * row_bytes;
   }

@@ -1,6 +1,8 @@
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
 
+#include <algorithm>
+
 namespace morphreg
 {
 namespace validation
@@ -61,6 +63,9 @@ validateAsciiStlFile (const std::string& path)
   std::vector<std::string_view> tokens;
   bool in_solid = false;
   while (nextTokens (reader, line, tokens)) {
+    // VTK's STL reader takes a file with a byte above 127 near its start for binary, whatever it starts with.
+    if (std::any_of (line.begin (), line.end (), [] (char c) { return static_cast<unsigned char> (c) > 127; }))
+      reader.failAtLine ("a byte that is not ASCII in an ASCII STL file");
     if (!in_solid && tokens[0] == "solid")
       in_solid = true;
     else if (in_solid && tokens[0] == "endsolid")

@@ -2,6 +2,8 @@
 #include <morphreg/io/json_file.h>
 #include <morphreg/photo/photo_view_io.h>
 
+#include <limits>
+
 namespace morphreg
 {
 namespace
@@ -26,8 +28,10 @@ readImageSize (const json& document, const std::string& path)
   const char* keys[2] = {"width", "height"};
   for (int k = 0; k < 2; ++k) {
     const json& value = member (image, keys[k], path + ": image");
-    if (!value.is_number_integer ())
-      throw FormatError (path + ": image." + keys[k] + " (" + value.dump () + ") is not an integer");
+    // Compared as JSON numbers, so a count beyond int is reported instead of wrapping around in the conversion.
+    if (!value.is_number_integer () || value > std::numeric_limits<int>::max () ||
+        value < std::numeric_limits<int>::min ())
+      throw FormatError (path + ": image." + keys[k] + " (" + value.dump () + ") is not an integer pixel count");
     size[k] = value.get<int> ();
   }
   return {size[0], size[1]};

@@ -82,6 +82,8 @@ TEST (LandmarkIoTest, MalformedFilesAreNamedWithTheProblem)
   expectLoadError<morphreg::FormatError> (dir.file ("bad.json"), "array of 3 numbers");
   writeText (dir.file ("broken.json"), "{\"landmarks\": [");
   expectLoadError<morphreg::FormatError> (dir.file ("broken.json"), "malformed JSON");
+  writeText (dir.file ("overflow.json"), "{\"landmarks\": [{\"id\": \"nose_tip\", \"position\": [1, 2, 1e999]}]}");
+  expectLoadError<morphreg::FormatError> (dir.file ("overflow.json"), "malformed JSON");
   writeText (dir.file ("nan.csv"), "id,x,y,z\nnose_tip,1,nan,3\n");
   expectLoadError<morphreg::FormatError> (dir.file ("nan.csv"), "nan.csv:2");
   writeText (dir.file ("fields.csv"), "id,x,y,z\nnose_tip,1,2\n");

@@ -65,6 +65,10 @@ TEST (UserFormatsTest, BadPtsFilesAreNamedWithTheLine)
   text.replace (text.find ("\n5 10 15"), 8, "\n5 ten 15");
   expectErrorContaining<morphreg::FormatError> (load ("word.pts", text), "word.pts:9: coordinate y 'ten'");
   expectErrorContaining<morphreg::FormatError> (load ("open.pts", "n_points: 68\n{\n1 2 3\n"), "not enclosed");
+  expectErrorContaining<morphreg::FormatError> (load ("huge.pts", "n_points: 1e300\n{\n}\n"),
+                                                "huge.pts:1: n_points '1e300' is not a point count");
+  expectErrorContaining<morphreg::FormatError> (load ("half.pts", "n_points: 67.5\n{\n}\n"),
+                                                "half.pts:1: n_points '67.5' is not a point count");
   expectErrorContaining<morphreg::FormatError> (load ("header.pts", "points 68\n{\n}\n"),
                                                 "header.pts:1: expected 'version:'");
 }

@@ -198,6 +198,9 @@ TEST (ModelIoTest, CorruptFilesGiveClearErrors)
   expectLoadFails ("nan_mean.h5", "'model/mean': element 0 is not finite");
   expectLoadFails ("bad_cell_index.h5", "'representer/cells': index 8");
   expectLoadFails ("wrong_points_rank.h5", "'representer/points': has 1 dimensions");
+  expectLoadFails ("corrupt_string_heap.h5",
+                   "'metadata/landmarks/json': variable-length string: its global heap collection is corrupt");
+  expectLoadFails ("wrapping_points_dims.h5", "'representer/points': implausibly large [3, 6148914691236517206]");
   expectLoadFails ("truncated.h5", "not a readable HDF5 file");
   expectLoadFails ("not_hdf5.h5", "not a readable HDF5 file");
   EXPECT_THROW (morphreg::loadModel (fixture ().file ("does_not_exist.h5")), morphreg::IoError);

@@ -9,6 +9,7 @@ documented in include/morphreg/io/model_io.h and shares no code with morphreg.
 import json
 import os
 import shutil
+import struct
 import sys
 
 import h5py
@@ -86,6 +87,16 @@ def write(directory):
     write_model(os.path.join(directory, "bfm2017_bad_landmarks.h5"), prefix="shape", version_at_root=True)
     with h5py.File(os.path.join(directory, "bfm2017_bad_landmarks.h5"), "r+") as f:
         f.create_dataset("metadata/landmarks/json", data=json.dumps([{"id": "center.nose.tip", "coordinates": [1]}]))
+    # The global heap that holds the landmark JSON string, with its free space shrunk to a size of 0: HDF5 1.10 loops
+    # forever walking such a heap collection.
+    shutil.copyfile(os.path.join(directory, "bfm2017_style.h5"), os.path.join(directory, "corrupt_string_heap.h5"))
+    with open(os.path.join(directory, "corrupt_string_heap.h5"), "r+b") as f:
+        data = f.read()
+        at = data.rindex(b"GCOL") + 16  # the last collection, written with the landmark JSON
+        while struct.unpack_from("<H", data, at)[0] != 0:  # walk to the free space (index 0)
+            at += 16 + (struct.unpack_from("<Q", data, at + 8)[0] + 7) // 8 * 8
+        f.seek(at + 8)
+        f.write(struct.pack("<Q", 0))
     write_model(os.path.join(directory, "statismo_v08.h5"), minor=8, scaled=True)
     write_model(os.path.join(directory, "scaled_labelled_v09.h5"), minor=9, scaled=True)
     write_model(os.path.join(directory, "missing_variance.h5"), edit=set_item("model/pcaVariance", lambda a: None))
@@ -94,6 +105,10 @@ def write(directory):
     write_model(os.path.join(directory, "bad_cell_index.h5"), edit=set_item("representer/cells", bad_cell))
     write_model(os.path.join(directory, "wrong_points_rank.h5"),
                 edit=set_item("representer/points", lambda a: a.reshape(-1)))
+    # [3, N] points whose element count 3N wraps around 2^64 to 2: no data is stored (chunked, never written).
+    write_model(os.path.join(directory, "wrapping_points_dims.h5"), edit=set_item("representer/points", lambda a: None))
+    with h5py.File(os.path.join(directory, "wrapping_points_dims.h5"), "r+") as f:
+        f.create_dataset("representer/points", shape=(3, (2 ** 64 + 2) // 3), dtype=np.float32, chunks=(3, 1))
     with open(os.path.join(directory, "statismo_v09.h5"), "rb") as f:
         whole = f.read()
     with open(os.path.join(directory, "truncated.h5"), "wb") as f:

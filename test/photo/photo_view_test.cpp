@@ -164,6 +164,12 @@ TEST (PhotoViewTest, ReadersNameTheFileAndTheProblem)
       },
       {"d.json", "image.width (10.5) is not an integer"});
   expectError<morphreg::FormatError> (
+      [&] {
+        morphreg::loadProfileView (write ("w.json", R"({"view": "profile", "image": {"width": 4294967396,
+                                                        "height": 100}, "nose_tip": [1, 2]})"));
+      },
+      {"w.json", "image.width (4294967396) is not an integer pixel count"});
+  expectError<morphreg::FormatError> (
       [&] { morphreg::loadProfileView (write ("e.json", side + R"("silhouette": [[1, 2], [3, "x"]]})")); },
       {"e.json", "silhouette[1]", "expected [x, y]"});
   expectError<InvalidInputError> ([&] { morphreg::loadProfileView (write ("f.json", side + R"("silhouette": []})")); },

@@ -4,6 +4,7 @@
  */
 #include <morphreg/common/error.h>
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -45,8 +46,9 @@ fileExtension (const std::string& path);
 void
 requireExtension (const std::string& path, const std::string& allowed, const std::string& what);
 
-/** \brief Runs a PCL reader or writer \a call on \a path; turns the exceptions PCL throws into IoError naming
- *  the file, and returns the call's status.
+/** \brief Runs a PCL reader or writer \a call on \a path; turns the exceptions PCL throws (its own, and standard
+ *  ones such as the std::out_of_range its OBJ reader throws on some malformed lines) into IoError naming the file,
+ *  and returns the call's status.
  *  \param[in] path the file the call reads or writes, for the message
  *  \param[in] call the PCL reader or writer, returning its status
  *  \return the call's status
@@ -64,6 +66,9 @@ callPclIo (const std::string& path, Call call)
   }
   catch (const pcl::PCLException& e) {
     throw IoError (path + ": " + e.detailedMessage ());
+  }
+  catch (const std::exception& e) {
+    throw IoError (path + ": the reader failed (" + e.what () + ")");
   }
 }
 
