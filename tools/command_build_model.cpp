@@ -236,6 +236,12 @@ registerBuildModelCommand (CLI::App& app)
                     "with --from-scans: folder of each scan's report <id>.json, fit <id>_fit.ply, resampled mesh "
                     "<id>.ply and summary.json (default: the --out path + _scans)")
       ->needs (scans);
+  command
+      ->add_option ("--fit-components", options->registration.components,
+                    "with --from-scans: shape components per region the registration fits (register's --components)")
+      ->check (nonNegative ())
+      ->needs (scans)
+      ->capture_default_str ();
   command->add_option ("--units", options->registration.units, "with --from-scans: the scans' unit")
       ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
       ->needs (scans)

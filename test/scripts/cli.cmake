@@ -274,14 +274,14 @@ file(WRITE ${cli_dir}/from_scans.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\nbat
 file(WRITE ${cli_dir}/from_one_scan.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\n")
 add_test(NAME CliTest.BuildModelFromScans
   COMMAND morphreg_cli build-model --from-scans ${cli_dir}/from_scans.csv --model ${cli_dir}/small_model.h5
-          --components 2 --quiet --out ${cli_dir}/from_scans.h5)
+          --fit-components 8 --components 2 --quiet --out ${cli_dir}/from_scans.h5)
 set_tests_properties(CliTest.BuildModelFromScans PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
   FIXTURES_SETUP cli_from_scans
   PASS_REGULAR_EXPRESSION "3 of 4 scans registered and resampled, 1 left out.*from_scans.h5: 3458 vertices, 7 region\\(s\\), components per region \\[2,2,2,2,2,2,2\\], 45 landmarks")
 add_test(NAME CliTest.BuildModelFromScansReportsTheBadScan
   COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/from_scans_scans/summary.json ${cli_dir}/from_scans_scans/scan_0.json)
 set_tests_properties(CliTest.BuildModelFromScansReportsTheBadScan PROPERTIES FIXTURES_REQUIRED cli_from_scans
-  PASS_REGULAR_EXPRESSION "\"included\": 3,\n  \"left_out\": 1,.*\"id\": \"scan_flat\",\n *\"included\": false,\n *\"reason\": \"[^\"]*lie in a plane.*\"coverage\": 0\\.[0-9]+,")
+  PASS_REGULAR_EXPRESSION "\"included\": 3,\n  \"left_out\": 1,.*\"id\": \"scan_flat\",\n *\"included\": false,\n *\"reason\": \"[^\"]*lie in a plane.*\"coverage\": 0\\.[0-9]+,.*\"components\": \\[\n *8\n *\\],")
 morphreg_cli_expect_exit(BuildModelFromOneScanFails 1 "1 of 2 scans registered and resampled, 1 left out; a model needs at least two"
   build-model --from-scans ${cli_dir}/from_one_scan.csv --model ${cli_dir}/small_model.h5 --quiet
   --out ${cli_dir}/from_one_scan.h5)
