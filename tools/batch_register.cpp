@@ -148,32 +148,6 @@ private:
   std::mutex mutex_;
 };
 
-/** Registers one scan; a scan that cannot be registered gets a failure record as its report. */
-nlohmann::json
-registerTask (const Task& task, const MorphableModel::Ptr& model)
-{
-  const auto start = Clock::now ();
-  for (const std::string& output : {task.options.out, reportPath (task.options)})
-    std::remove (partialPath (output).c_str ()); // left by a run killed mid-write
-  std::ostringstream log;                        // per-scan chatter would interleave between threads
-  try {
-    return registerScan (task.options, model, nullptr, 0.0, log, log);
-  }
-  catch (const FitCheckFailure&) {
-    return readJsonFile (reportPath (task.options)); // written, and marked failed
-  }
-  catch (const std::exception& e) {
-    const nlohmann::json failure = {
-        {"status", "failed"},
-        {"failure", e.what ()},
-        {"scan", {{"file", task.entry.scan}, {"landmarks", task.entry.landmarks}}},
-        {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
-    const std::string path = reportPath (task.options);
-    writeJsonFile (path, failure);
-    return failure;
-  }
-}
-
 /** Runs \a tasks on \a jobs threads of \a threads_per_fit OpenMP threads each; stops taking new ones on Ctrl-C.
  *  Returns each task's report (null for one not started).
  */
@@ -188,7 +162,7 @@ runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int 
     workers.emplace_back ([&] {
       omp_set_num_threads (threads_per_fit);
       for (std::size_t k; interrupts.load () == 0 && (k = next.fetch_add (1)) < tasks.size ();) {
-        reports[k] = registerTask (tasks[k], model);
+        reports[k] = registerStudyScan (tasks[k].options, model);
         progress.done (reports[k].value ("status", "") == "ok");
       }
     });
@@ -198,6 +172,31 @@ runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int 
   return reports;
 }
 } // namespace
+
+nlohmann::json
+registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up)
+{
+  const auto start = Clock::now ();
+  for (const std::string& output : {options.out, reportPath (options)})
+    std::remove (partialPath (output).c_str ()); // left by a run killed mid-write
+  std::ostringstream log;                        // per-scan chatter would interleave between threads
+  try {
+    return registerScan (options, model, nullptr, 0.0, log, log, follow_up);
+  }
+  catch (const FitCheckFailure&) {
+    return readJsonFile (reportPath (options)); // written, and marked failed
+  }
+  catch (const std::exception& e) {
+    const nlohmann::json failure = {
+        {"status", "failed"},
+        {"failure", e.what ()},
+        {"scan", {{"file", options.scan}, {"landmarks", options.landmarks}}},
+        {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
+    const std::string path = reportPath (options);
+    writeJsonFile (path, failure);
+    return failure;
+  }
+}
 
 CLI::Option*
 addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batch)

@@ -12,6 +12,7 @@
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/io/scan_manifest.h>
 #include <morphreg/model/ict_region_model.h>
 
 #include <algorithm>
@@ -19,22 +20,12 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace morphreg
 {
 namespace tools
 {
-namespace
-{
-/** The meshes of a folder and, from its population.json, the profile line of their topology. */
-struct MeshFolder
-{
-  std::vector<std::string> files;
-  std::vector<int> profile_line; ///< empty without population.json or without "profile_line" in it
-};
-
-/** The meshes of \a directory: the heads listed in its population.json (written by synth and demo), else every
- *  .ply .obj .vtk .stl file in name order. */
 MeshFolder
 readMeshFolder (const std::string& directory)
 {
@@ -69,6 +60,8 @@ readMeshFolder (const std::string& directory)
   return folder;
 }
 
+namespace
+{
 /** Loads every mesh, each checked against the first: a mismatch names the file. */
 std::vector<TriangleMesh>
 loadMeshes (const std::vector<std::string>& files, bool quiet)
@@ -150,6 +143,11 @@ inputFiles (const BuildModelOptions& options)
     inputs.insert (inputs.end (), folder_files.begin (), folder_files.end ());
     inputs.push_back (options.directory + "/population.json");
   }
+  if (!options.from_scans.empty ()) {
+    for (const ScanEntry& entry : loadScanList (options.from_scans))
+      inputs.insert (inputs.end (), {entry.scan, entry.landmarks});
+    inputs.insert (inputs.end (), {options.from_scans, options.registration.model});
+  }
   inputs.insert (inputs.end (), {options.regions, options.landmark_vertices, options.ict_directory});
   return inputs;
 }
@@ -159,15 +157,23 @@ nlohmann::json
 buildModelFile (const BuildModelOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
-  OutputFiles outputs ({options.out}, inputFiles (options));
+  const std::vector<std::string> inputs = inputFiles (options);
+  OutputFiles outputs ({options.out}, inputs);
+  const std::string report_dir = options.report_dir.empty ()
+                                     ? std::filesystem::path (options.out).replace_extension ().string () + "_scans"
+                                     : options.report_dir;
+  std::optional<OutputFolder> reports;
+  if (!options.from_scans.empty ())
+    reports.emplace (report_dir, inputs);
   nlohmann::json summary = {{"file", options.out},
                             {"settings",
                              {{"max_components", options.settings.max_components},
                               {"explained_variance", options.settings.explained_variance},
                               {"blend_rings", options.settings.blend_rings},
                               {"procrustes", options.settings.align}}}};
-  const MorphableModel::Ptr model =
-      options.ict_directory.empty () ? buildFromMeshes (options, summary) : buildFromIct (options, summary);
+  const MorphableModel::Ptr model = !options.from_scans.empty ()      ? buildFromScans (options, report_dir, summary)
+                                    : !options.ict_directory.empty () ? buildFromIct (options, summary)
+                                                                      : buildFromMeshes (options, summary);
   model->setMetadata ({{"builder", "morphreg build-model"}, {"source", summary["source"].dump ()}});
   saveModel (options.out, *model);
   std::vector<int> components;
@@ -180,6 +186,8 @@ buildModelFile (const BuildModelOptions& options)
   summary["landmarks"] = model->landmarks ().size ();
   summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   outputs.keep ();
+  if (reports)
+    reports->keep ();
   return summary;
 }
 
@@ -217,6 +225,28 @@ registerBuildModelCommand (CLI::App& app)
                        "landmark vertices, JSON {\"landmark_vertices\": {\"nose_tip\": 123, ...}}");
   auto* ict = command->add_option ("--from-ict", options->ict_directory,
                                    "build the 7-region model from the ICT-FaceKit folder instead of meshes");
+  auto* scans = command->add_option (
+      "--from-scans", options->from_scans,
+      "build from raw scans: a folder of scans or a manifest CSV (rows scan[,landmarks[,id]]), each registered with "
+      "--model and resampled into its topology; scans that fail are reported and left out");
+  command->add_option ("--model", options->registration.model, "with --from-scans: the model that registers the scans")
+      ->needs (scans);
+  command
+      ->add_option ("--report-dir", options->report_dir,
+                    "with --from-scans: folder of each scan's report <id>.json, fit <id>_fit.ply, resampled mesh "
+                    "<id>.ply and summary.json (default: the --out path + _scans)")
+      ->needs (scans);
+  command
+      ->add_option ("--fit-components", options->registration.components,
+                    "with --from-scans: shape components per region the registration fits (register's --components)")
+      ->check (nonNegative ())
+      ->needs (scans)
+      ->capture_default_str ();
+  command->add_option ("--units", options->registration.units, "with --from-scans: the scans' unit")
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
+      ->needs (scans)
+      ->capture_default_str ();
+  addResamplingOptions (command, options->resampling);
   command->add_option ("--samples", options->ict_samples, "heads drawn from the ICT model (with --from-ict)")
       ->check (CLI::Range (2, 100000))
       ->capture_default_str ();
@@ -225,9 +255,13 @@ registerBuildModelCommand (CLI::App& app)
   addModelBuilderOptions (command, options->settings);
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");
   ict->excludes (meshes)->excludes (directory);
+  scans->excludes (meshes)->excludes (directory)->excludes (ict);
   command->callback ([options] () {
-    if (options->meshes.empty () && options->directory.empty () && options->ict_directory.empty ())
-      throw CLI::RequiredError ("build-model needs --mesh, --dir or --from-ict");
+    if (options->meshes.empty () && options->directory.empty () && options->ict_directory.empty () &&
+        options->from_scans.empty ())
+      throw CLI::RequiredError ("build-model needs --mesh, --dir, --from-ict or --from-scans");
+    if (!options->from_scans.empty () && options->registration.model.empty ())
+      throw CLI::RequiredError ("build-model --from-scans needs --model, the model that registers the scans");
     runBuildModel (*options);
   });
 }

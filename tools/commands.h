@@ -33,6 +33,8 @@ void
 registerResampleCommand (CLI::App& app);
 void
 registerMergeSummariesCommand (CLI::App& app);
+void
+registerEvaluateModelCommand (CLI::App& app);
 
 /** Adds every subcommand to \a app. */
 inline void
@@ -45,6 +47,7 @@ registerCommands (CLI::App& app)
   registerFitPhotosCommand (app);
   registerMergeSummariesCommand (app);
   registerModelInfoCommand (app);
+  registerEvaluateModelCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
   registerWarpCommand (app);

@@ -1,5 +1,7 @@
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
+#include "scan_resampling.h"
+
 #include <morphreg/model/model_builder.h>
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/model/morphable_model.h>
@@ -24,29 +26,6 @@ class RegistrationVisualizer;
 
 namespace tools
 {
-/** Inputs and settings of `morphreg build-model`. */
-struct BuildModelOptions
-{
-  std::vector<std::string> meshes; ///< mesh files in correspondence
-  std::string directory;           ///< a folder of meshes (population.json's heads if present, else every mesh)
-  std::string regions;             ///< region label file; empty: one global region
-  std::string landmark_vertices;   ///< landmark vertex file; empty: none
-  std::string ict_directory;       ///< ICT-FaceKit folder: the 7-region ICT model instead of meshes
-  int ict_samples = 300;
-  std::uint64_t seed = 1;
-  std::string out = "model.h5";
-  ModelBuilderSettings settings;
-  bool quiet = false;
-};
-
-/** Builds and saves the model; returns a summary for reports. */
-nlohmann::json
-buildModelFile (const BuildModelOptions& options);
-
-/** Adds the ModelBuilder settings (--components, --variance, --blend-rings, --no-procrustes) to \a command. */
-void
-addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings);
-
 /** Inputs and settings of `morphreg register`. */
 struct RegisterOptions
 {
@@ -107,6 +86,14 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
 std::string
 reportPath (const RegisterOptions& options);
 
+/** registerScan() for one scan of a study: its progress kept off the console (several scans run at once), a fit
+ *  that failed its checks returned as its written report, and any other failure (a bad file, a scan the follow-up
+ *  refuses) recorded as a report {"status": "failed", "failure": why} written in the registration's place.
+ *  \return the scan's report
+ */
+nlohmann::json
+registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up = {});
+
 /** Settings of `register --scans` beyond the single-scan ones. */
 struct BatchOptions
 {
@@ -131,5 +118,53 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch);
  *  to \a command. */
 void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options);
+/** Inputs and settings of `morphreg build-model`. */
+struct BuildModelOptions
+{
+  std::vector<std::string> meshes; ///< mesh files in correspondence
+  std::string directory;           ///< a folder of meshes (population.json's heads if present, else every mesh)
+  std::string regions;             ///< region label file; empty: one global region
+  std::string landmark_vertices;   ///< landmark vertex file; empty: none
+  std::string ict_directory;       ///< ICT-FaceKit folder: the 7-region ICT model instead of meshes
+  std::string from_scans;          ///< a folder of raw scans or a manifest CSV (morphreg/io/scan_manifest.h)
+  std::string report_dir;          ///< from_scans: the per-scan outputs and summary (default: <out>_scans)
+  RegisterOptions registration;    ///< from_scans: its model registers the scans, its settings the fits
+  ResamplingOptions resampling;    ///< from_scans: the resampling of each fit
+  int ict_samples = 300;
+  std::uint64_t seed = 1;
+  std::string out = "model.h5";
+  ModelBuilderSettings settings;
+  bool quiet = false;
+};
+
+/** Builds and saves the model; returns a summary for reports. */
+nlohmann::json
+buildModelFile (const BuildModelOptions& options);
+
+/** Adds the ModelBuilder settings (--components, --variance, --blend-rings, --no-procrustes) to \a command. */
+void
+addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings);
+
+/** The meshes of a folder and, from its population.json, the profile line of their topology. */
+struct MeshFolder
+{
+  std::vector<std::string> files;
+  std::vector<int> profile_line; ///< empty without population.json or without "profile_line" in it
+};
+
+/** The meshes of \a directory: the heads listed in its population.json (written by synth and demo), else every
+ *  .ply .obj .vtk .stl file in name order. */
+MeshFolder
+readMeshFolder (const std::string& directory);
+
+/** Registers and resamples every scan of options.from_scans with options.registration's model, writing each
+ *  scan's report, fit and resampled mesh and a summary into \a report_dir; the scans that fail are reported and
+ *  left out. Builds the model from the resampled meshes (the registering model's regions, landmarks and profile
+ *  line carried over unless options give region or landmark files); adds the scans' counts to \a summary.
+ *  Throws InvalidInputError if fewer than two scans remain.
+ */
+MorphableModel::Ptr
+buildFromScans (const BuildModelOptions& options, const std::string& report_dir, nlohmann::json& summary);
+
 } // namespace tools
 } // namespace morphreg

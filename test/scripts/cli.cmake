@@ -20,7 +20,8 @@ endfunction()
 
 add_test(NAME CliTest.VersionPrints COMMAND morphreg_cli --version)
 set_tests_properties(CliTest.VersionPrints PROPERTIES PASS_REGULAR_EXPRESSION "morphreg [0-9]+\\.[0-9]+")
-foreach(command synth build-model register resample fit-photos warp render demo model-info merge-summaries)
+foreach(command synth build-model register resample fit-photos warp render demo model-info merge-summaries
+    evaluate-model)
   add_test(NAME CliTest.Help.${command} COMMAND morphreg_cli ${command} --help)
   set_tests_properties(CliTest.Help.${command} PROPERTIES
     PASS_REGULAR_EXPRESSION "Usage: .*${command}.*-q,--quiet.*-v,--verbose")
@@ -55,7 +56,7 @@ morphreg_cli_expect_exit(BuildModelCorruptRegionsIsNamed 1 "corrupt_regions.json
   build-model --dir ${cli_dir}/small --regions ${cli_dir}/corrupt_regions.json --out ${cli_dir}/bad.h5)
 morphreg_cli_expect_exit(BuildModelWrongRegionCountIsNamed 1 "synth/regions.json: region labels: 9602 labels for 3458"
   build-model --dir ${cli_dir}/small --regions ${cli_dir}/synth/regions.json --out ${cli_dir}/bad.h5)
-morphreg_cli_expect_exit(BuildModelNeedsInput 2 "--mesh, --dir or --from-ict" build-model)
+morphreg_cli_expect_exit(BuildModelNeedsInput 2 "--mesh, --dir, --from-ict or --from-scans" build-model)
 morphreg_cli_expect_exit(BuildModelOneMeshFails 1 "at least two meshes" build-model --mesh ${cli_dir}/small/head_000.ply)
 set_tests_properties(CliTest.BuildModelMismatchedMeshIsNamed CliTest.BuildModelCorruptRegionsIsNamed
   CliTest.BuildModelWrongRegionCountIsNamed CliTest.BuildModelOneMeshFails PROPERTIES
@@ -265,6 +266,48 @@ morphreg_cli_expect_exit(MergeSummariesRejectsOtherJson 1 "batch.csv.json: not a
 file(WRITE ${cli_dir}/batch.csv.json "{\"rows\": []}")
 set_tests_properties(CliTest.BatchDuplicateIdIsNamed CliTest.BatchShardOutOfRangeIsNamed CliTest.BatchShardAutoNeedsSlurm
   CliTest.BatchNeedsOutDir PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans")
+
+# build-model --from-scans: the batch scans registered with the small model and resampled, a flat scan among them
+# reported and left out; the model keeps the small model's regions and landmarks. With one usable scan it fails and
+# leaves nothing behind.
+file(WRITE ${cli_dir}/from_scans.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\nbatch_scans/scan_1.pcd\nbatch_scans/scan_2.pcd\n")
+file(WRITE ${cli_dir}/from_one_scan.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\n")
+add_test(NAME CliTest.BuildModelFromScans
+  COMMAND morphreg_cli build-model --from-scans ${cli_dir}/from_scans.csv --model ${cli_dir}/small_model.h5
+          --fit-components 8 --components 2 --quiet --out ${cli_dir}/from_scans.h5)
+set_tests_properties(CliTest.BuildModelFromScans PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
+  FIXTURES_SETUP cli_from_scans
+  PASS_REGULAR_EXPRESSION "3 of 4 scans registered and resampled, 1 left out.*from_scans.h5: 3458 vertices, 7 region\\(s\\), components per region \\[2,2,2,2,2,2,2\\], 45 landmarks")
+add_test(NAME CliTest.BuildModelFromScansReportsTheBadScan
+  COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/from_scans_scans/summary.json ${cli_dir}/from_scans_scans/scan_0.json)
+set_tests_properties(CliTest.BuildModelFromScansReportsTheBadScan PROPERTIES FIXTURES_REQUIRED cli_from_scans
+  PASS_REGULAR_EXPRESSION "\"included\": 3,\n  \"left_out\": 1,.*\"id\": \"scan_flat\",\n *\"included\": false,\n *\"reason\": \"[^\"]*lie in a plane.*\"coverage\": 0\\.[0-9]+,.*\"components\": \\[\n *8\n *\\],")
+morphreg_cli_expect_exit(BuildModelFromOneScanFails 1 "1 of 2 scans registered and resampled, 1 left out; a model needs at least two"
+  build-model --from-scans ${cli_dir}/from_one_scan.csv --model ${cli_dir}/small_model.h5 --quiet
+  --out ${cli_dir}/from_one_scan.h5)
+add_test(NAME CliTest.BuildModelFromOneScanLeavesNothing
+  COMMAND ${CMAKE_COMMAND} "-DPATHS=${cli_dir}/from_one_scan.h5|${cli_dir}/from_one_scan_scans"
+          -P ${cli_scripts}/expect_absent.cmake)
+set_tests_properties(CliTest.BuildModelFromOneScanFails PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
+  FIXTURES_SETUP cli_from_one_scan)
+set_tests_properties(CliTest.BuildModelFromOneScanLeavesNothing PROPERTIES FIXTURES_REQUIRED cli_from_one_scan)
+morphreg_cli_expect_exit(BuildModelFromScansNeedsModel 2 "needs --model"
+  build-model --from-scans ${cli_dir}/from_scans.csv --out ${cli_dir}/bad.h5)
+
+# evaluate-model: the small model against two of its own heads and the heads of the scans' model.
+add_test(NAME CliTest.EvaluateModelPrintsJson
+  COMMAND morphreg_cli evaluate-model --model ${cli_dir}/small_model.h5 --meshes ${cli_dir}/small/head_010.ply
+          ${cli_dir}/small/head_011.ply --training ${cli_dir}/small --components 0,8 --samples 50 --json --quiet)
+set_tests_properties(CliTest.EvaluateModelPrintsJson PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  PASS_REGULAR_EXPRESSION "\"global_components\": 8,.*\"components\": 8,\n *\"generalisation\": {\n *\"mean_mm\": [0-9.e-]+,.*\"specificity\": {\n *\"mean_mm\": [0-9.]+")
+add_test(NAME CliTest.EvaluateModelFromScansTable
+  COMMAND morphreg_cli evaluate-model --model ${cli_dir}/from_scans.h5 --meshes ${cli_dir}/small/head_005.ply
+          --training ${cli_dir}/from_scans_scans/scan_0.ply ${cli_dir}/from_scans_scans/scan_1.ply --quiet)
+set_tests_properties(CliTest.EvaluateModelFromScansTable PROPERTIES FIXTURES_REQUIRED "cli_small;cli_from_scans"
+  PASS_REGULAR_EXPRESSION "components  compactness  generalisation mm \\(sd\\)  specificity mm \\(sd\\)\n +1 +0\\.[0-9]+ +[0-9.]+ \\([0-9.]+\\)  [0-9.]+ \\(")
+morphreg_cli_expect_exit(EvaluateModelTooManyComponentsIsNamed 1 "--components 99: "
+  evaluate-model --model ${cli_dir}/small_model.h5 --meshes ${cli_dir}/small/head_010.ply --components 99)
+set_tests_properties(CliTest.EvaluateModelTooManyComponentsIsNamed PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 
 # The real head-and-shoulders scan as a new user registers it (skipped without ../shared/data): ICT at 30
 # components, no landmarks, the README's real-scan options; exit 0 means the fit passed its checks.
