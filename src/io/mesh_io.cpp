@@ -8,7 +8,6 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 
 #include <pcl/conversions.h>
-#include <pcl/io/obj_io.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/io/vtk_io.h>
 #include <pcl/io/vtk_lib_io.h>
@@ -48,12 +47,12 @@ savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh)
 {
   requireExtension (path, ".ply .obj .vtk", "mesh");
   const std::string ext = fileExtension (path);
+  if (ext == ".obj")
+    return saveObjFile (path, mesh);
   writeAtomically (path, [&] (const std::string& partial) {
     const int status = callPclIo (path, [&] {
       if (ext == ".ply")
         return pcl::io::savePLYFileBinary (partial, mesh);
-      if (ext == ".obj")
-        return pcl::io::saveOBJFile (partial, mesh);
       return pcl::io::saveVTKFile (partial, mesh);
     });
     if (status < 0)

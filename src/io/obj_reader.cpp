@@ -1,6 +1,7 @@
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
 
+#include <morphreg/io/atomic_file.h>
 #include <morphreg/io/mesh_io.h>
 
 #include <pcl/conversions.h>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <sstream>
 
 namespace morphreg
 {
@@ -219,6 +221,31 @@ readObjFile (const std::string& path)
   }
   checkRangesAtEnd (reader, ranges);
   return toPolygonMesh (std::move (content));
+}
+
+void
+saveObjFile (const std::string& path, const pcl::PolygonMesh& mesh)
+{
+  pcl::PointCloud<pcl::PointNormal> points;
+  pcl::fromPCLPointCloud2 (mesh.cloud, points);
+  bool normals = false;
+  for (const auto& field : mesh.cloud.fields)
+    normals = normals || field.name == "normal_x";
+  std::ostringstream text;
+  text.precision (9);
+  text << "# " << points.size () << " vertices, " << mesh.polygons.size () << " faces\n";
+  for (const auto& p : points)
+    text << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  if (normals)
+    for (const auto& p : points)
+      text << "vn " << p.normal_x << ' ' << p.normal_y << ' ' << p.normal_z << '\n';
+  for (const auto& polygon : mesh.polygons) {
+    text << 'f';
+    for (const auto corner : polygon.vertices)
+      text << ' ' << corner + 1 << (normals ? "//" + std::to_string (corner + 1) : std::string ());
+    text << '\n';
+  }
+  writeFileAtomically (path, text.str ());
 }
 
 namespace validation

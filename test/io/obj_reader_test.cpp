@@ -90,3 +90,16 @@ TEST (ObjReaderTest, LinesThatCrashedPclsReaderAreReadOrRefused)
       morphreg::readObjFile (writeObj (dir, "huge.obj", "v 0 0 0\nv 10 0 777777777777777777777777777777777777777\n")),
       morphreg::FormatError);
 }
+
+TEST (ObjReaderTest, WhatMorphregWritesItReadsBack)
+{
+  TempDirectory dir;
+  morphreg::TriangleMesh mesh;
+  mesh.vertices = Eigen::Matrix3Xd::Random (3, 5) * 100.0;
+  mesh.triangles.resize (3, 3);
+  mesh.triangles << 0, 1, 2, 1, 2, 3, 2, 3, 4;
+  morphreg::saveTriangleMesh (dir.file ("mesh.obj"), mesh); // with vertex normals
+  const morphreg::TriangleMesh back = morphreg::loadTriangleMesh (dir.file ("mesh.obj"));
+  EXPECT_TRUE (back.vertices.isApprox (mesh.vertices, 1e-6));
+  EXPECT_EQ (back.triangles, mesh.triangles);
+}

@@ -31,6 +31,15 @@ loadPolygonMesh (const std::string& path);
 pcl::PolygonMesh
 readObjFile (const std::string& path);
 
+/** \brief Writes \a mesh as OBJ with morphreg's own writer, atomically with every write checked (a text file cut
+ *  at a line end would still look whole, so PCL's unchecked writer is not used): v lines, vn lines when the cloud
+ *  has normals, f lines.
+ *  \param[in] path the OBJ file
+ *  \param[in] mesh the mesh (or a cloud as a mesh without polygons)
+ */
+void
+saveObjFile (const std::string& path, const pcl::PolygonMesh& mesh);
+
 /** \brief Saves \a mesh (.ply binary, .obj, .vtk), whole or not at all (written under a temporary name, checked to
  *  be complete, then renamed); throws IoError naming the file on failure, a full disk included.
  *  \param[in] path the file; its extension chooses the format

@@ -7,7 +7,6 @@
 #include <morphreg/io/mesh_io.h>
 
 #include <pcl/conversions.h>
-#include <pcl/io/obj_io.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 
@@ -50,15 +49,16 @@ saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud)
   if (cloud.empty ())
     throw InvalidInputError (path + ": refusing to write an empty cloud");
   const std::string ext = fileExtension (path);
+  if (ext == ".obj") {
+    pcl::PolygonMesh vertices_only; // OBJ holds clouds as a mesh without faces
+    pcl::toPCLPointCloud2 (cloud, vertices_only.cloud);
+    return saveObjFile (path, vertices_only);
+  }
   writeAtomically (path, [&] (const std::string& partial) {
     const int status = callPclIo (path, [&] {
       if (ext == ".pcd")
         return pcl::io::savePCDFileBinary (partial, cloud);
-      if (ext == ".ply")
-        return pcl::io::savePLYFileBinary (partial, cloud);
-      pcl::PolygonMesh vertices_only; // OBJ holds clouds as a mesh without faces
-      pcl::toPCLPointCloud2 (cloud, vertices_only.cloud);
-      return pcl::io::saveOBJFile (partial, vertices_only);
+      return pcl::io::savePLYFileBinary (partial, cloud);
     });
     if (status < 0)
       throw IoError (path + ": cannot write the point cloud");
