@@ -14,6 +14,7 @@ PACKAGES=(
   libtinyxml2-dev       # MeshLab .pp landmark files
   xvfb xauth            # headless rendering for the visualiser and its tests
   python3 python3-h5py python3-numpy  # independent HDF5 writer used as a test fixture
+  python3-dev pybind11-dev python3-pytest python3-open3d  # the Python module, its tests and its Open3D example
   clang-format          # the layout check (StyleTest.ClangFormat, .clang-format)
   doxygen               # the API reference (`docs` target) and its warning check (ctest doxygen_docs)
 )

@@ -2,11 +2,12 @@
 // "Fitting to two orthogonal photographs"),
 // written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.
 #include "commands.h"
-#include "distance_statistics.h"
 #include "option_checks.h"
 #include "output_files.h"
 
+#include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
+#include <morphreg/photo/two_view_settings.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
@@ -34,18 +35,10 @@ namespace
 /** Coefficients beyond this many prior standard deviations are warned about (the report counts them). */
 constexpr double kCoefficientWarningSigma = 3.0;
 
-struct FitPhotosOptions
+struct FitPhotosOptions : TwoViewSettings
 {
   std::string profile, frontal, model, photo, truth, report;
   std::string out = "fitted.ply";
-  std::string approach = "joint";
-  double lambda1 = TwoViewFitting::kDefaultSmoothnessWeight;
-  double lambda2 = TwoViewFitting::kDefaultShapePriorWeight;
-  std::vector<int> components{TwoViewFitting::kDefaultComponents};
-  double coefficient_limit = TwoViewFitting::kDefaultCoefficientLimit;
-  double frontal_weight = TwoViewFitting::kDefaultFrontalWeight;
-  double contour_weight = 0.0;
-  double sagittal_weight = TwoViewFitting::kDefaultSagittalWeight;
   double colour_max = 5.0;
   bool quiet = false;
 };
@@ -112,29 +105,11 @@ fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model
   if (model->profileLine ().empty ())
     throw InvalidInputError (options.model + ": the model has no profile line; build it with `build-model --dir` on "
                                              "the output of synth or demo (their population.json holds it)");
-  TwoViewFitting fitting (model);
-  fitting.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
-                                                                 : model->firstComponents (options.components));
-  fitting.setSmoothnessWeight (options.lambda1);
-  fitting.setShapePriorWeight (options.lambda2);
-  fitting.setCoefficientLimit (options.coefficient_limit);
-  fitting.setFrontalWeight (options.frontal_weight);
-  fitting.setContourLandmarkWeight (options.contour_weight);
-  fitting.setSagittalWeight (options.sagittal_weight);
   if (!options.quiet)
     std::cerr << "fitting " << options.model << " to " << options.profile
               << (options.approach == "profile" ? "" : " and " + options.frontal) << " (" << options.approach << ")\n";
-  try {
-    if (options.approach == "profile")
-      return fitting.fitProfile (profile);
-    if (options.approach == "tps")
-      return fitting.fitTpsIcp (profile, *frontal);
-    return fitting.fitJoint (profile, *frontal);
-  }
-  catch (const InvalidInputError& e) { // the annotations were read, but the model cannot be fitted to them
-    throw InvalidInputError ("fit-photos: " + options.profile +
-                             (options.approach == "profile" ? "" : " and " + options.frontal) + ": " + e.what ());
-  }
+  return fitTwoViews (model, profile, frontal ? &*frontal : nullptr, options,
+                      options.profile + (options.approach == "profile" ? "" : " and " + options.frontal));
 }
 
 /** The report's warnings (implausible coefficients, outline landmarks left out), the latter also on stderr. */
@@ -154,19 +129,6 @@ fitWarnings (const FitPhotosOptions& options, const TwoViewFit& fit)
               << " mark no fixed point of the face and are left out (--contour-weight to use them)\n";
   }
   return warnings;
-}
-
-nlohmann::json
-settingsJson (const FitPhotosOptions& options)
-{
-  return {{"approach", options.approach},
-          {"components", options.components},
-          {"lambda1", options.lambda1},
-          {"lambda2", options.lambda2},
-          {"coefficient_limit_sigma", options.coefficient_limit},
-          {"frontal_weight", options.frontal_weight},
-          {"contour_weight", options.contour_weight},
-          {"sagittal_weight", options.sagittal_weight}};
 }
 
 /** The fit's summary line on stdout, and a warning on stderr when a coefficient is implausibly large. */
@@ -233,7 +195,7 @@ runFitPhotos (const FitPhotosOptions& options)
   report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
   report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
   report["warnings"] = fitWarnings (options, fit);
-  report["settings"] = settingsJson (options);
+  report["settings"] = toJson (static_cast<const TwoViewSettings&> (options));
   printFitSummary (options, fit, frontal.has_value ());
   const std::string colouring = writeFittedMesh (options, fit, frontal, report);
   report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
@@ -265,11 +227,11 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--photo", options->photo, "frontal photo (PNG/JPEG): colour the fitted head from it");
   command->add_option ("--truth", options->truth,
                        "true head and pose (JSON of `synth --photos`): report the fit's error, colour by it");
-  command->add_option ("--smoothness", options->lambda1, "lambda_1, the smoothness prior across regions (> 0)")
+  command->add_option ("--smoothness", options->smoothness, "lambda_1, the smoothness prior across regions (> 0)")
       ->check (positive ())
       ->capture_default_str ();
   command
-      ->add_option ("--shape-prior", options->lambda2,
+      ->add_option ("--shape-prior", options->shape_prior,
                     "lambda_2, the shape prior (coefficients in prior standard deviations, >= 0)")
       ->check (nonNegative ())
       ->capture_default_str ();

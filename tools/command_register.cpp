@@ -1,13 +1,13 @@
 // `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
-#include "distance_statistics.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
 
 #include <morphreg/common/cloud_matrix.h>
+#include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
@@ -16,16 +16,14 @@
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/registration/fit_plausibility.h>
+#include <morphreg/registration/iteration_progress.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/registration_result_json.h>
+#include <morphreg/registration/registration_settings.h>
+#include <morphreg/registration/scan_units.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
-
-#include <pcl/registration/correspondence_rejection_distance.h>
-#include <pcl/registration/correspondence_rejection_median_distance.h>
-#include <pcl/registration/correspondence_rejection_one_to_one.h>
-#include <pcl/registration/correspondence_rejection_trimmed.h>
 
 #include <algorithm>
 #include <chrono>
@@ -63,12 +61,6 @@ colourScale (const Eigen::VectorXd& residuals, double requested)
   return std::max (percentile, 1e-3);
 }
 
-RobustLoss
-robustLoss (const std::string& name)
-{
-  return name == "none" ? RobustLoss::none : name == "huber" ? RobustLoss::huber : RobustLoss::tukey;
-}
-
 /** \a scan without its missing points (PCL marks them NaN). An infinite coordinate is no such mark but a broken
  *  file: those points stay for requireRegistrableScan to reject. */
 void
@@ -93,56 +85,15 @@ loadScan (const std::string& path)
   return scan;
 }
 
-/** Throws when the scan's size, against the model's, is beyond a head's in every unit by orders of magnitude (a
- *  kilometre-sized or micrometre-sized "head"): the file is corrupt or not a scan. */
-void
-requireHeadScale (const LengthUnitGuess& unit, const std::string& scan)
-{
-  constexpr double kLargest = 1e4, kSmallest = 1e-5; // a metre scan of a head is about 1e-3 of the model's size
-  if (unit.size_ratio <= kLargest && unit.size_ratio >= kSmallest)
-    return;
-  std::ostringstream message;
-  message << std::setprecision (3) << scan << ": the scan is " << unit.size_ratio
-          << " times the model's size, which is no head in any unit (mm, cm, m, in); is the file corrupt? ("
-          << unit.reason << ")";
-  throw InvalidInputError (message.str ());
-}
-
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
                           const MorphableModel& model, std::ostream& out)
 {
-  LengthUnitGuess unit;
-  if (options.units == "auto") {
-    const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
-    const Eigen::Vector3d centroid = mean.rowwise ().mean ();
-    const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
-    unit = guessLengthUnit (pointsOf (scan), model_radius);
-    requireHeadScale (unit, options.scan);
-  }
-  else {
-    unit.unit = parseLengthUnit (options.units);
-    unit.reason = "given: --units " + options.units;
-  }
-  const auto to_mm = static_cast<float> (millimetresPer (unit.unit));
-  if (to_mm != 1.0f) {
-    for (auto& point : scan)
-      point.getVector3fMap () *= to_mm;
+  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
+  if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
-  }
   return unit;
-}
-
-/** The plausibility checks of the finished fit (the model and the scan in mm). */
-FitPlausibility
-checkFit (Icp& icp, const MorphableModel& model)
-{
-  const Eigen::VectorXd sigma = model.variances (icp.getComponentSelection ()).cwiseSqrt ();
-  const Eigen::VectorXd in_sigma = icp.getShapeCoefficients ().cwiseQuotient (sigma.cwiseMax (1e-12));
-  const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
-  return checkFitPlausibility (std::cbrt (linear.determinant ()), icp.getFittedVertices (), icp.getVertexResiduals (),
-                               in_sigma, icp.getRegistrationReport ());
 }
 
 /** The scan landmarks of the file that the model also has; the others are named on \a warnings and skipped. The
@@ -154,14 +105,8 @@ modelLandmarks (const RegisterOptions& options, const MorphableModel& model,
   LandmarkPositions landmarks = loadLandmarks (options.landmarks);
   requireLandmarksOnScan (landmarks, pointsOf (scan), options.landmarks);
   std::string skipped;
-  for (auto it = landmarks.begin (); it != landmarks.end ();)
-    if (model.landmarks ().count (it->first)) {
-      ++it;
-    }
-    else {
-      skipped += " " + it->first;
-      it = landmarks.erase (it);
-    }
+  for (const std::string& id : keepKnownLandmarks (landmarks, model.landmarks ()))
+    skipped += " " + id;
   if (!skipped.empty () && !options.quiet)
     warnings << options.landmarks << ": the model has no landmark" << skipped << "; using the other "
              << landmarks.size () << '\n';
@@ -170,130 +115,25 @@ modelLandmarks (const RegisterOptions& options, const MorphableModel& model,
   return landmarks;
 }
 
-void
-configureIcp (Icp& icp, const RegisterOptions& options, const MorphableModel::Ptr& model)
-{
-  icp.setModel (model);
-  icp.setComponentSelection (options.components.size () == 1 ? model->firstComponents (options.components.front ())
-                                                             : model->firstComponents (options.components));
-  icp.setMaximumIterations (options.iterations);
-  icp.setSimilarityIterations (options.similarity_iterations);
-  if (options.max_distance > 0.0)
-    icp.setMaxCorrespondenceDistance (options.max_distance);
-  icp.setPointToPlane (options.point_to_plane, options.tangential_weight);
-  icp.setShapePriorWeight (options.shape_prior);
-  icp.setAreaWeighting (options.area_weighting);
-  icp.setRobustLoss (robustLoss (options.loss), options.loss_scale);
-  icp.setTargetSmoothing (options.target_smoothing);
-  icp.setTargetUnit (LengthUnit::millimetre); // the scan is converted on loading
-  // A chain replaces the default one (the target boundary rejector): it stays first.
-  icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
-  if (options.reject_distance > 0.0) {
-    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
-    rejector->setMaximumDistance (static_cast<float> (options.reject_distance));
-    icp.addCorrespondenceRejector (rejector);
-  }
-  if (options.reject_median > 0.0) {
-    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorMedianDistance> ();
-    rejector->setMedianFactor (options.reject_median);
-    icp.addCorrespondenceRejector (rejector);
-  }
-  if (options.reject_one_to_one)
-    icp.addCorrespondenceRejector (std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> ());
-  if (options.reject_trimmed > 0.0) {
-    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorTrimmed> ();
-    rejector->setOverlapRatio (static_cast<float> (options.reject_trimmed));
-    icp.addCorrespondenceRejector (rejector);
-  }
-}
-
 /** Prints one progress line per iteration: the kept correspondences and their RMS distance. */
 void
 showIterations (Icp& icp, const Progress& progress)
 {
-  auto iteration = std::make_shared<int> (0);
-  std::function<Icp::UpdateVisualizerCallbackSignature> callback = [&progress, iteration] (
-                                                                       const pcl::PointCloud<pcl::PointNormal>& source,
-                                                                       const pcl::Indices& source_indices,
-                                                                       const pcl::PointCloud<pcl::PointNormal>& target,
-                                                                       const pcl::Indices& target_indices) {
-    if (source_indices.empty ())
-      return; // PCL's registerVisualizationCallback calls once at registration, before any iteration
-    double squares = 0.0;
-    for (std::size_t k = 0; k < source_indices.size (); ++k)
-      squares +=
-          (source[source_indices[k]].getVector3fMap () - target[target_indices[k]].getVector3fMap ()).squaredNorm ();
+  watchIterations (icp, [&progress] (int iteration, std::size_t correspondences, double rms) {
     std::ostringstream detail;
-    detail << ' ' << source_indices.size () << " correspondences, RMS " << std::fixed << std::setprecision (3)
-           << std::sqrt (squares / std::max<std::size_t> (source_indices.size (), 1)) << " mm";
-    progress.step (++*iteration, detail.str ());
-  };
-  icp.registerVisualizationCallback (callback);
+    detail << ' ' << correspondences << " correspondences, RMS " << std::fixed << std::setprecision (3) << rms << " mm";
+    progress.step (iteration, detail.str ());
+  });
 }
 
-nlohmann::json
-similarityJson (const Eigen::Matrix4d& transform)
-{
-  const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3> ();
-  const double scale = std::cbrt (linear.determinant ());
-  const Eigen::Matrix4d rows = transform.transpose (); // row-major order in the file
-  const Eigen::Matrix3d rotation_rows = (linear / scale).transpose ();
-  return {{"matrix_row_major", std::vector<double> (rows.data (), rows.data () + 16)},
-          {"scale", scale},
-          {"rotation_row_major", std::vector<double> (rotation_rows.data (), rotation_rows.data () + 9)},
-          {"translation", {transform (0, 3), transform (1, 3), transform (2, 3)}}};
-}
-
-nlohmann::json
-iterationsJson (const IcpReport& report)
-{
-  nlohmann::json history = nlohmann::json::array ();
-  for (const IcpIteration& it : report.history)
-    history.push_back ({{"stage", toString (it.stage)},
-                        {"mean_squared_error_mm2", it.error},
-                        {"correspondences", it.correspondences},
-                        {"kept", it.kept},
-                        {"seconds", it.seconds}});
-  return {{"similarity", report.similarity_iterations},
-          {"shape", report.shape_iterations},
-          {"total", report.history.size ()},
-          {"history", history}};
-}
-
-nlohmann::json
-coefficientsJson (const MorphableModel& model, const ComponentSelection& selection, const Eigen::VectorXd& m)
-{
-  nlohmann::json coefficients;
-  for (int j = 0; j < model.numRegions (); ++j) {
-    const Eigen::VectorXd part = m.segment (selection.offset (j), selection.count (j));
-    coefficients[model.region (j).name] = std::vector<double> (part.data (), part.data () + part.size ());
-  }
-  return coefficients;
-}
-
+/** The registration settings of the report, with the landmark file. */
 nlohmann::json
 settingsJson (const RegisterOptions& options)
 {
-  return {{"iterations", options.iterations},
-          {"similarity_iterations", options.similarity_iterations},
-          {"max_correspondence_distance_mm", options.max_distance},
-          {"components", options.components},
-          {"point_to_plane", options.point_to_plane},
-          {"tangential_weight", options.tangential_weight},
-          {"shape_prior_weight", options.shape_prior},
-          {"area_weighting", options.area_weighting},
-          {"landmark_weight", options.landmark_weight},
-          {"robust_loss", options.loss},
-          {"robust_scale_mm", options.loss_scale},
-          {"reject_distance_mm", options.reject_distance},
-          {"reject_median_factor", options.reject_median},
-          {"reject_one_to_one", options.reject_one_to_one},
-          {"reject_trimmed_ratio", options.reject_trimmed},
-          {"landmarks", options.landmarks},
-          {"units", options.units},
-          {"target_smoothing", options.target_smoothing}};
+  nlohmann::json settings = toJson (static_cast<const RegistrationSettings&> (options));
+  settings["landmarks"] = options.landmarks;
+  return settings;
 }
-
 /** Vertex distances between the fit and the true mesh (model topology, scan frame), over every vertex and over
  *  the vertices the scan covers (those with a residual); printed and reported. */
 nlohmann::json
@@ -389,44 +229,18 @@ scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthU
           {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
 }
 
-/** The report's residual statistics: scan to model over the correspondences, and per model vertex. */
-nlohmann::json
-residualsJson (const IcpReport& icp_report, const Eigen::VectorXd& residuals, double colour_scale)
-{
-  return {{"scan_to_model",
-           {{"correspondences", icp_report.correspondences},
-            {"mean", icp_report.fitness_mean},
-            {"median", icp_report.fitness_median},
-            {"rms", icp_report.fitness_rms}}},
-          {"per_vertex", distanceStatistics (residuals)},
-          {"colour_scale_max", colour_scale}};
-}
-
 /** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
 nlohmann::json
 fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model, const nlohmann::json& scan,
            double colour_scale)
 {
-  const IcpReport& icp_report = icp.getRegistrationReport ();
-  const FitPlausibility checks = checkFit (icp, model);
-  return {{"status", checks.plausible ? "ok" : "failed"},
-          {"checks", {{"passed", checks.plausible}, {"failures", checks.failures}}},
-          {"units", "mm"},
-          {"scan", scan},
-          {"initialisation",
-           {{"method", icp_report.initialisation},
-            {"detail", icp_report.initialisation_detail},
-            {"confidence", icp_report.initialisation_confidence},
-            {"head_points", icp_report.head_points}}},
-          {"model", {{"file", options.model}, {"vertices", model.numVertices ()}, {"regions", model.numRegions ()}}},
-          {"settings", settingsJson (options)},
-          {"similarity", similarityJson (icp.getFinalTransformation ().cast<double> ())},
-          {"initial_similarity", similarityJson (icp_report.initial_transformation)},
-          {"coefficients", coefficientsJson (model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
-          {"residuals_mm", residualsJson (icp_report, icp.getVertexResiduals (), colour_scale)},
-          {"iterations", iterationsJson (icp_report)},
-          {"termination", {{"reason", toString (icp_report.termination)}, {"message", icp_report.message}}},
-          {"fitted_mesh", options.out}};
+  nlohmann::json report = registrationResultJson (icp, model);
+  report["scan"] = scan;
+  report["model"] = {{"file", options.model}, {"vertices", model.numVertices ()}, {"regions", model.numRegions ()}};
+  report["settings"] = settingsJson (options);
+  report["residuals_mm"]["colour_scale_max"] = colour_scale;
+  report["fitted_mesh"] = options.out;
+  return report;
 }
 
 /** The fit's one-paragraph summary on \a out; throws FitCheckFailure when the report failed its checks. */
@@ -477,7 +291,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const auto scan = loadScan (options.scan);
   const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
   Icp icp;
-  configureIcp (icp, options, model);
+  configureRegistration (icp, options, model);
   if (!options.landmarks.empty ())
     icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
   icp.setInputTarget (scan);

@@ -5,6 +5,7 @@
 #include <morphreg/model/model_builder.h>
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/registration/registration_settings.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -26,8 +27,8 @@ class RegistrationVisualizer;
 
 namespace tools
 {
-/** Inputs and settings of `morphreg register`. */
-struct RegisterOptions
+/** Inputs and outputs of `morphreg register`; the registration settings are the library's, by the same names. */
+struct RegisterOptions : RegistrationSettings
 {
   std::string scan, model, out = "fitted.ply";
   std::string scans;      ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
@@ -35,24 +36,7 @@ struct RegisterOptions
   std::string screenshot; ///< empty: none
   int width = 1280, height = 960;
   std::string landmarks, truth;
-  int iterations = 100;
-  int similarity_iterations = 60; ///< at most this many of the iterations fit the similarity alone
-  double max_distance = 0.0;      ///< mm, 0 = no limit
-  std::vector<int> components{10};
-  bool point_to_plane = true;
-  double tangential_weight = 0.02; ///< point-to-point share kept along the tangent plane
-  double shape_prior = 3.0;        ///< lambda_2
-  double landmark_weight = 1.0;    ///< one landmark counts as this many correspondences (MorphableICP default)
-  bool area_weighting = false;     ///< weigh model vertices by their surface area
-  std::string loss = "tukey";
-  double loss_scale = 0.0;
-  double reject_distance = 0.0;
-  double reject_median = 0.0;
-  bool reject_one_to_one = false;
-  double reject_trimmed = 0.0;
-  double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
-  std::string units = "auto";   ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
-  bool target_smoothing = true; ///< fit to the scan points projected onto their neighbourhood's plane
+  double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
   bool quiet = false;
 };
 

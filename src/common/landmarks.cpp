@@ -175,4 +175,19 @@ frontalLandmarks (const LandmarkVertices& landmarks)
   return selected;
 }
 
+std::vector<std::string>
+keepKnownLandmarks (LandmarkPositions& landmarks, const LandmarkVertices& known)
+{
+  std::vector<std::string> removed;
+  for (auto it = landmarks.begin (); it != landmarks.end ();)
+    if (known.count (it->first)) {
+      ++it;
+    }
+    else {
+      removed.push_back (it->first);
+      it = landmarks.erase (it);
+    }
+  return removed;
+}
+
 } // namespace morphreg

@@ -69,6 +69,14 @@ requireOneTargetPerPoint (const LandmarkPositions& source, const LandmarkPositio
 /** \brief Named landmark vertices of a mesh or model: id -> vertex index. */
 using LandmarkVertices = std::map<std::string, int>;
 
+/** \brief Keeps the landmarks of \a landmarks whose id is one of \a known (e.g. a model's landmark vertices).
+ *  \param[in,out] landmarks the landmarks, left with the known ones
+ *  \param[in] known the ids to keep
+ *  \return the ids removed, in order
+ */
+std::vector<std::string>
+keepKnownLandmarks (LandmarkPositions& landmarks, const LandmarkVertices& known);
+
 /** \brief The 40 frontal-photo landmark ids (docs/landmarks.md 1-40, thesis table 1), in that order.
  *  \return the ids
  */

@@ -1,11 +1,11 @@
-#include "distance_statistics.h"
+#include <morphreg/common/distance_statistics.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace morphreg
-{
-namespace tools
 {
 std::vector<double>
 sortedFinite (const Eigen::VectorXd& values)
@@ -37,5 +37,4 @@ distanceStatistics (const Eigen::VectorXd& values)
           {"max", finite.back ()}};
 }
 
-} // namespace tools
 } // namespace morphreg

@@ -1,0 +1,17 @@
+# The Python module (python/), on by default when Python 3's headers and pybind11 are found. Debian's interpreter
+# (/usr/bin/python3) is preferred over others on the PATH: numpy, pytest and Open3D come from Debian's packages.
+if(NOT MORPHREG_BUILD_PYTHON)
+  return()
+endif()
+if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+endif()
+find_package(Python3 COMPONENTS Interpreter Development.Module)
+find_package(pybind11 2.6 CONFIG QUIET)
+if(Python3_FOUND AND pybind11_FOUND)
+  message(STATUS "morphreg: building the Python module for ${Python3_EXECUTABLE} (pybind11 ${pybind11_VERSION})")
+  add_subdirectory(python)
+else()
+  message(STATUS "morphreg: no Python module (needs python3-dev and pybind11-dev; scripts/install-deps.sh installs "
+                 "them)")
+endif()

@@ -1,0 +1,67 @@
+#pragma once
+/** \file registration_settings.h
+ *  \brief The settings of a scan registration by their command-line names (`morphreg register --iterations ...`),
+ *  applied to a MorphableICP in one place for the command line and the Python module.
+ */
+#include <morphreg/model/morphable_model.h>
+#include <morphreg/registration/morphable_icp.h>
+
+#include <pcl/point_types.h>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <vector>
+
+namespace morphreg
+{
+/** \brief MorphableICP's settings as `morphreg register` names them (each field is the option without "--", with
+ *  '_' for '-'); the defaults are the command line's. */
+struct RegistrationSettings
+{
+  int iterations = 100;            ///< ICP iterations, similarity and shape stages together (>= 1)
+  int similarity_iterations = 60;  ///< at most this many fit the similarity alone (>= 1)
+  double max_distance = 0.0;       ///< max correspondence distance (mm, 0 = no limit)
+  std::vector<int> components{10}; ///< components per region: one count for all, or one per region
+  bool point_to_plane = true;      ///< point-to-plane rows (false: point-to-point)
+  double tangential_weight = 0.02; ///< point-to-point share kept along the tangent plane (0-1)
+  double shape_prior = 3.0;        ///< lambda_2, the shape regulariser (>= 0)
+  double landmark_weight = 1.0;    ///< one landmark counts as this many correspondences (>= 0)
+  bool area_weighting = false;     ///< weigh model vertices by their surface area
+  std::string loss = "tukey";      ///< robust loss: none, huber or tukey
+  double loss_scale = 0.0;         ///< robust loss width (mm, 0 = from the residuals' MAD)
+  double reject_distance = 0.0;    ///< reject correspondences beyond this distance (mm, 0 = off)
+  double reject_median = 0.0;      ///< reject beyond this factor of the median distance (0 = off)
+  bool reject_one_to_one = false;  ///< keep the nearest of several model points sharing a scan point
+  double reject_trimmed = 0.0;     ///< keep this share of the correspondences, the nearest (0 = off, else 0-1]
+  bool target_smoothing = true;    ///< fit to the scan points projected onto their neighbourhood's plane
+  std::string units = "auto";      ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
+};
+
+/** \brief Throws InvalidInputError naming the first setting out of its range (see the fields) or the unknown loss or
+ *  unit name.
+ *  \param[in] settings the settings to check
+ */
+void
+requireValidSettings (const RegistrationSettings& settings);
+
+/** \brief Configures \a icp for a fit of \a model with \a settings (checked first): components, iterations, rows,
+ *  priors, robust loss and the rejector chain (the target-boundary rejector first, then the ones the settings turn
+ *  on). The target is taken to be in mm (the scan is converted to mm before, see scan_units.h).
+ *  \param[in,out] icp the registration to configure
+ *  \param[in] settings the settings
+ *  \param[in] model the model to fit
+ */
+void
+configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings,
+                       const MorphableModel::Ptr& model);
+
+/** \brief The settings as the JSON object of registration reports (keys with their units, e.g.
+ *  "max_correspondence_distance_mm").
+ *  \param[in] settings the settings
+ *  \return the JSON object
+ */
+nlohmann::json
+toJson (const RegistrationSettings& settings);
+
+} // namespace morphreg

@@ -1,0 +1,7 @@
+"""morphreg: morphable-model registration and thin plate spline warping for point clouds (C++ on PCL).
+
+Points are (N, 3) float64 or float32 numpy arrays in millimetres; results are float64 arrays. Every
+error is a morphreg.Error (InvalidInputError is also a ValueError, IoError an OSError).
+"""
+from ._morphreg import *  # noqa: F401,F403
+from ._morphreg import __version__  # noqa: F401

@@ -1,0 +1,159 @@
+// morphreg.Model: a multi-region PCA head model (statismo HDF5 files), its mean, regions, components, landmarks,
+// instances and random samples as numpy arrays.
+#include "bindings.h"
+#include "numpy_arrays.h"
+#include "python_model.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/io/model_io.h>
+
+#include <pybind11/stl.h>
+
+#include <random>
+
+namespace morphreg
+{
+namespace python
+{
+namespace
+{
+py::dict
+regionDict (const ModelRegion& region)
+{
+  py::dict dict;
+  dict["name"] = region.name;
+  dict["vertices"] = py::array_t<int> (static_cast<py::ssize_t> (region.vertices.size ()), region.vertices.data ());
+  dict["weights"] = toArray (Eigen::VectorXd (region.weights));
+  dict["basis"] = toArray (Eigen::MatrixXd (region.basis));
+  dict["variances"] = toArray (Eigen::VectorXd (region.variances));
+  return dict;
+}
+
+py::list
+regionList (const MorphableModel& model)
+{
+  py::list regions;
+  for (const ModelRegion& region : model.regions ())
+    regions.append (regionDict (region));
+  return regions;
+}
+
+Eigen::VectorXd
+coefficientsFor (const MorphableModel& model, const ComponentSelection& selection, const py::handle& coefficients)
+{
+  return toVector (coefficients, "coefficients (one per selected component)", selection.total ());
+}
+
+py::array
+instance (const MorphableModel& model, const py::handle& coefficients, const py::handle& components)
+{
+  const ComponentSelection selection = componentSelection (model, components);
+  return toArray (model.generate (coefficientsFor (model, selection, coefficients), selection));
+}
+
+py::array
+sample (const MorphableModel& model, std::uint64_t seed, const py::handle& components)
+{
+  const ComponentSelection selection = componentSelection (model, components);
+  std::mt19937_64 rng (seed);
+  return toArray (model.generate (model.sampleCoefficients (rng, selection), selection));
+}
+
+py::array
+project (const MorphableModel& model, const py::handle& vertices, const py::handle& components)
+{
+  const PointsArgument shape = pointsArgument (vertices, "vertices");
+  return toArray (model.project (Eigen::Matrix3Xd (shape.points), componentSelection (model, components)).coefficients);
+}
+
+std::vector<int>
+regionComponentCounts (const MorphableModel& model)
+{
+  std::vector<int> counts;
+  for (const ModelRegion& region : model.regions ())
+    counts.push_back (static_cast<int> (region.basis.cols ()));
+  return counts;
+}
+} // namespace
+
+std::vector<int>
+componentCounts (const py::handle& components)
+{
+  if (py::isinstance<py::int_> (components))
+    return {components.cast<int> ()};
+  if (py::isinstance<py::sequence> (components) && !py::isinstance<py::str> (components)) {
+    std::vector<int> counts;
+    for (const py::handle& count : py::reinterpret_borrow<py::sequence> (components)) {
+      if (!py::isinstance<py::int_> (count))
+        throw InvalidInputError ("components: " + std::string (py::repr (count)) + " is not an int");
+      counts.push_back (count.cast<int> ());
+    }
+    return counts;
+  }
+  throw InvalidInputError ("components: expected an int (per region) or a list of ints (one per region), got " +
+                           std::string (py::repr (components)));
+}
+
+ComponentSelection
+componentSelection (const MorphableModel& model, const py::handle& components)
+{
+  if (components.is_none ())
+    return model.allComponents ();
+  const std::vector<int> counts = componentCounts (components);
+  return counts.size () == 1 ? model.firstComponents (counts.front ()) : model.firstComponents (counts);
+}
+
+void
+bindModel (py::module_& m)
+{
+  py::class_<MorphableModel, MorphableModel::Ptr> (m, "Model",
+                                                   "A multi-region PCA shape model (mm), as `morphreg build-model` "
+                                                   "writes it; components: None (all), an int per region, or a list.")
+      .def_static ("load", &loadModel, py::arg ("path"), "Reads a model file (statismo HDF5, morphreg or BFM layout).")
+      .def (
+          "save", [] (const MorphableModel& model, const std::string& path) { saveModel (path, model); },
+          py::arg ("path"), "Writes the model as statismo HDF5, atomically.")
+      .def_property_readonly ("num_vertices", &MorphableModel::numVertices)
+      .def_property_readonly ("num_regions", &MorphableModel::numRegions)
+      .def_property_readonly ("component_counts", &regionComponentCounts, "Components per region.")
+      .def_property_readonly (
+          "mean",
+          [] (py::object self) {
+            const auto& model = self.cast<const MorphableModel&> ();
+            return pointsView (model.mean ().data (), model.numVertices (), self);
+          },
+          "The mean shape, (N, 3) float64, read-only (a view of the model).")
+      .def_property_readonly (
+          "faces", [] (const MorphableModel& model) { return toArray (TriangleMesh::Triangles (model.triangles ())); },
+          "The triangles, (T, 3) int32.")
+      .def_property_readonly ("regions", &regionList,
+                              "Per region a dict: name, vertices, weights (blending), basis (3B x P), variances.")
+      .def_property_readonly ("landmarks", &MorphableModel::landmarks, "Landmark id -> vertex index.")
+      .def_property_readonly ("profile_line", &MorphableModel::profileLine, "The mid-sagittal profile's vertices.")
+      .def (
+          "variances",
+          [] (const MorphableModel& model, const py::handle& components) {
+            return toArray (model.variances (componentSelection (model, components)));
+          },
+          py::arg ("components") = py::none (), "The selected components' variances (mm^2), stacked by region.")
+      .def (
+          "components",
+          [] (const MorphableModel& model, const py::handle& components) {
+            return toArray (Eigen::MatrixXd (model.shapeMatrix (componentSelection (model, components))));
+          },
+          py::arg ("components") = py::none (),
+          "The selected components as the (3N, K) shape matrix (rows x, y, z per vertex; blended across regions).")
+      .def ("instance", &instance, py::arg ("coefficients"), py::arg ("components") = py::none (),
+            "The shape of the coefficients (mm along each selected component): (N, 3) vertices.")
+      .def ("sample", &sample, py::arg ("seed") = 0, py::arg ("components") = py::none (),
+            "A random shape, coefficients drawn from N(0, variance) with the seed: (N, 3) vertices.")
+      .def ("project", &project, py::arg ("vertices"), py::arg ("components") = py::none (),
+            "The least-squares coefficients of a shape in the model's frame and topology.")
+      .def ("__repr__", [] (const MorphableModel& model) {
+        return "<morphreg.Model: " + std::to_string (model.numVertices ()) + " vertices, " +
+               std::to_string (model.numRegions ()) + " regions>";
+      });
+}
+
+} // namespace python
+} // namespace morphreg

@@ -1,0 +1,97 @@
+#include <morphreg/common/distance_statistics.h>
+#include <morphreg/registration/registration_result_json.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace morphreg
+{
+namespace
+{
+nlohmann::json
+iterationsJson (const IcpReport& report)
+{
+  nlohmann::json history = nlohmann::json::array ();
+  for (const IcpIteration& it : report.history)
+    history.push_back ({{"stage", toString (it.stage)},
+                        {"mean_squared_error_mm2", it.error},
+                        {"correspondences", it.correspondences},
+                        {"kept", it.kept},
+                        {"seconds", it.seconds}});
+  return {{"similarity", report.similarity_iterations},
+          {"shape", report.shape_iterations},
+          {"total", report.history.size ()},
+          {"history", history}};
+}
+
+nlohmann::json
+coefficientsJson (const MorphableModel& model, const ComponentSelection& selection, const Eigen::VectorXd& m)
+{
+  nlohmann::json coefficients = nlohmann::json::object ();
+  for (int j = 0; j < model.numRegions (); ++j) {
+    const Eigen::VectorXd part = m.segment (selection.offset (j), selection.count (j));
+    coefficients[model.region (j).name] = std::vector<double> (part.data (), part.data () + part.size ());
+  }
+  return coefficients;
+}
+
+/** Residual statistics: scan to model over the correspondences, and per model vertex. */
+nlohmann::json
+residualsJson (const IcpReport& report, const Eigen::VectorXd& vertex_residuals)
+{
+  return {{"scan_to_model",
+           {{"correspondences", report.correspondences},
+            {"mean", report.fitness_mean},
+            {"median", report.fitness_median},
+            {"rms", report.fitness_rms}}},
+          {"per_vertex", distanceStatistics (vertex_residuals)}};
+}
+} // namespace
+
+FitPlausibility
+checkRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
+{
+  const Eigen::VectorXd sigma = model.variances (icp.getComponentSelection ()).cwiseSqrt ();
+  const Eigen::VectorXd in_sigma = icp.getShapeCoefficients ().cwiseQuotient (sigma.cwiseMax (1e-12));
+  const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
+  return checkFitPlausibility (std::cbrt (linear.determinant ()), icp.getFittedVertices (), icp.getVertexResiduals (),
+                               in_sigma, icp.getRegistrationReport ());
+}
+
+nlohmann::json
+similarityJson (const Eigen::Matrix4d& transform)
+{
+  const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3> ();
+  const double scale = std::cbrt (linear.determinant ());
+  const Eigen::Matrix4d rows = transform.transpose (); // row-major order in the file
+  const Eigen::Matrix3d rotation_rows = (linear / scale).transpose ();
+  return {{"matrix_row_major", std::vector<double> (rows.data (), rows.data () + 16)},
+          {"scale", scale},
+          {"rotation_row_major", std::vector<double> (rotation_rows.data (), rotation_rows.data () + 9)},
+          {"translation", {transform (0, 3), transform (1, 3), transform (2, 3)}}};
+}
+
+nlohmann::json
+registrationResultJson (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
+{
+  const IcpReport& report = icp.getRegistrationReport ();
+  const FitPlausibility checks = checkRegistration (icp, model);
+  return {{"status", checks.plausible ? "ok" : "failed"},
+          {"checks", {{"passed", checks.plausible}, {"failures", checks.failures}}},
+          {"units", "mm"},
+          {"initialisation",
+           {{"method", report.initialisation},
+            {"detail", report.initialisation_detail},
+            {"confidence", report.initialisation_confidence},
+            {"head_points", report.head_points}}},
+          {"similarity", similarityJson (icp.getFinalTransformation ().cast<double> ())},
+          {"initial_similarity", similarityJson (report.initial_transformation)},
+          {"coefficients", coefficientsJson (model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
+          {"residuals_mm", residualsJson (report, icp.getVertexResiduals ())},
+          {"iterations", iterationsJson (report)},
+          {"termination", {{"reason", toString (report.termination)}, {"message", report.message}}}};
+}
+
+} // namespace morphreg

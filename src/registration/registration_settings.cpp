@@ -1,0 +1,148 @@
+#include "../common/number_text.h"
+
+#include <morphreg/common/error.h>
+#include <morphreg/common/length_unit.h>
+#include <morphreg/registration/registration_settings.h>
+
+#include <pcl/registration/correspondence_rejection_distance.h>
+#include <pcl/registration/correspondence_rejection_median_distance.h>
+#include <pcl/registration/correspondence_rejection_one_to_one.h>
+#include <pcl/registration/correspondence_rejection_trimmed.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace morphreg
+{
+namespace
+{
+using detail::numberText;
+
+/** Throws unless \a lowest <= value <= highest (a NaN is out of every range). */
+void
+requireInRange (double value, double lowest, double highest, const char* name)
+{
+  if (value >= lowest && value <= highest)
+    return;
+  std::string range =
+      highest == HUGE_VAL ? "at least " + numberText (lowest) : numberText (lowest) + " to " + numberText (highest);
+  throw InvalidInputError (std::string ("registration setting ") + name + " = " + numberText (value, 6) +
+                           " is out of range (" + range + ")");
+}
+
+RobustLoss
+parseRobustLoss (const std::string& name)
+{
+  if (name == "none")
+    return RobustLoss::none;
+  if (name == "huber")
+    return RobustLoss::huber;
+  if (name == "tukey")
+    return RobustLoss::tukey;
+  throw InvalidInputError ("registration setting loss = \"" + name + "\" is none of none, huber, tukey");
+}
+
+void
+requireValidComponents (const std::vector<int>& components)
+{
+  if (components.empty ())
+    throw InvalidInputError ("registration setting components is empty: give one count for all regions, or one per "
+                             "region");
+  for (int count : components)
+    if (count < 0)
+      throw InvalidInputError ("registration setting components has a negative count (" + std::to_string (count) + ")");
+}
+
+/** The rejectors \a settings turn on, after the target-boundary rejector (a chain replaces MorphableICP's default
+ *  one, which is that rejector alone, so it stays first). */
+void
+addRejectors (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings)
+{
+  icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
+  if (settings.reject_distance > 0.0) {
+    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
+    rejector->setMaximumDistance (static_cast<float> (settings.reject_distance));
+    icp.addCorrespondenceRejector (rejector);
+  }
+  if (settings.reject_median > 0.0) {
+    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorMedianDistance> ();
+    rejector->setMedianFactor (settings.reject_median);
+    icp.addCorrespondenceRejector (rejector);
+  }
+  if (settings.reject_one_to_one)
+    icp.addCorrespondenceRejector (std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> ());
+  if (settings.reject_trimmed > 0.0) {
+    auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorTrimmed> ();
+    rejector->setOverlapRatio (static_cast<float> (settings.reject_trimmed));
+    icp.addCorrespondenceRejector (rejector);
+  }
+}
+} // namespace
+
+void
+requireValidSettings (const RegistrationSettings& settings)
+{
+  requireInRange (settings.iterations, 1, 10000, "iterations");
+  requireInRange (settings.similarity_iterations, 1, 10000, "similarity_iterations");
+  requireInRange (settings.max_distance, 0.0, HUGE_VAL, "max_distance");
+  requireValidComponents (settings.components);
+  requireInRange (settings.tangential_weight, 0.0, 1.0, "tangential_weight");
+  requireInRange (settings.shape_prior, 0.0, HUGE_VAL, "shape_prior");
+  requireInRange (settings.landmark_weight, 0.0, HUGE_VAL, "landmark_weight");
+  parseRobustLoss (settings.loss);
+  requireInRange (settings.loss_scale, 0.0, HUGE_VAL, "loss_scale");
+  requireInRange (settings.reject_distance, 0.0, HUGE_VAL, "reject_distance");
+  requireInRange (settings.reject_median, 0.0, HUGE_VAL, "reject_median");
+  requireInRange (settings.reject_trimmed, 0.0, 1.0, "reject_trimmed");
+  if (settings.units != "auto")
+    parseLengthUnit (settings.units);
+}
+
+void
+configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings,
+                       const MorphableModel::Ptr& model)
+{
+  requireValidSettings (settings);
+  icp.setModel (model);
+  const std::vector<int>& counts = settings.components;
+  icp.setComponentSelection (counts.size () == 1 ? model->firstComponents (counts.front ())
+                                                 : model->firstComponents (counts));
+  icp.setMaximumIterations (settings.iterations);
+  icp.setSimilarityIterations (settings.similarity_iterations);
+  if (settings.max_distance > 0.0)
+    icp.setMaxCorrespondenceDistance (settings.max_distance);
+  icp.setPointToPlane (settings.point_to_plane, settings.tangential_weight);
+  icp.setShapePriorWeight (settings.shape_prior);
+  icp.setAreaWeighting (settings.area_weighting);
+  icp.setRobustLoss (parseRobustLoss (settings.loss), settings.loss_scale);
+  icp.setTargetSmoothing (settings.target_smoothing);
+  icp.setTargetUnit (LengthUnit::millimetre);
+  addRejectors (icp, settings);
+}
+
+nlohmann::json
+toJson (const RegistrationSettings& settings)
+{
+  return {{"iterations", settings.iterations},
+          {"similarity_iterations", settings.similarity_iterations},
+          {"max_correspondence_distance_mm", settings.max_distance},
+          {"components", settings.components},
+          {"point_to_plane", settings.point_to_plane},
+          {"tangential_weight", settings.tangential_weight},
+          {"shape_prior_weight", settings.shape_prior},
+          {"area_weighting", settings.area_weighting},
+          {"landmark_weight", settings.landmark_weight},
+          {"robust_loss", settings.loss},
+          {"robust_scale_mm", settings.loss_scale},
+          {"reject_distance_mm", settings.reject_distance},
+          {"reject_median_factor", settings.reject_median},
+          {"reject_one_to_one", settings.reject_one_to_one},
+          {"reject_trimmed_ratio", settings.reject_trimmed},
+          {"units", settings.units},
+          {"target_smoothing", settings.target_smoothing}};
+}
+
+} // namespace morphreg

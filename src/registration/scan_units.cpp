@@ -1,0 +1,58 @@
+#include <morphreg/common/cloud_matrix.h>
+#include <morphreg/common/error.h>
+#include <morphreg/registration/scan_units.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace morphreg
+{
+namespace
+{
+/** Throws when the scan's size, against the model's, is beyond a head's in every unit by orders of magnitude (a
+ *  kilometre-sized or micrometre-sized "head"): the file is corrupt or not a scan. */
+void
+requireHeadScale (const LengthUnitGuess& unit, const std::string& scan_name)
+{
+  constexpr double kLargest = 1e4, kSmallest = 1e-5; // a metre scan of a head is about 1e-3 of the model's size
+  if (unit.size_ratio <= kLargest && unit.size_ratio >= kSmallest)
+    return;
+  std::ostringstream message;
+  message << std::setprecision (3) << scan_name << ": the scan is " << unit.size_ratio
+          << " times the model's size, which is no head in any unit (mm, cm, m, in); is the file corrupt? ("
+          << unit.reason << ")";
+  throw InvalidInputError (message.str ());
+}
+
+/** The RMS distance of the model mean's vertices from their centroid (mm). */
+double
+modelRadius (const MorphableModel& model)
+{
+  const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
+  const Eigen::Vector3d centroid = mean.rowwise ().mean ();
+  return std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
+}
+} // namespace
+
+LengthUnitGuess
+convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
+                          const MorphableModel& model, const std::string& scan_name)
+{
+  LengthUnitGuess unit;
+  if (units == "auto") {
+    unit = guessLengthUnit (pointsOf (scan), modelRadius (model));
+    requireHeadScale (unit, scan_name);
+  }
+  else {
+    unit.unit = parseLengthUnit (units);
+    unit.reason = "given: " + units;
+  }
+  const auto to_mm = static_cast<float> (millimetresPer (unit.unit));
+  if (to_mm != 1.0f)
+    for (auto& point : scan)
+      point.getVector3fMap () *= to_mm;
+  return unit;
+}
+
+} // namespace morphreg
