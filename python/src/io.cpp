@@ -3,6 +3,7 @@
 #include "bindings.h"
 #include "numpy_arrays.h"
 
+#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
@@ -39,7 +40,8 @@ loadPoints (const std::string& path)
       has_normals = true;
       break;
     }
-  return cloudArrays (*cloud, has_normals);
+  return py::make_tuple (toArray (pointsOf (*cloud)),
+                         has_normals ? py::object (toArray (normalsOf (*cloud))) : py::object (py::none ()));
 }
 
 void

@@ -6,6 +6,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/model/model_builder.h>
 
 #include <pybind11/stl.h>
 
@@ -66,6 +67,31 @@ project (const MorphableModel& model, const py::handle& vertices, const py::hand
   return toArray (model.project (Eigen::Matrix3Xd (shape.points), componentSelection (model, components)).coefficients);
 }
 
+/** A model from meshes in correspondence (a list of (N, 3) arrays sharing \a faces), as `morphreg build-model`. */
+MorphableModel::Ptr
+buildModel (const py::list& meshes, const py::handle& faces, const py::handle& regions, int components,
+            double variance, int blend_rings, bool procrustes, const LandmarkVertices& landmarks,
+            const std::vector<int>& profile_line)
+{
+  std::vector<TriangleMesh> training;
+  for (std::size_t i = 0; i < meshes.size (); ++i)
+    training.push_back (toMesh (meshes[i], faces, "meshes[" + std::to_string (i) + "]"));
+  ModelBuilderSettings settings;
+  settings.max_components = components;
+  settings.explained_variance = variance;
+  settings.blend_rings = blend_rings;
+  settings.align = procrustes;
+  MorphableModel::Ptr model;
+  {
+    py::gil_scoped_release released;
+    const ModelBuilder builder (settings);
+    model = regions.is_none () ? builder.buildGlobal (training) : builder.build (training, regionLabels (regions));
+  }
+  model->setLandmarks (landmarks);
+  model->setProfileLine (profile_line);
+  return model;
+}
+
 std::vector<int>
 regionComponentCounts (const MorphableModel& model)
 {
@@ -92,6 +118,15 @@ componentCounts (const py::handle& components)
   }
   throw InvalidInputError ("components: expected an int (per region) or a list of ints (one per region), got " +
                            std::string (py::repr (components)));
+}
+
+RegionLabels
+regionLabels (const py::handle& regions)
+{
+  if (!py::isinstance<py::tuple> (regions) || py::len (regions) != 2)
+    throw InvalidInputError ("regions: expected (names, labels): a list of region names and each vertex's index");
+  const auto pair = py::reinterpret_borrow<py::tuple> (regions);
+  return {pair[0].cast<std::vector<std::string>> (), pair[1].cast<std::vector<int>> ()};
 }
 
 ComponentSelection
@@ -149,6 +184,13 @@ bindModel (py::module_& m)
             "A random shape, coefficients drawn from N(0, variance) with the seed: (N, 3) vertices.")
       .def ("project", &project, py::arg ("vertices"), py::arg ("components") = py::none (),
             "The least-squares coefficients of a shape in the model's frame and topology.")
+      .def_static ("build", &buildModel, py::arg ("meshes"), py::arg ("faces"), py::arg ("regions") = py::none (),
+                   py::arg ("components") = 0, py::arg ("variance") = 1.0, py::arg ("blend_rings") = 2,
+                   py::arg ("procrustes") = true, py::arg ("landmarks") = LandmarkVertices (),
+                   py::arg ("profile_line") = std::vector<int> (),
+                   "A model from meshes in correspondence ((N, 3) arrays sharing faces), as `morphreg build-model`:\n"
+                   "regions (names, labels) for a multi-region model (None: one global PCA); components: at most\n"
+                   "this many per region (0: all); variance: the share of variance kept; landmarks: id -> vertex.")
       .def ("__repr__", [] (const MorphableModel& model) {
         return "<morphreg.Model: " + std::to_string (model.numVertices ()) + " vertices, " +
                std::to_string (model.numRegions ()) + " regions>";

@@ -225,18 +225,6 @@ pointsView (const double* data, Eigen::Index count, py::handle owner)
   return std::move (view);
 }
 
-py::tuple
-cloudArrays (const pcl::PointCloud<pcl::PointNormal>& cloud, bool with_normals)
-{
-  Eigen::Matrix3Xd points (3, cloud.size ()), normals (3, cloud.size ());
-  for (std::size_t i = 0; i < cloud.size (); ++i) {
-    points.col (i) = cloud[i].getVector3fMap ().cast<double> ();
-    normals.col (i) = cloud[i].getNormalVector3fMap ().cast<double> ();
-  }
-  return py::make_tuple (toArray (std::move (points)),
-                         with_normals ? py::object (toArray (std::move (normals))) : py::object (py::none ()));
-}
-
 py::dict
 toDict (const LandmarkPositions& landmarks)
 {

@@ -77,10 +77,6 @@ toArray (Eigen::MatrixXd matrix);
 py::array
 pointsView (const double* data, Eigen::Index count, py::handle owner);
 
-/** (N, 3) points and, if \a with_normals, (N, 3) normals of a PCL cloud (float64). */
-py::tuple
-cloudArrays (const pcl::PointCloud<pcl::PointNormal>& cloud, bool with_normals);
-
 /** Landmark positions as a dict id -> (3,) array. */
 py::dict
 toDict (const LandmarkPositions& landmarks);

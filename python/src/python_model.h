@@ -1,6 +1,7 @@
 #pragma once
 // Model arguments shared by the parts of the module.
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/model/region_segmentation.h>
 
 #include <pybind11/pybind11.h>
 
@@ -11,6 +12,10 @@ namespace morphreg
 namespace python
 {
 namespace py = pybind11;
+
+/** Region labels given as (names, labels): a list of names and each vertex's index into it. */
+RegionLabels
+regionLabels (const py::handle& regions);
 
 /** Component counts given as an int (the same for every region) or a list of ints (one per region). */
 std::vector<int>

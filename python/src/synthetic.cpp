@@ -3,6 +3,7 @@
 #include "bindings.h"
 #include "numpy_arrays.h"
 
+#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/synthetic/head_generator.h>
@@ -81,6 +82,9 @@ bindHeadGenerator (py::module_& m)
       .def_property_readonly ("landmarks", &HeadGenerator::landmarks, "Landmark id -> vertex index.")
       .def_property_readonly ("profile_line", &HeadGenerator::profileLine)
       .def_property_readonly ("region_labels", &HeadGenerator::regionLabels, "The region index of each vertex.")
+      .def_property_readonly (
+          "regions", [] (const HeadGenerator& g) { return py::make_tuple (g.regions ().names, g.regions ().labels); },
+          "(names, labels) of the seven regions, as Model.build takes them.")
       .def_property_readonly ("parameter_names", [] (const HeadGenerator&) {
         std::vector<std::string> names;
         for (const HeadParameters::Range& range : HeadParameters::ranges ())
@@ -101,8 +105,8 @@ void
 bindScan (py::module_& m)
 {
   py::class_<SimulatedScan> (m, "SimulatedScan", "A simulated laser scan (mm, the scanner's frame) and its truth.")
-      .def_property_readonly ("points", [] (const SimulatedScan& s) { return cloudArrays (*s.cloud, false)[0]; })
-      .def_property_readonly ("normals", [] (const SimulatedScan& s) { return cloudArrays (*s.cloud, true)[1]; })
+      .def_property_readonly ("points", [] (const SimulatedScan& s) { return toArray (pointsOf (*s.cloud)); })
+      .def_property_readonly ("normals", [] (const SimulatedScan& s) { return toArray (normalsOf (*s.cloud)); })
       .def_property_readonly ("faces", &rangeMeshFaces, "The range image's triangles, or None unless range_mesh.")
       .def_property_readonly (
           "head_to_scan", [] (const SimulatedScan& s) { return toArray (Eigen::MatrixXd (s.head_to_scan.matrix ())); },
