@@ -58,7 +58,7 @@ bindIo (py::module_& m)
          "Reads a triangle mesh (PLY, OBJ, STL, VTK, OFF; the format is recognised from the content).\n"
          "Returns (vertices, faces): (N, 3) float64 and (T, 3) int32.");
   m.def ("save_mesh", &saveMesh, py::arg ("path"), py::arg ("vertices"), py::arg ("faces"),
-         "Writes a triangle mesh (format from the extension: .ply, .obj, .vtk, .stl), atomically.");
+         "Writes a triangle mesh (format from the extension: .ply, .obj, .vtk), atomically.");
   m.def ("load_cloud", &loadPoints, py::arg ("path"),
          "Reads a point cloud (PCD, PLY, or a mesh file's vertices).\n"
          "Returns (points, normals): (N, 3) float64, and normals (N, 3) or None if the file has none.");

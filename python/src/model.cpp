@@ -69,9 +69,8 @@ project (const MorphableModel& model, const py::handle& vertices, const py::hand
 
 /** A model from meshes in correspondence (a list of (N, 3) arrays sharing \a faces), as `morphreg build-model`. */
 MorphableModel::Ptr
-buildModel (const py::list& meshes, const py::handle& faces, const py::handle& regions, int components,
-            double variance, int blend_rings, bool procrustes, const LandmarkVertices& landmarks,
-            const std::vector<int>& profile_line)
+buildModel (const py::list& meshes, const py::handle& faces, const py::handle& regions, int components, double variance,
+            int blend_rings, bool procrustes, const LandmarkVertices& landmarks, const std::vector<int>& profile_line)
 {
   std::vector<TriangleMesh> training;
   for (std::size_t i = 0; i < meshes.size (); ++i)

@@ -72,7 +72,10 @@ bindHeadGenerator (py::module_& m)
       .def ("sample", &HeadGenerator::sample, py::arg ("seed"), "The head drawn with this seed.")
       .def (
           "generate",
-          [] (const HeadGenerator& g, const py::dict& parameters) { return g.generate (parametersFrom (parameters)); },
+          [] (const HeadGenerator& g, const py::dict& values) {
+            const HeadParameters parameters = parametersFrom (values);
+            return SyntheticHead{g.generate (parameters), parameters};
+          },
           py::arg ("parameters"), "The head of these parameters (dict name -> mm; missing ones at the mean).")
       .def ("population", &HeadGenerator::population, py::arg ("count"), py::arg ("seed"),
             "count heads, head i drawn with seed + i.")

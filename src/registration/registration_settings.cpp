@@ -108,6 +108,10 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
   requireValidSettings (settings);
   icp.setModel (model);
   const std::vector<int>& counts = settings.components;
+  if (counts.size () > 1 && counts.size () != static_cast<std::size_t> (model->numRegions ()))
+    throw InvalidInputError ("registration setting components has " + std::to_string (counts.size ()) +
+                             " counts for a model with " + std::to_string (model->numRegions ()) +
+                             " regions: give one count for all regions, or one per region");
   icp.setComponentSelection (counts.size () == 1 ? model->firstComponents (counts.front ())
                                                  : model->firstComponents (counts));
   icp.setMaximumIterations (settings.iterations);
