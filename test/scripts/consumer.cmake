@@ -12,6 +12,7 @@ add_test(NAME PackageTest.Install
   COMMAND ${CMAKE_COMMAND} -DMODE=install -DBUILD_DIR=${CMAKE_BINARY_DIR} -DPREFIX=${consumer_dir}/prefix
           -P ${consumer_script})
 set_tests_properties(PackageTest.Install PROPERTIES FIXTURES_SETUP morphreg_installed TIMEOUT 300)
+set_property(GLOBAL PROPERTY MORPHREG_TEST_INSTALL_PREFIX ${consumer_dir}/prefix) # python/tests imports from it
 
 # package_consumer_test(<name> <component or ""> [REQUIRE_LIBS ...] [FORBID_LOADED ...] [FORBID_LINKED ...]
 #                       [RUN_PREFIX ...] [RUN_ARGS ...]): see consumer/run_consumer.cmake.
