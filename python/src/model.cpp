@@ -40,7 +40,7 @@ regionList (const MorphableModel& model)
 }
 
 Eigen::VectorXd
-coefficientsFor (const MorphableModel& model, const ComponentSelection& selection, const py::handle& coefficients)
+coefficientsFor (const ComponentSelection& selection, const py::handle& coefficients)
 {
   return toVector (coefficients, "coefficients (one per selected component)", selection.total ());
 }
@@ -49,7 +49,7 @@ py::array
 instance (const MorphableModel& model, const py::handle& coefficients, const py::handle& components)
 {
   const ComponentSelection selection = componentSelection (model, components);
-  return toArray (model.generate (coefficientsFor (model, selection, coefficients), selection));
+  return toArray (model.generate (coefficientsFor (selection, coefficients), selection));
 }
 
 py::array
