@@ -84,7 +84,9 @@ bindHeadGenerator (py::module_& m)
           "faces", [] (const HeadGenerator& g) { return toArray (TriangleMesh::Triangles (g.triangles ())); })
       .def_property_readonly ("landmarks", &HeadGenerator::landmarks, "Landmark id -> vertex index.")
       .def_property_readonly ("profile_line", &HeadGenerator::profileLine)
-      .def_property_readonly ("region_labels", &HeadGenerator::regionLabels, "The region index of each vertex.")
+      .def_property_readonly (
+          "region_labels", [] (const HeadGenerator& g) { return g.regions ().labels; },
+          "The region index of each vertex (into the names of regions).")
       .def_property_readonly (
           "regions", [] (const HeadGenerator& g) { return py::make_tuple (g.regions ().names, g.regions ().labels); },
           "(names, labels) of the seven regions, as Model.build takes them.")

@@ -21,6 +21,10 @@ def test_joint_fit_recovers_the_head(model, photos, truth):
     assert fit.report["final"]["landmark_rms_mm"] < 1.0  # in the image, with 1 px landmark noise
     assert fit.faces.shape == model.faces.shape and fit.image_vertices.shape == fit.vertices.shape
     assert fit.report["settings"]["approach"] == "joint"
+    assert fit.scale == pytest.approx(photos.scale, rel=0.05)
+    assert np.allclose(fit.rotation, photos.rotation, atol=0.05)
+    assert np.linalg.norm(fit.translation - photos.translation) < 0.02  # normalised photo units
+    assert len(fit.coefficients) == 70
 
 
 def test_equals_the_command_line(model_file, photos, tmp_path):

@@ -24,7 +24,8 @@ def test_generate_from_parameters(generator):
     with pytest.raises(morphreg.InvalidInputError, match="nose_length"):
         generator.generate({"nose_length": -5.0})
     names, labels = generator.regions
-    assert len(names) == 7 and len(labels) == generator.num_vertices
+    assert len(names) == 7 and len(labels) == generator.num_vertices and labels == generator.region_labels
+    assert set(generator.landmarks) >= {"nose_tip", "chin"} and len(generator.profile_line) > 20
 
 
 def test_scans_equal_the_cpp_api(generator, tmp_path):

@@ -16,6 +16,7 @@ def test_spline_interpolates_its_landmarks():
     assert spline.is_fitted and spline.bending_energy > 0
     assert np.max(np.abs(spline(SOURCE) - TARGET)) < 1e-9
     assert spline.weights.shape == (12, 3) and spline.affine.shape == (4, 3)
+    assert np.array_equal(spline.landmarks, SOURCE) and spline.regularization == 0.0
 
 
 def test_spline_of_an_affine_map_is_that_map():
@@ -74,6 +75,23 @@ def test_segmented_warp_equals_the_cpp_api(generator, tmp_path):
     assert relative_difference(warped, reference["segmented"]) <= 1e-9
     quality = morphreg.evaluate_warp(warped, warped, generator.faces, labels)
     assert quality["mean_error"] == 0.0 and quality["folded"] == 0
+
+
+def test_segment_by_segment(generator):
+    """Landmarks given per segment, a blend width per segment and regularised splines."""
+    vertices, labels, source, target = two_segments(generator)
+    top = source[:, 2] > 0
+    warp = morphreg.SegmentedWarp(labels, 2)
+    warp.set_regularization(0.1)
+    warp.set_segment_landmarks(0, source[~top], target[~top])
+    warp.set_segment_landmarks(1, source[top], target[top])
+    warp.set_segment_blend_width(1, 50.0)
+    warped = warp.warp(vertices, generator.faces)
+    assert np.allclose(warped[labels == 0][vertices[labels == 0, 2] < -60], vertices[labels == 0][
+        vertices[labels == 0, 2] < -60], atol=0.5)  # far below the seam the bottom half stays
+    moved = warped[labels == 1] - vertices[labels == 1]
+    assert np.allclose(np.median(moved, axis=0), [4.0, 0.0, 2.0], atol=0.5)
+    assert warp.num_segments == 2
 
 
 def test_segmented_warp_bad_input(generator):
