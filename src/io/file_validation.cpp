@@ -42,9 +42,6 @@ validateForLibraryReader (const std::string& path, FileFormat format)
   case FileFormat::Ply:
     validation::validatePlyFile (path);
     break;
-  case FileFormat::Pcd:
-    validation::validatePcdFile (path);
-    break;
   case FileFormat::Obj:
     validation::validateObjFile (path);
     break;
@@ -55,6 +52,7 @@ validateForLibraryReader (const std::string& path, FileFormat format)
     validation::validateVtkFile (path);
     break;
   case FileFormat::StlBinary: // recognised by its size being exactly what its triangle count needs
+  case FileFormat::Pcd:       // read by morphreg's own readers, which check as they read
   case FileFormat::Off:
   case FileFormat::Unknown:
     break;
@@ -71,6 +69,8 @@ validateGeometryFile (const std::string& path)
     throw unknownContent (path);
   if (format == FileFormat::Off)
     readOffMesh (path);
+  else if (format == FileFormat::Pcd)
+    validation::validatePcdFile (path);
   else
     validateForLibraryReader (path, format);
   return format;

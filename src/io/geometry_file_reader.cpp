@@ -98,9 +98,9 @@ isFiniteFloat (std::string_view token)
 std::string
 describeBytes (double bytes)
 {
-  const char* units[] = {"bytes", "KB", "MB", "GB", "TB"};
+  const char* units[] = {"bytes", "KB", "MB", "GB", "TB", "PB", "EB"};
   int unit = 0;
-  while (bytes >= 1000.0 && unit < 4) {
+  while (bytes >= 1000.0 && unit < 6) {
     bytes /= 1000.0;
     ++unit;
   }
@@ -109,16 +109,22 @@ describeBytes (double bytes)
   return text.str ();
 }
 
+FormatError
+countBeyondFile (const std::string& path, std::uint64_t count, double item_bytes, std::uint64_t available,
+                 const std::string& what)
+{
+  return FormatError (path + ": header claims " + std::to_string (count) + " " + what + " (at least " +
+                      describeBytes (static_cast<double> (count) * item_bytes) + ") but the file holds " +
+                      describeBytes (static_cast<double> (available)) +
+                      " after its header; the file is cut short or its header is wrong");
+}
+
 void
 requireCountFits (const std::string& path, std::uint64_t count, double item_bytes, std::uint64_t available,
                   const std::string& what, bool text)
 {
-  const double needed = static_cast<double> (count) * item_bytes;
-  if (needed <= static_cast<double> (available) + (text ? 1.0 : 0.0))
-    return;
-  throw FormatError (path + ": header claims " + std::to_string (count) + " " + what + " (at least " +
-                     describeBytes (needed) + ") but the file holds " + describeBytes (available) +
-                     " after its header; the file is cut short or its header is wrong");
+  if (static_cast<double> (count) * item_bytes > static_cast<double> (available) + (text ? 1.0 : 0.0))
+    throw countBeyondFile (path, count, item_bytes, available, what);
 }
 
 } // namespace validation

@@ -116,6 +116,13 @@ isFiniteFloat (std::string_view token);
 std::string
 describeBytes (double bytes);
 
+/** The FormatError of requireCountFits(): "file: header claims 2000000000 points (at least 24 GB) but the file holds
+ *  12 bytes after its header; ...".
+ */
+FormatError
+countBeyondFile (const std::string& path, std::uint64_t count, double item_bytes, std::uint64_t available,
+                 const std::string& what);
+
 /** Throws FormatError naming the file unless \a count items of at least \a item_bytes each fit in the \a available
  *  bytes after the header: "file: header claims 2000000000 points (at least 24 GB) but the file holds 12 bytes after
  *  its header". \a what names the items ("points", "'vertex' elements"). In \a text, the last item may lack its

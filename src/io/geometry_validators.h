@@ -11,7 +11,8 @@ namespace validation
 void
 validatePlyFile (const std::string& path);
 
-/** A PCD file: header consistency, then the data against POINTS (binary, binary_compressed or ASCII). */
+/** A PCD file, read by morphreg's PCD reader (pcd_reader.cpp) without keeping its points; binary data, which any
+ *  bytes are, is only checked to fit in the file. */
 void
 validatePcdFile (const std::string& path);
 

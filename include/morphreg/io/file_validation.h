@@ -7,8 +7,10 @@
  *  What each format must satisfy:
  *  - PLY: a well-formed header with at least one vertex; every element count fits in the file; binary data (lists walked row by row) ends
  *    within the file; ASCII rows have the right number of finite numbers; face indices lie in [0, vertex count).
- *  - PCD: at least one point; FIELDS, SIZE, TYPE and COUNT of one length and valid types, WIDTH * HEIGHT = POINTS; binary data fits in
- *    the file; binary_compressed sizes agree with the file and with POINTS; ASCII rows have one number per value.
+ *  - PCD: read by morphreg's own reader (readPcdFile, pcd_reader.h; PCL's crashes on some malformed files): at
+ *    least one point; FIELDS, SIZE, TYPE and COUNT of one length and valid types, with x, y and z as 4-byte floats;
+ *    WIDTH * HEIGHT = POINTS; binary data fits in the file; binary_compressed sizes agree with the file and with
+ *    POINTS, and the data unpacks to them; ASCII rows have one number of its field's type per value.
  *  - OBJ: read by morphreg's own reader (readObjFile; PCL's crashes on some malformed files): v has 3, 4 or 6 finite
  *    numbers, vn 3, vt 1 to 3; faces have at least 3 corners whose indices (v, v/t, v//n, v/t/n, negative =
  *    relative) are in range.
@@ -37,7 +39,8 @@ validateGeometryFile (const std::string& path);
 
 /** \brief The loaders' gate: \a path must be a readable file with one of the \a allowed extensions, whose content is
  *  the format its extension names (a PLY named .pcd is a FormatError that says so), and which passes
- *  validateGeometryFile(). OFF files are only recognised here: morphreg's OFF reader checks them as it reads.
+ *  validateGeometryFile(). OFF and PCD files are only recognised here: morphreg's OFF and PCD readers check them as
+ *  they read.
  *  \param[in] path the file
  *  \param[in] allowed the accepted extensions, space-separated, with their dots (e.g. ".ply .obj")
  *  \param[in] what what the file should hold (e.g. "mesh"), for the messages

@@ -5,6 +5,7 @@
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/pcd_reader.h>
 
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
@@ -29,11 +30,14 @@ loadCloud (const std::string& path)
     pcl::fromPCLPointCloud2 (loadPolygonMesh (path).cloud, *cloud);
     return cloud;
   }
-  const int status = callPclIo (path, [&] {
-    if (format == FileFormat::Pcd)
-      return pcl::io::loadPCDFile (path, *cloud);
-    return pcl::io::loadPLYFile (path, *cloud);
-  });
+  if (format == FileFormat::Pcd) { // morphreg's own reader: PCL's crashes on some malformed files
+    const PcdCloud pcd = readPcdFile (path);
+    pcl::fromPCLPointCloud2 (pcd.cloud, *cloud);
+    cloud->sensor_origin_ = pcd.origin;
+    cloud->sensor_orientation_ = pcd.orientation;
+    return cloud;
+  }
+  const int status = callPclIo (path, [&] { return pcl::io::loadPLYFile (path, *cloud); });
   if (status < 0)
     throw FormatError (path + ": not a readable point cloud");
   if (cloud->empty ())
