@@ -72,30 +72,6 @@ dropMissingPoints (pcl::PointCloud<pcl::PointNormal>& scan)
   scan.erase (std::remove_if (scan.begin (), scan.end (), missing), scan.end ());
 }
 
-/** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path)
-{
-  auto scan = loadCloud<pcl::PointNormal> (path);
-  dropMissingPoints (*scan);
-  if (scan->empty ())
-    throw FormatError (path + ": the scan has no valid (finite) points");
-  requireRegistrableScan (pointsOf (*scan), path);
-  scan->is_dense = true;
-  return scan;
-}
-
-/** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
-LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out)
-{
-  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
-  if (unit.unit != LengthUnit::millimetre)
-    out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
-  return unit;
-}
-
 /** The scan landmarks of the file that the model also has; the others are named on \a warnings and skipped. The
  *  landmarks must lie on the \a scan (in mm). */
 LandmarkPositions
@@ -178,6 +154,30 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
     registerScanBatch (options, batch);
 }
 } // namespace
+
+/** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
+pcl::PointCloud<pcl::PointNormal>::Ptr
+loadScan (const std::string& path)
+{
+  auto scan = loadCloud<pcl::PointNormal> (path);
+  dropMissingPoints (*scan);
+  if (scan->empty ())
+    throw FormatError (path + ": the scan has no valid (finite) points");
+  requireRegistrableScan (pointsOf (*scan), path);
+  scan->is_dense = true;
+  return scan;
+}
+
+/** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
+LengthUnitGuess
+convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
+                          const MorphableModel& model, std::ostream& out)
+{
+  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
+  if (unit.unit != LengthUnit::millimetre)
+    out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
+  return unit;
+}
 
 std::string
 reportPath (const RegisterOptions& options)

@@ -7,7 +7,14 @@
 #include "pipeline.h"
 #include "scan_resampling.h"
 
+#include <morphreg/common/cloud_matrix.h>
+#include <morphreg/common/error.h>
+#include <morphreg/io/json_file.h>
+#include <morphreg/io/landmark_io.h>
+#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/registration/scan_checks.h>
+#include <morphreg/resampling/landmark_reference.h>
 
 #include <filesystem>
 #include <iostream>
@@ -22,8 +29,9 @@ namespace
 {
 struct ResampleOptions
 {
-  RegisterOptions registration; ///< its out is the fitted mesh, its report the resampling's report
+  RegisterOptions registration; ///< its out is the reference (the fit), its report the resampling's report
   std::string out = "resampled.ply";
+  std::string reference = "fit"; ///< fit: registered as register does; landmarks: the mean warped by a TPS
   ResamplingOptions resampling;
 };
 
@@ -41,6 +49,33 @@ resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::Po
               << options.out << " (vertex colours: grey observed, orange filled)\n";
 }
 
+/** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
+ *  (METHOD section 5), without a registration; writes it, the resampled mesh and the report, and returns the
+ *  report. */
+nlohmann::json
+resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& model)
+{
+  const RegisterOptions& registration = options.registration;
+  if (registration.landmarks.empty ())
+    throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
+  const auto scan = loadScan (registration.scan);
+  const LengthUnitGuess unit = convertScanToMillimetres (*scan, registration, model, std::cout);
+  const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);
+  requireLandmarksOnScan (landmarks, pointsOf (*scan), registration.landmarks);
+  const TriangleMesh reference =
+      landmarkReference (model.meanMesh (), model.landmarks (), landmarks, registration.landmarks);
+  saveTriangleMesh (registration.out, reference);
+  nlohmann::json report = {
+      {"status", "ok"},
+      {"checks", {{"passed", true}, {"failures", nlohmann::json::array ()}}},
+      {"units", "mm"},
+      {"scan", {{"file", registration.scan}, {"points", scan->size ()}, {"units", toString (unit.unit)}}},
+      {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
+  resampleAndReport (options, *scan, reference, report);
+  writeJsonFile (registration.report, report);
+  return report;
+}
+
 void
 runResample (ResampleOptions options)
 {
@@ -52,6 +87,10 @@ runResample (ResampleOptions options)
   OutputFiles outputs ({options.out, registration.out, registration.report},
                        {registration.scan, registration.model, registration.landmarks});
   const MorphableModel::Ptr model = loadModel (registration.model);
+  if (options.reference == "landmarks") {
+    keepOnSuccessOrFitFailure (outputs, [&] { return resampleFromLandmarks (options, *model); });
+    return;
+  }
   keepOnSuccessOrFitFailure (outputs, [&] {
     return registerScan (registration, model, nullptr, 0.0, std::cout, std::cerr,
                          [&] (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
@@ -72,10 +111,18 @@ registerResampleCommand (CLI::App& app)
   command->add_option ("-s,--scan", registration.scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units")
       ->required ();
   command->add_option ("-m,--model", registration.model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-l,--landmarks", registration.landmarks, "landmarks on the scan to start the fit from");
+  command->add_option ("-l,--landmarks", registration.landmarks,
+                       "landmarks on the scan: the fit's start, or with --reference landmarks the TPS warp's targets");
+  command
+      ->add_option ("--reference", options->reference,
+                    "the reference mesh: fit (the model registered to the scan) or landmarks (the model's mean warped "
+                    "by a thin plate spline onto --landmarks, METHOD section 5; no registration)")
+      ->check (CLI::IsMember ({"fit", "landmarks"}))
+      ->capture_default_str ();
   command->add_option ("-o,--out", options->out, "resampled mesh to write (PLY; colours: observed / filled)")
       ->capture_default_str ();
-  command->add_option ("--fit-out", registration.out, "the model's fit to write (default: the --out path + _fit)");
+  command->add_option ("--fit-out", registration.out,
+                       "the reference (the fit, or the warped mean) to write (default: the --out path + _fit)");
   command->add_option ("--report", registration.report, "JSON report to write (default: the --out path with .json)");
   addResamplingOptions (command, options->resampling);
   addRegistrationOptions (command, registration);

@@ -5,6 +5,7 @@
 #include <morphreg/model/model_builder.h>
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/common/length_unit.h>
 #include <morphreg/registration/registration_settings.h>
 
 #include <pcl/point_cloud.h>
@@ -46,6 +47,17 @@ class FitCheckFailure : public std::runtime_error
 public:
   using std::runtime_error::runtime_error;
 };
+
+/** The scan file as points with normals, without missing (NaN) points, checked to be registrable
+ *  (requireRegistrableScan); in the file's unit. */
+pcl::PointCloud<pcl::PointNormal>::Ptr
+loadScan (const std::string& path);
+
+/** Converts \a scan to mm, its unit given by options.units or guessed against \a model (see scan_units.h), and says
+ *  so on \a out when it was not in mm; returns the unit and why. */
+LengthUnitGuess
+convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
+                          const MorphableModel& model, std::ostream& out);
 
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */
 nlohmann::json

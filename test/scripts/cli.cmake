@@ -191,6 +191,16 @@ add_test(NAME CliTest.ResampleRefusedScanLeavesNoOutput
           -DEXPECT_CODE=1 "-DEXPECT_TEXT=scan_0.pcd: cannot be resampled into the model's topology: ScanResampler: a hole of"
           -P ${cli_scripts}/check_resample.cmake)
 set_tests_properties(CliTest.ResampleRefusedScanLeavesNoOutput PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+# resample --reference landmarks: the model's mean warped onto the scan's landmarks instead of a registration.
+add_test(NAME CliTest.ResampleFromLandmarks
+  COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|resample|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--landmarks|${cli_dir}/small/scan_0_landmarks.json|--reference|landmarks|--quiet|--out|${cli_dir}/from_landmarks.ply"
+          -DREPORT=${cli_dir}/from_landmarks.json -DMESH=${cli_dir}/from_landmarks.ply
+          -DFIT=${cli_dir}/from_landmarks_fit.ply -DEXPECT_CODE=0 -DMIN_COVERAGE=0.85 -P ${cli_scripts}/check_resample.cmake)
+set_tests_properties(CliTest.ResampleFromLandmarks PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+morphreg_cli_expect_exit(ResampleFromLandmarksNeedsLandmarks 1 "--reference landmarks needs --landmarks"
+  resample --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --reference landmarks
+  --out ${cli_dir}/no_landmarks.ply)
+set_tests_properties(CliTest.ResampleFromLandmarksNeedsLandmarks PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 morphreg_cli_expect_exit(ResampleBadRayDistanceExits2 2 "--ray-distance" resample --scan a.pcd --model b.h5
   --ray-distance 0)
 
