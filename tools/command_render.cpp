@@ -28,6 +28,7 @@ struct RenderOptions
   int height = 960;
   std::string view = "front";
   double opacity = 1.0;
+  std::vector<std::string> side_by_side; ///< two captions: the two meshes in a left and a right viewport
 };
 
 /** Direction from the subject towards the camera for a named view (+Z out of the face, +X the subject's left). */
@@ -42,18 +43,35 @@ viewDirection (const std::string& view)
   return views.at (view);
 }
 
+/** --side-by-side: a left and a right viewport sharing the camera, captioned; returns the viewport of each mesh. */
+std::vector<int>
+sideBySide (const RenderOptions& options, RegistrationVisualizer& viewer)
+{
+  int left = 0, right = 0;
+  viewer.createBeforeAfterViewports (left, right, options.side_by_side[0], options.side_by_side[1]);
+  return {left, right};
+}
+
 void
 runRender (const RenderOptions& options)
 {
   if (options.meshes.empty () && options.clouds.empty ())
     throw InvalidInputError ("render: nothing to show; give at least one --mesh or --cloud");
+  if (!options.side_by_side.empty () &&
+      (options.meshes.size () != 2 || !options.clouds.empty () || !options.landmarks.empty ()))
+    throw InvalidInputError ("render --side-by-side shows two --mesh files, the first on the left, and nothing else (" +
+                             std::to_string (options.meshes.size ()) + " meshes given)");
   std::vector<std::string> inputs = options.meshes;
   inputs.insert (inputs.end (), options.clouds.begin (), options.clouds.end ());
   inputs.insert (inputs.end (), options.landmarks.begin (), options.landmarks.end ());
   OutputFiles outputs ({options.out}, inputs);
   RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
+  std::vector<int> viewports (options.meshes.size (), 0);
+  if (!options.side_by_side.empty ())
+    viewports = sideBySide (options, viewer);
   for (std::size_t i = 0; i < options.meshes.size (); ++i)
-    viewer.addModelMesh (loadPolygonMesh (options.meshes[i]), options.opacity, "mesh_" + std::to_string (i));
+    viewer.addModelMesh (loadPolygonMesh (options.meshes[i]), options.opacity, "mesh_" + std::to_string (i),
+                         viewports[i]);
   for (std::size_t i = 0; i < options.clouds.size (); ++i)
     viewer.addTargetCloud (*loadCloud<pcl::PointXYZ> (options.clouds[i]), "cloud_" + std::to_string (i));
   for (std::size_t i = 0; i < options.landmarks.size (); ++i)
@@ -95,6 +113,10 @@ registerRenderCommand (CLI::App& app)
   command->add_option ("--opacity", options->opacity, "mesh opacity")
       ->check (CLI::Range (0.0, 1.0))
       ->capture_default_str ();
+  command
+      ->add_option ("--side-by-side", options->side_by_side,
+                    "two captions: the two --mesh files side by side (left, right) under one camera")
+      ->expected (2);
   command->callback ([options] () { runRender (*options); });
 }
 

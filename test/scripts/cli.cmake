@@ -365,6 +365,16 @@ morphreg_cli_check_stderr(RenderQuietPrintsNothingOnStderr FIXTURES cli_synth EM
 set_tests_properties(CliTest.RenderPrintsNoVtkMessages CliTest.RenderQuietPrintsNothingOnStderr PROPERTIES
   RESOURCE_LOCK xvfb)
 morphreg_cli_expect_exit(RenderMissingFileIsNamed 2 "no_such_mesh.ply" render --mesh ${cli_dir}/no_such_mesh.ply)
+# --side-by-side: two meshes in a left and a right viewport (a fit and its resampled scan in the README).
+add_test(NAME CliTest.RenderSideBySide
+  COMMAND ${xvfb} $<TARGET_FILE:morphreg_cli> render --mesh ${cli_dir}/synth/head_000.ply
+          --mesh ${cli_dir}/synth/head_001.ply --side-by-side "head 0" "head 1" --width 320 --height 240
+          --out ${cli_dir}/render_sides.png)
+set_tests_properties(CliTest.RenderSideBySide PROPERTIES FIXTURES_REQUIRED cli_synth RESOURCE_LOCK xvfb
+  PASS_REGULAR_EXPRESSION "wrote .*render_sides.png \\(320x240\\)")
+morphreg_cli_expect_exit(RenderSideBySideNeedsTwoMeshes 1 "render --side-by-side shows two --mesh files"
+  render --mesh ${cli_dir}/synth/head_000.ply --side-by-side left right --out ${cli_dir}/render_one.png)
+set_tests_properties(CliTest.RenderSideBySideNeedsTwoMeshes PROPERTIES FIXTURES_REQUIRED cli_synth)
 add_test(NAME CliTest.DemoWritesScreenshot
   COMMAND ${xvfb} $<TARGET_FILE:morphreg_cli> demo --count 6 --resolution 20 --angular-samples 150
           --row-spacing 4 --iterations 40 --width 400 --height 300 --quiet --out ${cli_dir}/demo_shot)
