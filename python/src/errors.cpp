@@ -5,6 +5,7 @@
 
 #include <morphreg/common/error.h>
 
+#include <cstring>
 #include <string>
 
 namespace morphreg
@@ -23,6 +24,15 @@ addException (py::module_& m, const char* name, const char* doc, py::tuple bases
     throw py::error_already_set ();
   m.add_object (name, py::reinterpret_steal<py::object> (type));
   return type;
+}
+
+/** Raises \a type with \a message; bytes that are not UTF-8 (quoted from a corrupt file) become \\x escapes. */
+void
+raise (PyObject* type, const char* message)
+{
+  PyObject* text = PyUnicode_DecodeUTF8 (message, static_cast<Py_ssize_t> (std::strlen (message)), "backslashreplace");
+  PyErr_SetObject (type, text);
+  Py_XDECREF (text);
 }
 } // namespace
 
@@ -50,22 +60,22 @@ bindErrors (py::module_& m)
         std::rethrow_exception (thrown);
     }
     catch (const TooFewCorrespondencesError& e) {
-      PyErr_SetString (too_few, e.what ());
+      raise (too_few, e.what ());
     }
     catch (const InvalidInputError& e) {
-      PyErr_SetString (invalid, e.what ());
+      raise (invalid, e.what ());
     }
     catch (const FormatError& e) {
-      PyErr_SetString (format, e.what ());
+      raise (format, e.what ());
     }
     catch (const IoError& e) {
-      PyErr_SetString (io, e.what ());
+      raise (io, e.what ());
     }
     catch (const NumericalError& e) {
-      PyErr_SetString (numerical, e.what ());
+      raise (numerical, e.what ());
     }
     catch (const Error& e) {
-      PyErr_SetString (error, e.what ());
+      raise (error, e.what ());
     }
   });
 }

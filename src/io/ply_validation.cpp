@@ -2,7 +2,9 @@
 #include "geometry_validators.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
+#include <set>
 
 namespace morphreg
 {
@@ -120,6 +122,8 @@ parseHeader (GeometryFileReader& reader)
     if (!reader.nextLine (line))
       reader.fail ("the PLY header has no end_header line (the file is cut short)");
     splitTokens (line, tokens);
+    if (!tokens.empty () && std::isspace (static_cast<unsigned char> (line[0])))
+      reader.failAtLine ("a PLY header line starts with white space");
     if (tokens.empty () || tokens[0] == "comment" || tokens[0] == "obj_info")
       continue;
     if (tokens[0] == "end_header")
@@ -163,12 +167,57 @@ isFaceIndexList (const PlyElement& element, const PlyProperty& property)
          (property.name == "vertex_indices" || property.name == "vertex_index");
 }
 
-/** Each element has properties and its rows fit in what follows the header, checked before any row is read. */
+/** The colour channel a vertex property is to PCL's reader (0 red, 1 green, 2 blue, 3 alpha), or -1: PCL packs uchar
+ *  red, green and blue (or diffuse_red...) into one field and adds alpha to it. */
+int
+colourChannel (const PlyProperty& property)
+{
+  if (property.is_list || property.type.size != 1 || !property.type.integer || property.type.is_signed)
+    return -1;
+  static const std::map<std::string, int, std::less<>> channels = {
+      {"red", 0},         {"green", 1},         {"blue", 2},        {"alpha", 3},
+      {"diffuse_red", 0}, {"diffuse_green", 1}, {"diffuse_blue", 2}};
+  const auto channel = channels.find (property.name);
+  return channel == channels.end () ? -1 : channel->second;
+}
+
+/** The vertex properties PCL's PLY reader can take: scalars only, each name once, and colour channels as red, green,
+ *  blue in this order (then alpha) or none of them; other layouts make it write outside its buffers. */
+void
+checkVertexProperties (const GeometryFileReader& reader, const PlyElement& vertex)
+{
+  std::set<std::string> names;
+  int next_channel = 0;
+  for (const PlyProperty& property : vertex.properties) {
+    if (property.is_list)
+      reader.fail ("the PLY vertex element has the list property '" + property.name +
+                   "'; vertices take scalar properties only");
+    if (!names.insert (property.name).second)
+      reader.fail ("the PLY vertex element has the property '" + property.name + "' twice");
+    const int channel = colourChannel (property);
+    if (channel < 0)
+      continue;
+    if (channel != next_channel)
+      reader.fail ("the PLY vertex colour property '" + property.name +
+                   "' is out of order; colours must be red, green, blue (uchar, in this order), then alpha");
+    ++next_channel;
+  }
+  if (next_channel > 0 && next_channel < 3)
+    reader.fail ("the PLY vertex colours are incomplete; colours must be red, green and blue (uchar)");
+}
+
+/** Each element is declared once and has properties, the vertex properties are ones PCL reads (see
+ *  checkVertexProperties), and the rows fit in what follows the header, checked before any row is read. */
 void
 checkElements (GeometryFileReader& reader, const PlyHeader& header)
 {
   double available = static_cast<double> (reader.remaining ());
+  std::set<std::string> declared;
   for (const PlyElement& element : header.elements) {
+    if (!declared.insert (element.name).second)
+      reader.fail ("PLY element '" + element.name + "' is declared twice");
+    if (element.name == "vertex")
+      checkVertexProperties (reader, element);
     if (element.properties.empty () && element.count > 0)
       reader.fail ("PLY element '" + element.name + "' has no properties");
     for (const PlyProperty& property : element.properties)

@@ -172,6 +172,31 @@ TEST (FileValidationTest, MalformedPlyIsRejectedWithTheLine)
   expectRejected (dir, "binary_list.ply", bytes, ": the file ends inside 'face' row 11 of 12");
 }
 
+/** Vertex layouts that made PCL's PLY reader abort (assertions on writes outside its buffers), refused first. */
+TEST (FileValidationTest, PlyVertexLayoutsPclCannotReadAreRejected)
+{
+  TempDirectory dir;
+  const std::string start = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                            "property float z\n";
+  expectRejected (dir, "vertex_list.ply", start + "property list uchar int vertex_indices\nend_header\n0 0 0 1 0\n",
+                  ": the PLY vertex element has the list property 'vertex_indices'");
+  expectRejected (dir, "blue_only.ply", start + "property uchar blue\nend_header\n0 0 0 9\n",
+                  ": the PLY vertex colour property 'blue' is out of order");
+  expectRejected (dir, "red_green.ply", start + "property uchar red\nproperty uchar green\nend_header\n0 0 0 1 2\n",
+                  ": the PLY vertex colours are incomplete");
+  expectRejected (dir, "twice.ply", start + "property float x\nend_header\n0 0 0 0\n",
+                  ": the PLY vertex element has the property 'x' twice");
+  expectRejected (dir, "two_vertex_elements.ply", start + "element vertex 1\nproperty float x\nend_header\n0 0 0\n0\n",
+                  ": PLY element 'vertex' is declared twice");
+  expectRejected (dir, "indented.ply", start + "\t obj_info num_cols 1\nend_header\n0 0 0\n",
+                  ":7: a PLY header line starts with white space");
+  // Colours as PCL writes them, and alpha after them, pass.
+  const std::string coloured = start + "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+                                       "property uchar alpha\nend_header\n0 0 0 1 2 3 4\n";
+  std::ofstream (dir.file ("coloured.ply")) << coloured;
+  EXPECT_NO_THROW (morphreg::validateGeometryFile (dir.file ("coloured.ply")));
+}
+
 TEST (FileValidationTest, MalformedPcdIsRejectedWithTheLine)
 {
   TempDirectory dir;
