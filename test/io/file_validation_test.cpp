@@ -22,18 +22,12 @@
 
 using morphreg::FileFormat;
 using morphreg::test::expectErrorContaining;
+using morphreg::test::readBytes;
 using morphreg::test::TempDirectory;
 using morphreg::test::writeText;
 
 namespace
 {
-std::string
-readBytes (const std::string& path)
-{
-  std::ifstream stream (path, std::ios::binary);
-  return std::string (std::istreambuf_iterator<char> (stream), {});
-}
-
 pcl::PointCloud<pcl::PointNormal>
 makeCloud (int n)
 {

@@ -20,18 +20,12 @@
 #include <limits>
 
 using morphreg::test::expectErrorContaining;
+using morphreg::test::readBytes;
 using morphreg::test::TempDirectory;
 using morphreg::test::writeText;
 
 namespace
 {
-std::string
-readBytes (const std::string& path)
-{
-  std::ifstream stream (path, std::ios::binary);
-  return std::string (std::istreambuf_iterator<char> (stream), {});
-}
-
 /** Coloured points with normals in a 4 x 3 grid, one of them NaN, seen from a viewpoint other than the origin. */
 pcl::PointCloud<pcl::PointXYZRGBNormal>
 makeOrganisedCloud ()
