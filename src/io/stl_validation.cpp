@@ -2,6 +2,7 @@
 #include "geometry_validators.h"
 
 #include <algorithm>
+#include <string>
 
 namespace morphreg
 {
@@ -63,9 +64,16 @@ validateAsciiStlFile (const std::string& path)
   std::vector<std::string_view> tokens;
   bool in_solid = false;
   while (nextTokens (reader, line, tokens)) {
-    // VTK's STL reader takes a file with a byte above 127 near its start for binary, whatever it starts with.
-    if (std::any_of (line.begin (), line.end (), [] (char c) { return static_cast<unsigned char> (c) > 127; }))
-      reader.failAtLine ("a byte that is not ASCII in an ASCII STL file");
+    // VTK's STL reader takes a file whose first 256 bytes hold a few that are not text (above 127, or control
+    // characters other than tab and line ends) for binary, whatever it starts with, and reads a triangle count from
+    // bytes 80 to 83: an ASCII STL holds text alone.
+    const auto not_text = std::find_if (line.begin (), line.end (), [] (char c) {
+      const auto byte = static_cast<unsigned char> (c);
+      return byte > 126 || (byte < 32 && byte != '\t' && byte != '\r');
+    });
+    if (not_text != line.end ())
+      reader.failAtLine ("byte " + std::to_string (static_cast<unsigned char> (*not_text)) +
+                         " is not text, in an ASCII STL file");
     if (!in_solid && tokens[0] == "solid")
       in_solid = true;
     else if (in_solid && tokens[0] == "endsolid")

@@ -277,6 +277,10 @@ TEST (FileValidationTest, MalformedStlIsRejectedWithTheLine)
   expectRejected (dir, "cut.stl", "solid s\n" + facet.substr (0, 43), ": the file ends inside a facet");
   expectRejected (dir, "open.stl", "solid s\n" + facet, ": the STL file has no 'endsolid'");
   expectRejected (dir, "tail.stl", "solid s\nendsolid s\ngarbage\n", ":3: expected 'solid', found 'garbage'");
+  // Bytes that are not text make VTK read the file as binary (and allocate for the count in bytes 80 to 83).
+  expectRejected (dir, "control.stl", "solid\n\nendsolid\t{d\x03\x03\x03\x03\n\nsolid\n",
+                  ":3: byte 3 is not text, in an ASCII STL file");
+  expectRejected (dir, "high.stl", "solid s\xe9\nendsolid s\n", ":1: byte 233 is not text, in an ASCII STL file");
 }
 
 TEST (FileValidationTest, MalformedVtkIsRejectedWithTheLine)
