@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import morphreg
-from conftest import cpp_reference, relative_difference
+from conftest import cpp_reference, relative_difference, run_cli
 
 
 def test_load_gives_the_saved_model(model, model_file):
@@ -79,3 +79,22 @@ def test_bad_arguments_are_named(model, tmp_path):
         morphreg.Model.load(str(corrupt))
     with pytest.raises(morphreg.InvalidInputError, match="meshes\\[1\\]"):
         morphreg.Model.build([model.mean, model.mean[:-1]], model.faces)
+
+
+def test_build_equals_the_command_line(generator, tmp_path):
+    """Model.build on meshes read back from files against `morphreg build-model --mesh ...` on the same files."""
+    files = []
+    for i, head in enumerate(generator.population(12, 50)):
+        files.append(str(tmp_path / f"head_{i}.ply"))
+        morphreg.save_mesh(files[-1], head.vertices, head.faces)
+    meshes = [morphreg.load_mesh(f)[0] for f in files]
+    python = morphreg.Model.build(meshes, generator.faces, components=6)
+    arguments = [a for f in files for a in ("--mesh", f)]
+    run_cli("build-model", *arguments, "--components", 6, "--out", tmp_path / "cli.h5", "-q")
+    cli = morphreg.Model.load(str(tmp_path / "cli.h5"))
+    assert relative_difference(python.mean, cli.mean) <= 1e-9
+    assert relative_difference(python.variances(), cli.variances()) <= 1e-9
+    # Components are defined up to their sign.
+    a, b = python.components(), cli.components()
+    signs = np.sign(np.sum(a * b, axis=0))
+    assert relative_difference(a * signs, b) <= 1e-9
