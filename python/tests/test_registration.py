@@ -175,3 +175,8 @@ def test_unknown_setting_is_a_type_error(model, scan):
 def test_bad_landmarks(model, scan, landmarks, message):
     with pytest.raises(morphreg.InvalidInputError, match=message):
         morphreg.register(model, scan.points, scan.normals, landmarks)
+
+
+def test_a_lost_scan_raises_too_few_correspondences(model, scan):
+    with pytest.raises(morphreg.TooFewCorrespondencesError, match="check the max correspondence distance"):
+        morphreg.register(model, scan.points, scan.normals, max_distance=0.01)  # no scan point that close
