@@ -133,7 +133,7 @@ scannerParameters (const py::kwargs& settings)
                                              {"max_incidence_deg", &p.max_incidence_deg},
                                              {"camera_elevation_deg", &p.camera_elevation_deg},
                                              {"noise_sigma", &p.noise_sigma},
-                                             {"outlier_fraction", &p.outlier_fraction},
+                                             {"outliers", &p.outlier_fraction},
                                              {"max_rotation_deg", &p.max_rotation_deg},
                                              {"max_scale_deviation", &p.max_scale_deviation},
                                              {"max_translation", &p.max_translation},
@@ -161,8 +161,8 @@ scannerSettings (const ScanSimulator& scanner)
   d["row_spacing"] = p.row_spacing;
   d["max_incidence_deg"] = p.max_incidence_deg;
   d["camera_elevation_deg"] = p.camera_elevation_deg;
-  d["noise_sigma"] = p.noise_sigma;
-  d["outlier_fraction"] = p.outlier_fraction;
+  d["noise"] = p.noise_sigma;
+  d["outliers"] = p.outlier_fraction;
   d["max_rotation_deg"] = p.max_rotation_deg;
   d["max_scale_deviation"] = p.max_scale_deviation;
   d["max_translation"] = p.max_translation;
@@ -175,8 +175,10 @@ void
 bindScanSimulator (py::module_& m)
 {
   py::class_<ScanSimulator> (m, "ScanSimulator",
-                             "A cylindrical laser scanner: settings as keyword arguments (angular_samples, "
-                             "row_spacing, noise_sigma, outlier_fraction, max_rotation_deg, range_mesh, ...).")
+                             "A cylindrical laser scanner: settings as keyword arguments, named as synth's options "
+                             "(angular_samples, row_spacing, noise, outliers, range_mesh) or as ScanSimulator's "
+                             "parameters (max_incidence_deg, camera_elevation_deg, max_rotation_deg, "
+                             "max_scale_deviation, max_translation, max_edge_length).")
       .def (py::init ([] (const py::kwargs& settings) { return ScanSimulator (scannerParameters (settings)); }))
       .def_property_readonly ("settings", &scannerSettings)
       .def (
