@@ -132,7 +132,7 @@ scannerParameters (const py::kwargs& settings)
   const std::map<std::string, double*> reals{{"row_spacing", &p.row_spacing},
                                              {"max_incidence_deg", &p.max_incidence_deg},
                                              {"camera_elevation_deg", &p.camera_elevation_deg},
-                                             {"noise_sigma", &p.noise_sigma},
+                                             {"noise", &p.noise_sigma},
                                              {"outliers", &p.outlier_fraction},
                                              {"max_rotation_deg", &p.max_rotation_deg},
                                              {"max_scale_deviation", &p.max_scale_deviation},

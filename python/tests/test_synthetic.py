@@ -40,9 +40,9 @@ def test_scans_equal_the_cpp_api(generator, tmp_path):
 
 
 def test_range_mesh_and_settings(truth):
-    scanner = morphreg.ScanSimulator(angular_samples=100, row_spacing=5.0, range_mesh=True, outliers=0.0)
+    scanner = morphreg.ScanSimulator(angular_samples=100, row_spacing=5.0, range_mesh=True, outliers=0.0, noise=0.1)
     assert scanner.settings["angular_samples"] == 100 and scanner.settings["range_mesh"] is True
-    assert scanner.settings["outliers"] == 0.0 and scanner.settings["noise"] == 0.2
+    assert scanner.settings["outliers"] == 0.0 and scanner.settings["noise"] == 0.1
     scan = scanner.scan(truth.vertices, truth.faces, 1)
     assert scan.faces.shape[1] == 3 and scan.faces.max() < len(scan.points) and scan.num_outliers == 0
 
