@@ -10,11 +10,27 @@ namespace validation
 {
 namespace
 {
-/** Reads the next non-blank line into \a tokens; false at the end of the file. */
+/** Throws naming the line when \a line holds a byte that is not text. VTK's STL reader takes a file whose first 256
+ *  bytes hold a few that are not text (above 127, or control characters other than tab and line ends) for binary,
+ *  whatever it starts with, and allocates for a triangle count from bytes 80 to 83: an ASCII STL holds text alone. */
+void
+requireText (const GeometryFileReader& reader, const std::string& line)
+{
+  const auto not_text = std::find_if (line.begin (), line.end (), [] (char c) {
+    const auto byte = static_cast<unsigned char> (c);
+    return byte > 126 || (byte < 32 && byte != '\t' && byte != '\r');
+  });
+  if (not_text != line.end ())
+    reader.failAtLine ("byte " + std::to_string (static_cast<unsigned char> (*not_text)) +
+                       " is not text, in an ASCII STL file");
+}
+
+/** Reads the next non-blank line into \a tokens, every line checked to be text; false at the end of the file. */
 bool
 nextTokens (GeometryFileReader& reader, std::string& line, std::vector<std::string_view>& tokens)
 {
   while (reader.nextLine (line)) {
+    requireText (reader, line);
     splitTokens (line, tokens);
     if (!tokens.empty ())
       return true;
@@ -64,16 +80,6 @@ validateAsciiStlFile (const std::string& path)
   std::vector<std::string_view> tokens;
   bool in_solid = false;
   while (nextTokens (reader, line, tokens)) {
-    // VTK's STL reader takes a file whose first 256 bytes hold a few that are not text (above 127, or control
-    // characters other than tab and line ends) for binary, whatever it starts with, and reads a triangle count from
-    // bytes 80 to 83: an ASCII STL holds text alone.
-    const auto not_text = std::find_if (line.begin (), line.end (), [] (char c) {
-      const auto byte = static_cast<unsigned char> (c);
-      return byte > 126 || (byte < 32 && byte != '\t' && byte != '\r');
-    });
-    if (not_text != line.end ())
-      reader.failAtLine ("byte " + std::to_string (static_cast<unsigned char> (*not_text)) +
-                         " is not text, in an ASCII STL file");
     if (!in_solid && tokens[0] == "solid")
       in_solid = true;
     else if (in_solid && tokens[0] == "endsolid")

@@ -281,6 +281,8 @@ TEST (FileValidationTest, MalformedStlIsRejectedWithTheLine)
   expectRejected (dir, "control.stl", "solid\n\nendsolid\t{d\x03\x03\x03\x03\n\nsolid\n",
                   ":3: byte 3 is not text, in an ASCII STL file");
   expectRejected (dir, "high.stl", "solid s\xe9\nendsolid s\n", ":1: byte 233 is not text, in an ASCII STL file");
+  expectRejected (dir, "blank.stl", "solid s\n" + facet + std::string (3, '\0') + "\nendsolid s\n",
+                  ":9: byte 0 is not text, in an ASCII STL file");
 }
 
 TEST (FileValidationTest, MalformedVtkIsRejectedWithTheLine)
