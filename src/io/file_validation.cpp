@@ -1,5 +1,6 @@
 #include "geometry_validators.h"
 #include "off_reader.h"
+#include "vtk_reader.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
@@ -48,11 +49,9 @@ validateForLibraryReader (const std::string& path, FileFormat format)
   case FileFormat::StlAscii:
     validation::validateAsciiStlFile (path);
     break;
-  case FileFormat::VtkLegacy:
-    validation::validateVtkFile (path);
-    break;
   case FileFormat::StlBinary: // recognised by its size being exactly what its triangle count needs
   case FileFormat::Pcd:       // read by morphreg's own readers, which check as they read
+  case FileFormat::VtkLegacy:
   case FileFormat::Off:
   case FileFormat::Unknown:
     break;
@@ -69,6 +68,8 @@ validateGeometryFile (const std::string& path)
     throw unknownContent (path);
   if (format == FileFormat::Off)
     readOffMesh (path);
+  else if (format == FileFormat::VtkLegacy)
+    readVtkFile (path);
   else if (format == FileFormat::Pcd)
     validation::validatePcdFile (path);
   else

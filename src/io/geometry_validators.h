@@ -24,9 +24,5 @@ validateObjFile (const std::string& path);
 void
 validateAsciiStlFile (const std::string& path);
 
-/** A VTK legacy POLYDATA file: header, points and cells. */
-void
-validateVtkFile (const std::string& path);
-
 } // namespace validation
 } // namespace morphreg

@@ -1,4 +1,5 @@
 #include "off_reader.h"
+#include "vtk_reader.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -29,6 +30,10 @@ loadPolygonMesh (const std::string& path)
       return pcl::io::loadPLYFile (path, mesh);
     if (format == FileFormat::Obj) {
       mesh = readObjFile (path);
+      return 0;
+    }
+    if (format == FileFormat::VtkLegacy) {
+      mesh = readVtkFile (path);
       return 0;
     }
     return pcl::io::loadPolygonFile (path, mesh) > 0 ? 0 : -1;

@@ -16,6 +16,9 @@
 #include <pcl/io/vtk_io.h>
 #include <pcl/io/vtk_lib_io.h>
 
+#include <algorithm>
+#include <cstring>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -305,7 +308,7 @@ TEST (FileValidationTest, MalformedVtkIsRejectedWithTheLine)
   expectRejected (dir, "too_few_points.vtk", header + "POINTS 1000 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\n",
                   ": header claims 1000 points");
   expectRejected (dir, "few_points.vtk", header + "POINTS 4 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\n",
-                  ":7: point coordinate value 'POLYGONS' is not a finite number");
+                  ":7: point coordinate value 'POLYGONS' is not a number");
   expectRejected (dir, "index.vtk", header + points + "POLYGONS 1 4\n3 0 1 3\n",
                   ":9: POLYGONS index 3 is outside the 3 points");
   expectRejected (dir, "size.vtk", header + points + "POLYGONS 1 5\n3 0 1 2\n7\n",
@@ -336,6 +339,90 @@ TEST (FileValidationTest, MalformedVtkIsRejectedWithTheLine)
       expectErrorContaining<morphreg::FormatError> ([&] { morphreg::validateGeometryFile (dir.file ("cut.vtk")); },
                                                     fragment);
   }
+}
+
+namespace
+{
+/** \a value's bytes, most significant first, as a BINARY VTK file holds them. */
+template <typename T>
+std::string
+bigEndian (T value)
+{
+  char bytes[sizeof (T)];
+  std::memcpy (bytes, &value, sizeof (T));
+  std::reverse (bytes, bytes + sizeof (T));
+  return std::string (bytes, sizeof (T));
+}
+
+void
+expectSameMesh (const pcl::PolygonMesh& expected, const pcl::PolygonMesh& actual, const std::string& name)
+{
+  SCOPED_TRACE (name);
+  pcl::PointCloud<pcl::PointXYZ> expected_points, actual_points;
+  pcl::fromPCLPointCloud2 (expected.cloud, expected_points);
+  pcl::fromPCLPointCloud2 (actual.cloud, actual_points);
+  ASSERT_EQ (actual_points.size (), expected_points.size ());
+  for (std::size_t i = 0; i < expected_points.size (); ++i)
+    EXPECT_EQ (actual_points[i].getVector3fMap (), expected_points[i].getVector3fMap ()) << "point " << i;
+  ASSERT_EQ (actual.polygons.size (), expected.polygons.size ());
+  for (std::size_t p = 0; p < expected.polygons.size (); ++p)
+    EXPECT_EQ (actual.polygons[p].vertices, expected.polygons[p].vertices) << "polygon " << p;
+}
+} // namespace
+
+TEST (FileValidationTest, OwnVtkReaderReadsWhatVtksReaderReads)
+{
+  TempDirectory dir;
+  const pcl::PolygonMesh cube = morphreg::toPolygonMesh (morphreg::test::makeCube (10.0));
+  pcl::io::saveVTKFile (dir.file ("classic.vtk"), cube);             // format 3, ASCII, PCL's own writer
+  pcl::io::savePolygonFileVTK (dir.file ("binary.vtk"), cube, true); // VTK's writer: format 5, OFFSETS
+  pcl::io::savePolygonFileVTK (dir.file ("ascii.vtk"), cube, false);
+  for (const std::string name : {"classic.vtk", "binary.vtk", "ascii.vtk"}) {
+    pcl::PolygonMesh by_vtk;
+    ASSERT_GT (pcl::io::loadPolygonFile (dir.file (name), by_vtk), 0) << name;
+    expectSameMesh (by_vtk, morphreg::loadPolygonMesh (dir.file (name)), name);
+  }
+}
+
+TEST (FileValidationTest, OwnVtkReaderCutsStripsAndReadsEveryBinaryType)
+{
+  TempDirectory dir;
+  const std::string header = "# vtk DataFile Version 3.0\nhead\n";
+  writeText (dir.file ("strip.vtk"), header + "ASCII\nDATASET POLYDATA\nPOINTS 5 float\n0 0 0 1 0 0 0 1 0 1 1 0 "
+                                              "2 1 0\nLINES 1 3\n2 0 1\nTRIANGLE_STRIPS 1 6\n5 0 1 2 3 4\n");
+  const pcl::PolygonMesh strip = morphreg::loadPolygonMesh (dir.file ("strip.vtk"));
+  ASSERT_EQ (strip.polygons.size (), 3u); // the line is not kept; the strip's triangles keep its orientation
+  EXPECT_EQ (strip.polygons[0].vertices, (pcl::Indices{0, 1, 2}));
+  EXPECT_EQ (strip.polygons[1].vertices, (pcl::Indices{2, 1, 3}));
+  EXPECT_EQ (strip.polygons[2].vertices, (pcl::Indices{2, 3, 4}));
+
+  std::string doubles = header + "BINARY\nDATASET POLYDATA\nPOINTS 3 double\n";
+  for (const double value : {0.0, 0.0, 0.0, 1.5, 0.0, 0.0, 0.0, -2.25, 7.0})
+    doubles += bigEndian (value);
+  const std::string triangle = "\nPOLYGONS 1 4\n" + bigEndian<std::int32_t> (3) + bigEndian<std::int32_t> (0) +
+                               bigEndian<std::int32_t> (1) + bigEndian<std::int32_t> (2) + "\n";
+  writeText (dir.file ("doubles.vtk"), doubles + triangle);
+  pcl::PointCloud<pcl::PointXYZ> points;
+  pcl::fromPCLPointCloud2 (morphreg::loadPolygonMesh (dir.file ("doubles.vtk")).cloud, points);
+  ASSERT_EQ (points.size (), 3u);
+  EXPECT_EQ (points[1].x, 1.5f);
+  EXPECT_EQ (points[2].getVector3fMap (), Eigen::Vector3f (0.0f, -2.25f, 7.0f));
+
+  std::string shorts = header + "BINARY\nDATASET POLYDATA\nPOINTS 3 short\n";
+  for (const std::int16_t value : {0, 0, 0, -300, 0, 0, 0, 2, 1})
+    shorts += bigEndian (value);
+  writeText (dir.file ("shorts.vtk"), shorts + triangle);
+  pcl::fromPCLPointCloud2 (morphreg::loadPolygonMesh (dir.file ("shorts.vtk")).cloud, points);
+  EXPECT_EQ (points[1].x, -300.0f);
+
+  std::string nan = header + "BINARY\nDATASET POLYDATA\nPOINTS 3 float\n";
+  for (int i = 0; i < 9; ++i)
+    nan += bigEndian (i == 4 ? std::numeric_limits<float>::quiet_NaN () : 1.0f);
+  writeText (dir.file ("nan.vtk"), nan + triangle);
+  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadPolygonMesh (dir.file ("nan.vtk")); },
+                                                "nan.vtk: point 1 has a coordinate that is not a finite number");
+  expectRejected (dir, "huge.vtk", header + "ASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 1e39 0\n",
+                  ":6: point 0 has a coordinate that is not a finite number");
 }
 
 TEST (FileValidationTest, EmptyFilesFoldersAndUnknownContentAreNamed)

@@ -16,7 +16,8 @@
  *    relative) are in range.
  *  - STL: binary files are exactly 84 + 50 N bytes; ASCII files follow solid / facet normal / outer loop / 3 vertex
  *    / endloop / endfacet / endsolid with finite coordinates.
- *  - VTK legacy: ASCII or BINARY POLYDATA; POINTS n has its 3n values; VERTICES, LINES, POLYGONS and
+ *  - VTK legacy: read by morphreg's own reader (readVtkFile; VTK's dereferences null on some malformed files):
+ *    ASCII or BINARY POLYDATA; finite point coordinates; POINTS n has its 3n values; VERTICES, LINES, POLYGONS and
  *    TRIANGLE_STRIPS have consistent sizes (the classic layout or OFFSETS/CONNECTIVITY) and indices below n; the
  *    attributes after them (NORMALS, SCALARS, FIELD, ...) hold the values their headers claim.
  *  - OFF: read by morphreg's own reader, which checks every count, coordinate and index as it reads.
@@ -39,8 +40,8 @@ validateGeometryFile (const std::string& path);
 
 /** \brief The loaders' gate: \a path must be a readable file with one of the \a allowed extensions, whose content is
  *  the format its extension names (a PLY named .pcd is a FormatError that says so), and which passes
- *  validateGeometryFile(). OFF and PCD files are only recognised here: morphreg's OFF and PCD readers check them as
- *  they read.
+ *  validateGeometryFile(). OFF, PCD and VTK files are only recognised here: morphreg's readers of them check
+ *  them as they read.
  *  \param[in] path the file
  *  \param[in] allowed the accepted extensions, space-separated, with their dots (e.g. ".ply .obj")
  *  \param[in] what what the file should hold (e.g. "mesh"), for the messages
