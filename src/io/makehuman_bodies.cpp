@@ -114,6 +114,16 @@ MakeHumanBodies::joints (const std::string& subject, BodyPose pose, const std::v
   return positions;
 }
 
+LandmarkPositions
+MakeHumanBodies::namedJoints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const
+{
+  const Eigen::Matrix3Xd positions = joints (subject, pose, names);
+  LandmarkPositions named;
+  for (std::size_t i = 0; i < names.size (); ++i)
+    named[names[i]] = positions.col (static_cast<Eigen::Index> (i));
+  return named;
+}
+
 std::vector<std::string>
 MakeHumanBodies::jointNames () const
 {

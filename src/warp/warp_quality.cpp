@@ -4,6 +4,7 @@
 #include <morphreg/warp/warp_quality.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace morphreg
@@ -69,6 +70,26 @@ evaluateWarp (const TriangleMesh& warped, const TriangleMesh& truth, const std::
         ++quality.folded_in_band;
     }
   return quality;
+}
+
+int
+countFoldedTriangles (const TriangleMesh& mesh)
+{
+  const Eigen::Matrix3Xd normals = faceNormals (mesh);
+  std::vector<std::array<int, 3>> sides; // (lower vertex, higher vertex, triangle) of every triangle side
+  sides.reserve (static_cast<std::size_t> (3 * mesh.numTriangles ()));
+  for (Eigen::Index t = 0; t < mesh.numTriangles (); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles (k, t), b = mesh.triangles ((k + 1) % 3, t);
+      sides.push_back ({std::min (a, b), std::max (a, b), static_cast<int> (t)});
+    }
+  std::sort (sides.begin (), sides.end ());
+  std::vector<bool> folded (static_cast<std::size_t> (mesh.numTriangles ()), false);
+  for (std::size_t i = 0; i + 1 < sides.size (); ++i)
+    if (sides[i][0] == sides[i + 1][0] && sides[i][1] == sides[i + 1][1] &&
+        normals.col (sides[i][2]).dot (normals.col (sides[i + 1][2])) < 0.0)
+      folded[static_cast<std::size_t> (sides[i][2])] = folded[static_cast<std::size_t> (sides[i + 1][2])] = true;
+  return static_cast<int> (std::count (folded.begin (), folded.end (), true));
 }
 
 } // namespace morphreg

@@ -3,6 +3,7 @@
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/warp_quality.h>
 
+#include "support/makehuman_data.h"
 #include "support/test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 
 using morphreg::SegmentedWarp;
 using morphreg::TriangleMesh;
+using morphreg::test::bodiesDirectory;
 
 namespace
 {
@@ -36,16 +38,6 @@ setAffineSegment (SegmentedWarp& warp, int segment, double x0, const Eigen::Affi
   source << x0, x0 + 100, x0, x0 + 50, 0, 0, 200, 100, 0, 0, 0, 50;
   warp.setSegmentLandmarks (segment, source, map * source);
 }
-
-std::string
-bodiesDirectory ()
-{
-  return std::string (MORPHREG_SHARED_DATA_DIR) + "/makehuman_bodies";
-}
-
-#define REQUIRE_BODIES()                                                                                               \
-  if (!std::filesystem::exists (bodiesDirectory () + "/mh_joints.json"))                                               \
-  GTEST_SKIP () << "MakeHuman bodies not found in " << bodiesDirectory () << " (../shared/data is absent)"
 
 /** Global, hard-segmented and blended-segmented warps of one case, with their quality against the truth. */
 struct WarpComparison

@@ -4,7 +4,9 @@
  *  one vertex numbering, their joint centres, the four body segments and the landmark sets. MakeHuman works in
  *  decimetres; everything returned here is converted to millimetres.
  */
+#include <morphreg/common/landmarks.h>
 #include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/warp/skeleton.h>
 
 #include <map>
 #include <string>
@@ -62,6 +64,16 @@ public:
   Eigen::Matrix3Xd
   joints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const;
 
+  /** \brief Joint positions (mm) of a subject in \a pose by name, for the \a names wanted (e.g. majorJoints());
+   *  InvalidInputError for an unknown subject or joint name.
+   *  \param[in] subject one of subjects()
+   *  \param[in] pose standing or seated
+   *  \param[in] names the joints wanted
+   *  \return name -> position
+   */
+  LandmarkPositions
+  namedJoints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const;
+
   /** \brief All joint names (head and tail of every bone).
    *  \return the names, sorted
    */
@@ -117,5 +129,18 @@ private:
   std::vector<std::string> segment_names_;
   int num_vertices_ = 0;
 };
+
+/** \brief A skeleton of 27 rigid bones over the 51 major joints of the MakeHuman bodies (MakeHumanBodies::
+ *  majorJoints()), carrying the four segments of mh_segments.json: the spine from spine05 to the head (the two lowest
+ *  bones in lower_body, the rest in upper_body), per side a clavicle (upper_body), shoulder, upper arm, forearm and
+ *  hand (the arm's segment), a pelvis bone from spine05 to the hip, a thigh (hip to knee), shin (knee to ankle) and
+ *  foot (lower_body). Twists come from the eyes (head), the two hips (thigh and shin), the two shoulders (upper
+ *  arm), thumb and little finger tips (forearm and hand) and the outer toes (foot). Bones are named after
+ *  MakeHuman's ("upperleg.L" for the left thigh, "lowerleg.L", "upperarm.L", ...), so the limb parts of
+ *  limbPartErrors() find them.
+ *  \return the skeleton
+ */
+Skeleton
+makeHumanSkeleton ();
 
 } // namespace morphreg

@@ -39,4 +39,13 @@ WarpQuality
 evaluateWarp (const TriangleMesh& warped, const TriangleMesh& truth, const std::vector<int>& labels,
               double band_width = 100.0, const TriangleMesh* source = nullptr);
 
+/** \brief Triangles where the surface doubles back on itself: those with an edge neighbour whose normal points more
+ *  than 90 degrees away from theirs. Intrinsic to one mesh, so a warp and the true target can be compared (a
+ *  re-posturing should fold no more triangles than the truth does) without matching normals between postures.
+ *  \param[in] mesh the mesh
+ *  \return the number of folded triangles
+ */
+int
+countFoldedTriangles (const TriangleMesh& mesh);
+
 } // namespace morphreg
