@@ -1,25 +1,33 @@
-// `morphreg warp`: a mesh warped by a thin plate spline from source to target landmarks, globally or by segments
-// with blended seams; with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
+// `morphreg warp`: a mesh warped from source to target landmarks by a thin plate spline, globally or by segments
+// with blended seams, or re-postured with rigid bones (--method articulated); with --truth, the warp's error per
+// vertex (colours of the output PLY) and in the report.
 #include "commands.h"
 #include "mesh_annotations.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "progress.h"
 
+#include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
+#include <morphreg/common/length_unit.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
+#include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/skeleton_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/warp/articulated_warp.h>
+#include <morphreg/warp/limb_parts.h>
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/warp_quality.h>
-#include <morphreg/common/colour_map.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <tuple>
 
 namespace morphreg
 {
@@ -31,17 +39,27 @@ struct WarpOptions
 {
   std::string mesh, source, target, out = "warped.ply";
   std::string labels, truth, report;
+  std::string method = "tps";
+  std::string skeleton; ///< skeleton file of the articulated method; empty: MakeHuman's major joints
+  std::string units = "mm";
   std::vector<double> blend{100.0};  ///< one for every segment, or one per segment
   std::vector<double> overlap{90.0}; ///< one for every segment, or one per segment
   double lambda = 0.0;
+  double rigidity = 1.0, skinning_width = 30.0;
   bool quiet = false;
 };
 
-/** The landmark pairs present in both files, as matching columns; every name must be in both. */
-std::pair<Eigen::Matrix3Xd, Eigen::Matrix3Xd>
-landmarkPairs (const std::string& source_path, const std::string& target_path)
+/** A surface landmark of the articulated method must be a vertex of the mesh: within this distance (mm) of one. */
+constexpr double kSurfaceLandmarkTolerance = 1.0;
+
+/** The landmarks of both files (mm), checked to name the same points; every name must be in both. */
+std::pair<LandmarkPositions, LandmarkPositions>
+namedLandmarkPairs (const std::string& source_path, const std::string& target_path, double millimetres_per_unit)
 {
-  const LandmarkPositions source = loadNamedPoints (source_path), target = loadNamedPoints (target_path);
+  LandmarkPositions source = loadNamedPoints (source_path), target = loadNamedPoints (target_path);
+  for (LandmarkPositions* points : {&source, &target})
+    for (auto& entry : *points)
+      entry.second *= millimetres_per_unit;
   std::string missing;
   for (const auto& entry : source)
     if (!target.count (entry.first))
@@ -53,6 +71,13 @@ landmarkPairs (const std::string& source_path, const std::string& target_path)
     throw InvalidInputError ("warp: the landmark files " + source_path + " and " + target_path +
                              " must name the same landmarks; not in both:" + missing);
   requireOneTargetPerPoint (source, target, source_path, target_path);
+  return {source, target};
+}
+
+/** The landmark pairs as matching columns. */
+std::pair<Eigen::Matrix3Xd, Eigen::Matrix3Xd>
+landmarkColumns (const LandmarkPositions& source, const LandmarkPositions& target)
+{
   Eigen::Matrix3Xd from (3, static_cast<Eigen::Index> (source.size ())), to (3, from.cols ());
   Eigen::Index column = 0;
   for (const auto& [name, position] : source) {
@@ -88,21 +113,31 @@ fitToLandmarks (const WarpOptions& options, Fit fit) -> decltype (fit ())
   }
 }
 
-TriangleMesh
-warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& report)
+/** The inputs, in mm. */
+struct WarpInputs
 {
-  const auto [source, target] = landmarkPairs (options.source, options.target);
-  report["landmarks"] = source.cols ();
-  if (options.labels.empty ()) {
-    ThinPlateSpline<double, 3> spline;
-    spline.setRegularization (options.lambda);
-    fitToLandmarks (options, [&] { spline.fit (source, target); });
-    report["mode"] = "global";
-    report["bending_energy"] = spline.bendingEnergy ();
-    report["merged_landmarks"] = spline.mergedLandmarks ();
-    return spline.transformMesh (mesh);
-  }
-  const RegionLabels segments = loadRegionLabels (options.labels, mesh.numVertices ());
+  TriangleMesh mesh;
+  LandmarkPositions source, target;
+};
+
+TriangleMesh
+globalWarp (const WarpOptions& options, const WarpInputs& inputs, nlohmann::json& report)
+{
+  const auto [source, target] = landmarkColumns (inputs.source, inputs.target);
+  ThinPlateSpline<double, 3> spline;
+  spline.setRegularization (options.lambda);
+  fitToLandmarks (options, [&] { spline.fit (source, target); });
+  report["mode"] = "global";
+  report["bending_energy"] = spline.bendingEnergy ();
+  report["merged_landmarks"] = spline.mergedLandmarks ();
+  return spline.transformMesh (inputs.mesh);
+}
+
+TriangleMesh
+segmentedWarp (const WarpOptions& options, const WarpInputs& inputs, nlohmann::json& report)
+{
+  const auto [source, target] = landmarkColumns (inputs.source, inputs.target);
+  const RegionLabels segments = loadRegionLabels (options.labels, inputs.mesh.numVertices ());
   const int num_segments = static_cast<int> (segments.names.size ());
   SegmentedWarp warp (segments.labels, num_segments);
   warp.setRegularization (options.lambda);
@@ -110,45 +145,144 @@ warpMesh (const WarpOptions& options, const TriangleMesh& mesh, nlohmann::json& 
   for (int s = 0; s < num_segments; ++s)
     warp.setSegmentBlendWidth (s, blend[static_cast<std::size_t> (s)]);
   const std::vector<double> overlap = valuePerSegment (options.overlap, num_segments, "--overlap");
-  const auto subsets = fitToLandmarks (options, [&] { return warp.setLandmarks (mesh, source, target, overlap); });
+  const auto subsets =
+      fitToLandmarks (options, [&] { return warp.setLandmarks (inputs.mesh, source, target, overlap); });
   for (const auto& subset : subsets)
     report["segment_landmarks"].push_back (subset.size ());
   report["mode"] = "segmented";
   report["blend_width_mm"] = blend;
   for (double o : overlap) // an infinite overlap (JSON has no infinity): the segment takes every landmark
     report["overlap_mm"].push_back (std::isinf (o) ? nlohmann::json ("all") : nlohmann::json (o));
-  return warp.warp (mesh);
+  return warp.warp (inputs.mesh);
+}
+
+Skeleton
+chosenSkeleton (const WarpOptions& options)
+{
+  return options.skeleton.empty () ? makeHumanSkeleton () : loadSkeleton (options.skeleton);
+}
+
+/** Every landmark that names no joint of the skeleton pins the vertex it lies on; one off the mesh is an error. */
+void
+setSurfaceLandmarks (ArticulatedWarp& warp, const WarpOptions& options, const WarpInputs& inputs,
+                     nlohmann::json& report)
+{
+  const std::vector<std::string> joints = warp.skeleton ().jointNames ();
+  std::vector<int> vertices;
+  std::vector<Eigen::Vector3d> targets;
+  for (const auto& [name, position] : inputs.source) {
+    if (std::binary_search (joints.begin (), joints.end (), name))
+      continue;
+    Eigen::Index vertex = 0;
+    const double distance =
+        std::sqrt ((inputs.mesh.vertices.colwise () - position).colwise ().squaredNorm ().minCoeff (&vertex));
+    if (distance > kSurfaceLandmarkTolerance)
+      throw InvalidInputError ("warp: landmark '" + name + "' of " + options.source +
+                               " is no joint of the skeleton and not on the mesh (" + std::to_string (distance) +
+                               " mm from its nearest vertex of " + options.mesh +
+                               "); surface landmarks must lie on vertices");
+    vertices.push_back (static_cast<int> (vertex));
+    targets.push_back (inputs.target.at (name));
+  }
+  Eigen::Matrix3Xd target_columns (3, static_cast<Eigen::Index> (targets.size ()));
+  for (std::size_t k = 0; k < targets.size (); ++k)
+    target_columns.col (static_cast<Eigen::Index> (k)) = targets[k];
+  warp.setSurfaceLandmarks (vertices, target_columns);
+  report["surface_landmarks"] = vertices.size ();
+}
+
+TriangleMesh
+articulatedWarp (const WarpOptions& options, const WarpInputs& inputs, nlohmann::json& report)
+{
+  if (options.labels.empty ())
+    throw InvalidInputError ("warp --method articulated needs --labels: the segment of each vertex, which the "
+                             "skeleton's bones carry");
+  const RegionLabels segments = loadRegionLabels (options.labels, inputs.mesh.numVertices ());
+  const std::string skeleton_name = options.skeleton.empty () ? "makehuman (built in)" : options.skeleton;
+  std::unique_ptr<ArticulatedWarp> warp;
+  try {
+    warp = std::make_unique<ArticulatedWarp> (chosenSkeleton (options), segments.labels, segments.names);
+  }
+  catch (const InvalidInputError& e) {
+    throw InvalidInputError ("warp: the skeleton " + skeleton_name + " does not fit the labels " + options.labels +
+                             ": " + e.what ());
+  }
+  warp->setSkinningFalloff ({options.skinning_width, SkinningFalloff ().reach});
+  warp->setRigidity (options.rigidity);
+  fitToLandmarks (options, [&] { warp->setJoints (inputs.source, inputs.target); });
+  setSurfaceLandmarks (*warp, options, inputs, report);
+  report["mode"] = "articulated";
+  report["skeleton"] = skeleton_name;
+  report["bones"] = warp->skeleton ().numBones ();
+  report["joints"] = warp->skeleton ().boneJointNames ().size ();
+  report["rigidity"] = options.rigidity;
+  report["skinning_width_mm"] = options.skinning_width;
+  return warp->warp (inputs.mesh);
+}
+
+TriangleMesh
+warpMesh (const WarpOptions& options, const WarpInputs& inputs, nlohmann::json& report)
+{
+  report["landmarks"] = inputs.source.size ();
+  if (options.method == "articulated")
+    return articulatedWarp (options, inputs, report);
+  return options.labels.empty () ? globalWarp (options, inputs, report) : segmentedWarp (options, inputs, report);
+}
+
+/** A mesh file in the inputs' unit, in mm. */
+TriangleMesh
+loadMeshInMillimetres (const std::string& path, double millimetres_per_unit)
+{
+  TriangleMesh mesh = loadTriangleMesh (path);
+  mesh.vertices *= millimetres_per_unit;
+  return mesh;
+}
+
+/** The error against the truth: vertex colours, the report's figures (with the limb parts for the articulated
+ *  method) and a line on stdout. */
+void
+evaluateAgainstTruth (const WarpOptions& options, const WarpInputs& inputs, const TriangleMesh& warped,
+                      nlohmann::json& report)
+{
+  const TriangleMesh truth = loadMeshInMillimetres (options.truth, millimetresPer (parseLengthUnit (options.units)));
+  requireSameTopology (inputs.mesh, truth, options.truth);
+  const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
+  savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
+  std::vector<int> labels (static_cast<std::size_t> (inputs.mesh.numVertices ()), 0);
+  if (!options.labels.empty ())
+    labels = loadRegionLabels (options.labels, inputs.mesh.numVertices ()).labels;
+  const WarpQuality quality = evaluateWarp (warped, truth, labels, 100.0, &inputs.mesh);
+  report["error_mm"] = {{"mean", quality.mean_error}, {"rms", quality.rms_error}, {"max", quality.max_error}};
+  report["seam"] = quality.seam;
+  report["band"] = quality.band;
+  report["folded_in_band"] = quality.folded_in_band;
+  report["folded_triangles"] = {{"warped", countFoldedTriangles (warped)}, {"truth", countFoldedTriangles (truth)}};
+  if (options.method == "articulated")
+    for (const LimbPartError& part : limbPartErrors (inputs.mesh, errors, chosenSkeleton (options), inputs.source))
+      report["limb_parts"][part.part] = {
+          {"bones", part.bones + "*"}, {"vertices", part.vertices}, {"max_error_mm", part.max_error}};
+  if (!options.quiet)
+    std::cout << "error against " << options.truth << ": mean " << quality.mean_error << " mm, max "
+              << quality.max_error << " mm (vertex colours of " << options.out << ")\n";
 }
 
 void
 runWarp (const WarpOptions& options)
 {
   OutputFiles outputs ({options.out, options.report},
-                       {options.mesh, options.source, options.target, options.labels, options.truth});
-  const TriangleMesh mesh = loadTriangleMesh (options.mesh);
-  nlohmann::json report = {{"units", "mm"}, {"mesh", options.mesh}, {"output", options.out}};
-  const TriangleMesh warped = warpMesh (options, mesh, report);
-  if (options.truth.empty ()) {
+                       {options.mesh, options.source, options.target, options.labels, options.truth, options.skeleton});
+  const double millimetres_per_unit = millimetresPer (parseLengthUnit (options.units));
+  WarpInputs inputs{loadMeshInMillimetres (options.mesh, millimetres_per_unit), {}, {}};
+  std::tie (inputs.source, inputs.target) = namedLandmarkPairs (options.source, options.target, millimetres_per_unit);
+  if (millimetres_per_unit != 1.0 && !options.quiet)
+    std::cout << "units: the inputs are in " << options.units << ", converted to mm (the output is in mm)\n";
+  nlohmann::json report = {
+      {"units", "mm"}, {"input_units", options.units}, {"mesh", options.mesh}, {"output", options.out}};
+  const TriangleMesh warped = warpMesh (options, inputs, report);
+  if (options.truth.empty ())
     saveTriangleMesh (options.out, warped);
-  }
-  else {
-    const TriangleMesh truth = loadTriangleMesh (options.truth);
-    requireSameTopology (mesh, truth, options.truth);
-    const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
-    savePolygonMesh (options.out,
-                     toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
-    std::vector<int> labels (static_cast<std::size_t> (mesh.numVertices ()), 0);
-    if (!options.labels.empty ())
-      labels = loadRegionLabels (options.labels, mesh.numVertices ()).labels;
-    const WarpQuality quality = evaluateWarp (warped, truth, labels, 100.0, &mesh);
-    report["error_mm"] = {{"mean", quality.mean_error}, {"rms", quality.rms_error}, {"max", quality.max_error}};
-    report["seam"] = quality.seam;
-    report["band"] = quality.band;
-    report["folded_in_band"] = quality.folded_in_band;
-    if (!options.quiet)
-      std::cout << "error against " << options.truth << ": mean " << quality.mean_error << " mm, max "
-                << quality.max_error << " mm (vertex colours of " << options.out << ")\n";
-  }
+  else
+    evaluateAgainstTruth (options, inputs, warped, report);
   if (!options.report.empty ())
     writeJsonFile (options.report, report);
   outputs.keep ();
@@ -160,7 +294,8 @@ void
 registerWarpCommand (CLI::App& app)
 {
   auto options = std::make_shared<WarpOptions> ();
-  CLI::App* command = app.add_subcommand ("warp", "warp a mesh with a 3D thin plate spline (global or segmented)");
+  CLI::App* command = app.add_subcommand (
+      "warp", "warp a mesh with a 3D thin plate spline (global or segmented) or re-posture it with rigid bones");
   command->add_option ("-m,--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl)")->required ();
   command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
@@ -183,6 +318,30 @@ registerWarpCommand (CLI::App& app)
       ->capture_default_str ();
   command->add_option ("--lambda", options->lambda, "TPS regularisation (0 = exact interpolation)")
       ->check (nonNegative ())
+      ->capture_default_str ();
+  command
+      ->add_option ("--method", options->method,
+                    "tps: thin plate spline (by segments with --labels); articulated: rigid bones between the "
+                    "landmarks that name joints of --skeleton, skinned by --labels, refined as rigid as possible; "
+                    "other landmarks must lie on mesh vertices and pin them")
+      ->check (CLI::IsMember ({"tps", "articulated"}))
+      ->capture_default_str ();
+  command->add_option ("--skeleton", options->skeleton,
+                       "articulated: skeleton JSON {\"bones\": [{\"name\", \"head\", \"tail\", \"segment\", "
+                       "\"twist\": [from, to]}]} (default: MakeHuman's 51 major joints)");
+  command->add_option ("--rigidity", options->rigidity, "articulated: weight of the as-rigid-as-possible refinement")
+      ->check (nonNegative ())
+      ->capture_default_str ();
+  command
+      ->add_option ("--skinning-width", options->skinning_width,
+                    "articulated: how fast a bone's weight falls along the mesh (mm)")
+      ->check (positive ())
+      ->capture_default_str ();
+  command
+      ->add_option ("--units", options->units,
+                    "unit of the mesh, landmark and truth files (mm, cm, dm, m, in); converted to mm, and the "
+                    "output is in mm")
+      ->check (CLI::IsMember ({"mm", "cm", "dm", "m", "in"}))
       ->capture_default_str ();
   command->add_option ("--truth", options->truth, "true target mesh (same topology): report the warp's error");
   command->add_option ("--report", options->report, "JSON report to write");

@@ -14,6 +14,7 @@ namespace
 {
 using detail::numberText;
 
+/** The units a scan may be guessed in; decimetres (MakeHuman's unit, no scanner's) are only taken when given. */
 constexpr LengthUnit kUnits[] = {LengthUnit::millimetre, LengthUnit::centimetre, LengthUnit::metre, LengthUnit::inch};
 
 /** A head with some neck or shoulders over the model's RMS radius: the size a scan is expected to have. */
@@ -72,6 +73,8 @@ millimetresPer (LengthUnit unit)
   switch (unit) {
   case LengthUnit::centimetre:
     return 10.0;
+  case LengthUnit::decimetre:
+    return 100.0;
   case LengthUnit::metre:
     return 1000.0;
   case LengthUnit::inch:
@@ -88,6 +91,8 @@ toString (LengthUnit unit)
   switch (unit) {
   case LengthUnit::centimetre:
     return "cm";
+  case LengthUnit::decimetre:
+    return "dm";
   case LengthUnit::metre:
     return "m";
   case LengthUnit::inch:
@@ -104,7 +109,9 @@ parseLengthUnit (const std::string& name)
   for (LengthUnit unit : kUnits)
     if (toString (unit) == name)
       return unit;
-  throw InvalidInputError ("unknown length unit '" + name + "': choose mm, cm, m or in");
+  if (name == toString (LengthUnit::decimetre))
+    return LengthUnit::decimetre;
+  throw InvalidInputError ("unknown length unit '" + name + "': choose mm, cm, dm, m or in");
 }
 
 LengthUnitGuess

@@ -46,10 +46,17 @@ makeHumanSkeleton ()
   for (std::size_t i = 0; i + 1 < spine.size (); ++i)
     bones.push_back ({spine[i], head (spine[i]), head (spine[i + 1]), i < 2 ? "lower_body" : "upper_body", "", ""});
   bones.push_back ({"head", head ("head"), tail ("head"), "upper_body", head ("eye.R"), head ("eye.L")});
-  for (const std::string side : {".L", ".R"})
+  // Major joints between a bone's ends: they follow the skin, not either bone rigidly (a thigh's upperleg02 head moves
+  // closer to the hip when seated), so no bone uses them.
+  std::vector<std::string> intermediate = {tail ("jaw")};
+  for (const std::string side : {".L", ".R"}) {
     for (Bone& bone : sideBones (side))
       bones.push_back (std::move (bone));
-  return Skeleton (std::move (bones));
+    for (const std::string bone : {"upperarm02", "lowerarm02", "upperleg02", "lowerleg02"})
+      intermediate.push_back (head (bone + side));
+    intermediate.push_back (tail ("wrist" + side));
+  }
+  return Skeleton (std::move (bones), std::move (intermediate));
 }
 
 } // namespace morphreg

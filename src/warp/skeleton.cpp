@@ -70,7 +70,8 @@ boneTransform (const Bone& bone, const LandmarkPositions& source, const Landmark
 }
 } // namespace
 
-Skeleton::Skeleton (std::vector<Bone> bones) : bones_ (std::move (bones))
+Skeleton::Skeleton (std::vector<Bone> bones, std::vector<std::string> other_joints)
+  : bones_ (std::move (bones)), other_joints_ (std::move (other_joints))
 {
   if (bones_.empty ())
     throw InvalidInputError ("Skeleton: no bones");
@@ -87,6 +88,16 @@ Skeleton::Skeleton (std::vector<Bone> bones) : bones_ (std::move (bones))
 std::vector<std::string>
 Skeleton::jointNames () const
 {
+  std::vector<std::string> names = boneJointNames ();
+  names.insert (names.end (), other_joints_.begin (), other_joints_.end ());
+  std::sort (names.begin (), names.end ());
+  names.erase (std::unique (names.begin (), names.end ()), names.end ());
+  return names;
+}
+
+std::vector<std::string>
+Skeleton::boneJointNames () const
+{
   std::set<std::string> names;
   for (const Bone& bone : bones_)
     for (const std::string* joint : {&bone.head, &bone.tail, &bone.twist_from, &bone.twist_to})
@@ -99,12 +110,12 @@ void
 Skeleton::requireJoints (const LandmarkPositions& joints, const std::string& what) const
 {
   std::string missing;
-  for (const std::string& name : jointNames ())
+  for (const std::string& name : boneJointNames ())
     if (!joints.count (name))
       missing += " " + name;
   if (!missing.empty ())
     throw InvalidInputError (what + " lack joints the skeleton's bones need:" + missing);
-  for (const std::string& name : jointNames ())
+  for (const std::string& name : boneJointNames ())
     if (!joints.at (name).allFinite ())
       throw InvalidInputError (what + ": joint '" + name + "' is not finite");
 }

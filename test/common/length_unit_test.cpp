@@ -139,7 +139,8 @@ TEST (UnitGuessTest, BadInputIsReported)
 
 TEST (LengthUnitSymbolTest, SymbolsRoundTripAndFactorsAreMillimetres)
 {
-  const std::vector<std::pair<std::string, double>> expected = {{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}, {"in", 25.4}};
+  const std::vector<std::pair<std::string, double>> expected = {
+      {"mm", 1.0}, {"cm", 10.0}, {"dm", 100.0}, {"m", 1000.0}, {"in", 25.4}};
   for (const auto& [symbol, millimetres] : expected) {
     const LengthUnit unit = morphreg::parseLengthUnit (symbol);
     EXPECT_EQ (morphreg::toString (unit), symbol);
@@ -157,7 +158,7 @@ TEST (LengthUnitSymbolTest, UnknownSymbolsNameTheTextAndTheChoices)
     catch (const morphreg::InvalidInputError& e) {
       const std::string text = e.what ();
       EXPECT_NE (text.find ("'" + bad + "'"), std::string::npos) << text;
-      EXPECT_NE (text.find ("mm, cm, m or in"), std::string::npos) << text;
+      EXPECT_NE (text.find ("mm, cm, dm, m or in"), std::string::npos) << text;
     }
   }
 }

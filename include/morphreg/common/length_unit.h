@@ -13,25 +13,26 @@ enum class LengthUnit
 {
   millimetre, ///< mm, the library's own unit
   centimetre, ///< cm
+  decimetre,  ///< dm (MakeHuman's unit; never guessed)
   metre,      ///< m
   inch        ///< in, 25.4 mm
 };
 
-/** \brief Millimetres per \a unit: 1, 10, 1000 or 25.4.
+/** \brief Millimetres per \a unit: 1, 10, 100, 1000 or 25.4.
  *  \param[in] unit the unit
  *  \return the length of one \a unit in mm
  */
 double
 millimetresPer (LengthUnit unit);
 
-/** \brief The unit's symbol: "mm", "cm", "m" or "in".
+/** \brief The unit's symbol: "mm", "cm", "dm", "m" or "in".
  *  \param[in] unit the unit
  *  \return its symbol
  */
 std::string
 toString (LengthUnit unit);
 
-/** \brief The unit of a symbol ("mm", "cm", "m", "in"); InvalidInputError naming the text and the choices.
+/** \brief The unit of a symbol ("mm", "cm", "dm", "m", "in"); InvalidInputError naming the text and the choices.
  *  \param[in] name the symbol, e.g. from a command line option
  *  \return the unit it names
  */

@@ -137,7 +137,8 @@ private:
  *  foot (lower_body). Twists come from the eyes (head), the two hips (thigh and shin), the two shoulders (upper
  *  arm), thumb and little finger tips (forearm and hand) and the outer toes (foot). Bones are named after
  *  MakeHuman's ("upperleg.L" for the left thigh, "lowerleg.L", "upperarm.L", ...), so the limb parts of
- *  limbPartErrors() find them.
+ *  limbPartErrors() find them. The other major joints (the jaw, the intermediate arm and leg joints, the wrists'
+ *  tails) are the skeleton's other joints: they follow the skin rather than a bone.
  *  \return the skeleton
  */
 Skeleton

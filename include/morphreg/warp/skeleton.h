@@ -45,8 +45,10 @@ public:
 
   /** \brief Takes \a bones; throws InvalidInputError naming the bone for any of the problems above.
    *  \param[in] bones the bones
+   *  \param[in] other_joints joints the skeleton knows but no bone uses (e.g. a rig's intermediate joints, which
+   *  move rigidly with neither neighbouring bone): landmarks with these names are joints, not surface points
    */
-  explicit Skeleton (std::vector<Bone> bones);
+  explicit Skeleton (std::vector<Bone> bones, std::vector<std::string> other_joints = {});
 
   /** \brief The bones, in the order given.
    *  \return the bones
@@ -70,9 +72,15 @@ public:
    *  \return the joint names
    */
   std::vector<std::string>
+  boneJointNames () const;
+
+  /** \brief Every joint the skeleton knows: boneJointNames() and the other joints, sorted.
+   *  \return the joint names
+   */
+  std::vector<std::string>
   jointNames () const;
 
-  /** \brief The positions of every joint of jointNames() in \a joints; throws InvalidInputError naming \a what
+  /** \brief The positions of every joint of boneJointNames() in \a joints; throws InvalidInputError naming \a what
    *  (e.g. "the source joints") and the joints it lacks.
    *  \param[in] joints joint positions by name (mm); other names are ignored
    *  \param[in] what the joint set, for the message
@@ -89,6 +97,7 @@ public:
 
 private:
   std::vector<Bone> bones_;
+  std::vector<std::string> other_joints_;
 };
 
 /** \brief The rigid motion of each bone from the \a source posture to the \a target one, from the joints alone: the

@@ -1,0 +1,90 @@
+// Re-posturing the MakeHuman bodies standing -> seated from their 51 major joints: morphreg::ArticulatedWarp (bone
+// motions, geodesic skinning weights, linear blend skinning, as-rigid-as-possible refinement with its factorisation)
+// next to the blended segmented thin plate spline (morphreg::SegmentedWarp, the settings of its test) in one run, on
+// the same body. Needs ../shared/data/makehuman_bodies.
+#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/warp/articulated_warp.h>
+#include <morphreg/warp/segmented_warp.h>
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace
+{
+struct Body
+{
+  std::unique_ptr<morphreg::MakeHumanBodies> bodies;
+  morphreg::TriangleMesh standing;
+  morphreg::LandmarkPositions standing_joints, seated_joints;
+};
+
+/** The base body standing and its joints in both postures; null without the shared data. */
+const Body*
+body ()
+{
+  static const std::unique_ptr<Body> loaded = [] {
+    const std::string folder = std::string (MORPHREG_SHARED_DATA_DIR) + "/makehuman_bodies";
+    if (!std::filesystem::exists (folder + "/mh_joints.json"))
+      return std::unique_ptr<Body> ();
+    auto result = std::make_unique<Body> ();
+    result->bodies = std::make_unique<morphreg::MakeHumanBodies> (folder);
+    const auto& joints = result->bodies->majorJoints ();
+    result->standing = result->bodies->loadMesh ("base", morphreg::BodyPose::standing);
+    result->standing_joints = result->bodies->namedJoints ("base", morphreg::BodyPose::standing, joints);
+    result->seated_joints = result->bodies->namedJoints ("base", morphreg::BodyPose::seated, joints);
+    return result;
+  }();
+  return loaded.get ();
+}
+
+Eigen::Matrix3Xd
+columns (const morphreg::LandmarkPositions& points)
+{
+  Eigen::Matrix3Xd result (3, static_cast<Eigen::Index> (points.size ()));
+  Eigen::Index k = 0;
+  for (const auto& entry : points)
+    result.col (k++) = entry.second;
+  return result;
+}
+
+void
+BM_ArticulatedWarp (benchmark::State& state)
+{
+  const Body* b = body ();
+  if (!b)
+    return state.SkipWithError ("../shared/data/makehuman_bodies is absent");
+  for (auto _ : state) {
+    morphreg::ArticulatedWarp warp (morphreg::makeHumanSkeleton (), b->bodies->segmentLabels (),
+                                    b->bodies->segmentNames ());
+    warp.setRigidity (static_cast<double> (state.range (0)));
+    warp.setJoints (b->standing_joints, b->seated_joints);
+    benchmark::DoNotOptimize (warp.warp (b->standing).vertices.data ());
+  }
+  state.counters["vertices"] = static_cast<double> (b->standing.numVertices ());
+}
+
+void
+BM_SegmentedTps (benchmark::State& state)
+{
+  const Body* b = body ();
+  if (!b)
+    return state.SkipWithError ("../shared/data/makehuman_bodies is absent");
+  const Eigen::Matrix3Xd source = columns (b->standing_joints), target = columns (b->seated_joints);
+  for (auto _ : state) {
+    morphreg::SegmentedWarp warp (b->bodies->segmentLabels (), 4);
+    warp.setLandmarks (b->standing, source, target, {90.0, 90.0, 90.0, 90.0});
+    const double widths[] = {100.0, 100.0, 400.0, 50.0};
+    for (int s = 0; s < 4; ++s)
+      warp.setSegmentBlendWidth (s, widths[s]);
+    benchmark::DoNotOptimize (warp.warp (b->standing).vertices.data ());
+  }
+}
+} // namespace
+
+// Arg: the rigidity (0: skinning alone, 1: the default refinement).
+BENCHMARK (BM_ArticulatedWarp)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_SegmentedTps)->Unit (benchmark::kMillisecond)->UseRealTime ();
+
+BENCHMARK_MAIN ();
