@@ -2,7 +2,8 @@
 // one vertex numbering; ../shared/data/makehuman_bodies, read in mm):
 //  - re-posturing: each standing body warped to its seated pose on the 51 major joint centres (plus, with
 //    --surface, 16 surface vertices) by (a) one global TPS, (b) hard segmentation into the four body segments,
-//    (c) segments with seams blended over --blend mm along the body;
+//    (c) segments with seams blended over --blend mm along the body, and (d) rigid bones (ArticulatedWarp: the
+//    joints move MakeHuman's skeleton, the surface vertices pin the refinement);
 //  - between subjects: the base body warped onto each other subject's 326 joints (global, and blended segments:
 //    the trunk on every joint, each arm on its own).
 // Prints each warp's mean / max vertex error against the true mesh and the seam figures, and writes every warped
@@ -14,6 +15,7 @@
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/warp/articulated_warp.h>
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/warp_quality.h>
 #include <morphreg/common/colour_map.h>
@@ -67,6 +69,19 @@ compareWarps (const morphreg::MakeHumanBodies& bodies, const WarpCase& c, const 
   report (bodies, c, "blended", segmented.warp (c.source), out);
 }
 
+/** Re-postures \a subject with rigid bones from its major joints (and, if \a surface, pinned surface vertices). */
+void
+articulatedWarp (const morphreg::MakeHumanBodies& bodies, const WarpCase& c, const std::string& subject, bool surface,
+                 const std::string& out)
+{
+  morphreg::ArticulatedWarp warp (morphreg::makeHumanSkeleton (), bodies.segmentLabels (), bodies.segmentNames ());
+  warp.setJoints (bodies.namedJoints (subject, BodyPose::standing, bodies.majorJoints ()),
+                  bodies.namedJoints (subject, BodyPose::seated, bodies.majorJoints ()));
+  if (surface)
+    warp.setSurfaceLandmarks (bodies.surfaceVertices (), c.truth.vertices (Eigen::all, bodies.surfaceVertices ()));
+  report (bodies, c, "bones", warp.warp (c.source), out);
+}
+
 /** Appends the positions of \a vertices of \a mesh as extra landmark columns. */
 Eigen::Matrix3Xd
 withSurfacePoints (const Eigen::Matrix3Xd& joints, const TriangleMesh& mesh, const std::vector<int>& vertices)
@@ -107,6 +122,7 @@ warpBodies (int argc, char** argv)
       c.to = withSurfacePoints (c.to, c.truth, bodies.surfaceVertices ());
     }
     compareWarps (bodies, c, overlap, blend, true, out);
+    articulatedWarp (bodies, c, subject, surface, out);
   }
 
   const std::vector<std::string> joints = bodies.jointNames ();
