@@ -2,6 +2,7 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/warp/articulated_warp.h>
 #include <morphreg/warp/as_rigid_as_possible.h>
+#include <morphreg/warp/segmented_warp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,13 +38,7 @@ ArticulatedWarp::ArticulatedWarp (Skeleton skeleton, std::vector<int> labels,
   : skeleton_ (std::move (skeleton)), labels_ (std::move (labels)),
     bone_segments_ (segmentsOfBones (skeleton_, segment_names))
 {
-  if (labels_.empty ())
-    throw InvalidInputError ("ArticulatedWarp: no segment labels");
-  for (std::size_t v = 0; v < labels_.size (); ++v)
-    if (labels_[v] < 0 || labels_[v] >= static_cast<int> (segment_names.size ()))
-      throw InvalidInputError ("ArticulatedWarp: vertex " + std::to_string (v) + " has segment label " +
-                               std::to_string (labels_[v]) + ", outside the " + std::to_string (segment_names.size ()) +
-                               " segments");
+  requireSegmentLabels (labels_, static_cast<int> (segment_names.size ()), "ArticulatedWarp");
 }
 
 void

@@ -46,12 +46,7 @@ SegmentedWarp::SegmentedWarp (std::vector<int> labels, int num_segments) : label
 {
   if (num_segments < 1)
     throw InvalidInputError ("SegmentedWarp: the number of segments must be at least 1");
-  if (labels_.empty ())
-    throw InvalidInputError ("SegmentedWarp: no segment labels");
-  for (std::size_t v = 0; v < labels_.size (); ++v)
-    if (labels_[v] < 0 || labels_[v] >= num_segments)
-      throw InvalidInputError ("SegmentedWarp: vertex " + std::to_string (v) + " has segment label " +
-                               std::to_string (labels_[v]) + ", outside [0, " + std::to_string (num_segments) + ")");
+  requireSegmentLabels (labels_, num_segments, "SegmentedWarp");
   splines_.resize (static_cast<std::size_t> (num_segments));
   blend_widths_.assign (static_cast<std::size_t> (num_segments), 0.0);
 }
@@ -203,6 +198,17 @@ void
 SegmentedWarp::warp (const pcl::PolygonMesh& input, pcl::PolygonMesh& output) const
 {
   output = toPolygonMesh (warp (fromPolygonMesh (input, "mesh to warp")));
+}
+
+void
+requireSegmentLabels (const std::vector<int>& labels, int num_segments, const std::string& owner)
+{
+  if (labels.empty ())
+    throw InvalidInputError (owner + ": no segment labels");
+  for (std::size_t v = 0; v < labels.size (); ++v)
+    if (labels[v] < 0 || labels[v] >= num_segments)
+      throw InvalidInputError (owner + ": vertex " + std::to_string (v) + " has segment label " +
+                               std::to_string (labels[v]) + ", outside [0, " + std::to_string (num_segments) + ")");
 }
 
 std::vector<std::vector<int>>

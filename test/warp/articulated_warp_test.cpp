@@ -234,7 +234,7 @@ TEST (ArticulatedWarpTest, BadInputIsNamed)
                                             "(they have: arm)");
   expectErrorContaining<InvalidInputError> (
       [&] { ArticulatedWarp (makeLegSkeleton (), std::vector<int> (leg.numVertices (), 2), {"leg"}); },
-      "vertex 0 has segment label 2, outside the 1 segments");
+      "vertex 0 has segment label 2, outside [0, 1)");
   ArticulatedWarp warp (makeLegSkeleton (), labels, {"leg"});
   expectErrorContaining<InvalidInputError> ([&] { warp.warp (leg); }, "no joints set");
   warp.setJoints (legJoints (), seatedLegJoints ());

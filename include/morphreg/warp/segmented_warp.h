@@ -9,6 +9,7 @@
 #include <pcl/PolygonMesh.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace morphreg
@@ -146,6 +147,14 @@ private:
   std::vector<double> blend_widths_; ///< per segment (mm)
   double regularization_ = 0.0;
 };
+
+/** \brief Throws InvalidInputError naming \a owner if \a labels is empty or a label is outside [0, \a num_segments).
+ *  \param[in] labels the segment of each vertex
+ *  \param[in] num_segments the number of segments
+ *  \param[in] owner who checks, for the message (e.g. "SegmentedWarp")
+ */
+void
+requireSegmentLabels (const std::vector<int>& labels, int num_segments, const std::string& owner);
 
 /** \brief Landmark subsets per segment: landmark i (a column of \a landmarks, e.g. joint centres inside the body)
  *  goes to the segment of its nearest vertex of \a mesh and to every other segment whose nearest vertex is at most
