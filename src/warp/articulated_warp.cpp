@@ -61,6 +61,12 @@ ArticulatedWarp::setSurfaceLandmarks (const std::vector<int>& vertices, const Ei
       throw InvalidInputError ("ArticulatedWarp: surface landmark vertex " + std::to_string (v) +
                                " is not a vertex of the labelled mesh (" + std::to_string (labels_.size ()) +
                                " vertices)");
+  std::vector<int> sorted = vertices;
+  std::sort (sorted.begin (), sorted.end ());
+  const auto repeated = std::adjacent_find (sorted.begin (), sorted.end ());
+  if (repeated != sorted.end ())
+    throw InvalidInputError ("ArticulatedWarp: two surface landmarks lie on vertex " + std::to_string (*repeated) +
+                             "; one vertex can have one target only");
   landmark_vertices_ = vertices;
   landmark_targets_ = targets;
 }

@@ -244,6 +244,11 @@ TEST (ArticulatedWarpTest, BadInputIsNamed)
   expectErrorContaining<InvalidInputError> ([&] { warp.skin (smaller); }, "mesh");
   expectErrorContaining<InvalidInputError> ([&] { warp.setSurfaceLandmarks ({5000}, Eigen::Matrix3Xd::Zero (3, 1)); },
                                             "surface landmark vertex 5000 is not a vertex");
+  expectErrorContaining<InvalidInputError> (
+      [&] {
+        warp.setSurfaceLandmarks ({7, 7}, Eigen::Matrix3Xd::Zero (3, 2));
+      },
+      "two surface landmarks lie on vertex 7");
   expectErrorContaining<InvalidInputError> ([&] { warp.setRigidity (-1.0); }, "rigidity");
   expectErrorContaining<InvalidInputError> ([&] { warp.setSkinningFalloff ({0.0, 8.0}); }, "width");
   // Two segments, the second without a bone.
