@@ -22,10 +22,11 @@ struct Bone
   std::string head;    ///< joint name where the bone starts (e.g. the hip)
   std::string tail;    ///< joint name where it ends (e.g. the knee)
   std::string segment; ///< the mesh segment (region name of the label file) whose vertices the bone may carry
-  /** Optional pair of joints (from, to) whose direction, seen across the bone, fixes the bone's twist about its own
-   *  axis (head and tail alone leave it open); e.g. the two hips for a thigh. Both empty: no twist, the bone takes
-   *  the shortest rotation of its direction. */
-  std::string twist_from, twist_to;
+  /** Optional: with twist_to, a pair of joints whose direction (from, to), seen across the bone, fixes the bone's
+   *  twist about its own axis (head and tail alone leave it open), e.g. the two hips for a thigh. Both empty: no
+   *  twist, the bone takes the shortest rotation of its direction. */
+  std::string twist_from;
+  std::string twist_to; ///< the other joint of the twist pair (empty with twist_from)
 };
 
 /** \brief Named bones between named joints, validated on construction: at least one bone, unique names, head and
