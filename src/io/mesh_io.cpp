@@ -3,6 +3,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
+#include <morphreg/io/field_precision.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
 #include <morphreg/io/mesh_io.h>
@@ -40,6 +41,7 @@ loadPolygonMesh (const std::string& path)
   });
   if (status < 0)
     throw FormatError (path + ": not a readable " + ext.substr (1) + " mesh");
+  narrowDoubleFields (mesh.cloud, path); // "property double x" would otherwise load as zeros
   if (mesh.cloud.width * mesh.cloud.height == 0)
     throw FormatError (path + ": mesh has no vertices");
   if (mesh.polygons.empty ())

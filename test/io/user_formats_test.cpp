@@ -1,4 +1,5 @@
-// The formats users bring: iBUG-68 .pts files and ids, scalismo/BFM landmark JSON, STL and OFF scans.
+// The formats users bring: iBUG-68 .pts files and ids, scalismo/BFM landmark JSON, STL and OFF scans, PLY files
+// with double coordinates.
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
@@ -31,6 +32,30 @@ ptsText (int count, int dim, int declared = 68)
   for (int k = 0; k < count; ++k)
     text += std::to_string (k) + " " + std::to_string (2 * k) + (dim == 3 ? " " + std::to_string (3 * k) : "") + "\n";
   return text + "}\n";
+}
+
+/** A binary little-endian PLY of the three points (k, 2k, -3k) / 10, k = 1..3, as doubles, with one triangle when
+ *  \a with_face; point 1's x is \a first_x. */
+std::string
+doublePly (bool with_face, double first_x = 0.1)
+{
+  std::string text = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                     "property double z\nproperty float quality\n";
+  if (with_face)
+    text += "element face 1\nproperty list uchar int vertex_indices\n";
+  text += "end_header\n";
+  for (int k = 1; k <= 3; ++k) {
+    const double xyz[3] = {k == 1 ? first_x : k / 10.0, 2 * k / 10.0, -3 * k / 10.0};
+    text.append (reinterpret_cast<const char*> (xyz), sizeof (xyz));
+    const float quality = k;
+    text.append (reinterpret_cast<const char*> (&quality), sizeof (quality));
+  }
+  if (with_face) {
+    const int corners[3] = {0, 1, 2};
+    text.push_back (3);
+    text.append (reinterpret_cast<const char*> (corners), sizeof (corners));
+  }
+  return text;
 }
 
 } // namespace
@@ -166,4 +191,24 @@ TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
                                                 "cut.off: header claims 1 faces (at least 8 bytes) but the file holds");
   expectErrorContaining<morphreg::FormatError> (load ("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
                                                 "no polygons");
+}
+
+// Open3D and trimesh write "property double x": PCL copies only fields of the point type's own (float) type, and such
+// a file loaded as all zeros ("all 3 points are identical (0,0,0)"). The doubles are narrowed to float on loading.
+TEST (UserFormatsTest, ReadsPlyWithDoubleCoordinates)
+{
+  TempDirectory dir;
+  std::ofstream (dir.file ("cloud.ply"), std::ios::binary) << doublePly (false);
+  const auto cloud = morphreg::loadCloud<pcl::PointXYZ> (dir.file ("cloud.ply"));
+  ASSERT_EQ (cloud->size (), 3u);
+  for (int k = 1; k <= 3; ++k)
+    EXPECT_TRUE ((*cloud)[k - 1].getVector3fMap ().isApprox (Eigen::Vector3f (k, 2 * k, -3 * k) / 10.0f, 1e-6f)) << k;
+
+  std::ofstream (dir.file ("mesh.ply"), std::ios::binary) << doublePly (true);
+  const morphreg::TriangleMesh mesh = morphreg::loadTriangleMesh (dir.file ("mesh.ply"));
+  EXPECT_TRUE (mesh.vertices.col (2).isApprox (Eigen::Vector3d (0.3, 0.6, -0.9), 1e-6));
+
+  std::ofstream (dir.file ("huge.ply"), std::ios::binary) << doublePly (false, 1e39);
+  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadCloud<pcl::PointXYZ> (dir.file ("huge.ply")); },
+                                                "huge.ply: property 'x' of point 0 is");
 }

@@ -89,10 +89,14 @@ bad_file(too_few_points.vtk "# vtk DataFile Version 3.0" "head" "ASCII" "DATASET
 bad_file(bad_count.off "OFF" "3 1 0" "0 0 0" "1 0 0" "0 1 0" "3 0 1 7")
 bad_file(garbage.ply "this is not a mesh" "at all")
 bad_file(points.xyz "0 0 0" "1 0 0")
+# Doubles are narrowed to float on loading (Open3D writes them); one beyond float's range is refused.
+bad_file(double_beyond_float.ply "ply" "format ascii 1.0" "element vertex 3" "property double x" "property double y"
+         "property double z" "end_header" "0 0 0" "1e39 0 0" "0 1 0")
 file(WRITE ${bad}/empty.ply "")
 foreach(case "huge.ply;huge.ply: ;2000000000" "huge.pcd;huge.pcd: ;2000000000" "malformed.stl;malformed.stl:5"
         "bad_count.off;bad_count.off:6" "garbage.ply;garbage.ply: "
-        "empty.ply;empty.ply: ;empty" "points.xyz;points.xyz: ;unsupported")
+        "empty.ply;empty.ply: ;empty" "points.xyz;points.xyz: ;unsupported"
+        "double_beyond_float.ply;double_beyond_float.ply:9;not a finite number")
   list(GET case 0 file)
   list(SUBLIST case 1 -1 text)
   string(REPLACE "." "_" name ${file})

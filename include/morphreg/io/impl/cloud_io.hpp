@@ -2,6 +2,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/field_precision.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
 #include <morphreg/io/mesh_io.h>
@@ -37,9 +38,16 @@ loadCloud (const std::string& path)
     cloud->sensor_orientation_ = pcd.orientation;
     return cloud;
   }
-  const int status = callPclIo (path, [&] { return pcl::io::loadPLYFile (path, *cloud); });
+  pcl::PCLPointCloud2 blob;
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  const int status = callPclIo (path, [&] { return pcl::io::loadPLYFile (path, blob, origin, orientation); });
   if (status < 0)
     throw FormatError (path + ": not a readable point cloud");
+  narrowDoubleFields (blob, path); // "property double x" would otherwise load as zeros
+  pcl::fromPCLPointCloud2 (blob, *cloud);
+  cloud->sensor_origin_ = origin;
+  cloud->sensor_orientation_ = orientation;
   if (cloud->empty ())
     throw FormatError (path + ": the cloud has no points");
   return cloud;
