@@ -1,11 +1,11 @@
-// A point cloud scan as ScanResampler's surface: the ray meets the least-squares plane of the scan points nearest to
-// it. Measured against triangulating the same scans first (bench/RESULTS.md, "Scan resampling"), the local planes
+// A point cloud scan as ScanResampler's surface: the ray meets the Gaussian-weighted plane of the scan points nearest
+// to it (a point set surface, as in Adamson and Alexa 2003). Measured against triangulating the same scans first (bench/RESULTS.md, "Scan resampling"), the local planes
 // need no triangulation step and average the range noise over k points where a mesh's triangles keep it.
 #include "scan_surface.h"
 
-#include <morphreg/mesh/mesh_normals.h>
-
 #include <pcl/kdtree/kdtree_flann.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -18,14 +18,23 @@ namespace detail
 {
 namespace
 {
-constexpr int kMaxSteps = 6;           ///< plane refits along the ray before giving up
-constexpr double kConverged = 0.01;    ///< mm: the hit moved less than this in the last refit
-constexpr double kMinIncidence = 0.2;  ///< |cos| between the ray and the plane normal below which the ray misses
-constexpr int kSpacingNeighbour = 4;   ///< the local spacing: the distance to a point's 4th nearest other point
-constexpr double kSpacingFactor = 1.5; ///< a hit farther than this many spacings from every scan point misses
-constexpr double kMaxOffCentre = 0.4;  ///< of the neighbourhood's radius: farther from its centroid, the hit misses
-constexpr double kTrim = 3.0;          ///< plane points beyond this many median distances from it are dropped
-constexpr double kTrimFloor = 1e-3;    ///< mm, so exactly planar neighbourhoods keep every point
+constexpr int kMaxSteps = 20;            ///< plane refits along the ray before giving up
+constexpr double kConverged = 0.02;      ///< mm: the hit moved less than this in the last refit
+constexpr double kMinIncidence = 0.2;    ///< |cos| between the ray and the plane normal below which the ray misses
+constexpr int kSpacingNeighbour = 4;     ///< the local spacing: the distance to a point's 4th nearest other point
+constexpr double kSpacingFactor = 1.5;   ///< a hit farther than this many local spacings from every scan point misses
+constexpr double kMaxOffCentre = 1.0;    ///< of the bandwidth: a hit farther from the plane's centroid misses
+constexpr double kTrim = 3.0;            ///< plane points beyond this many median distances from it are dropped
+constexpr double kTrimFloor = 1e-3;      ///< mm, so exactly planar neighbourhoods keep every point
+constexpr double kMinNormalLength = 0.5; ///< the weighted mean of the given normals is kept if at least this long
+
+/** A plane through a weighted centroid; its normal's sign is known when it came from the scan's normals. */
+struct OrientedPlane
+{
+  Eigen::Vector3d centroid;
+  Eigen::Vector3d normal;
+  bool oriented;
+};
 
 class CloudSurface : public ScanSurface
 {
@@ -48,11 +57,14 @@ public:
     }
   }
 
+  /** Newton's iteration on the smooth surface the Gaussian-weighted local planes define (a point set surface): the
+   *  ray's point moves to where it meets the plane of the points around it, with one bandwidth for the whole ray, so
+   *  that the planes change continuously along it and the iteration settles. */
   bool
   intersect (const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double max_distance, double min_cos,
              Eigen::Vector3d& hit) const override
   {
-    double t = 0.0;
+    double t = 0.0, bandwidth = 0.0;
     pcl::Indices indices;
     std::vector<float> distances;
     for (int step = 0; step < kMaxSteps; ++step) {
@@ -60,7 +72,9 @@ public:
       pcl::PointXYZ query;
       query.getVector3fMap () = at.cast<float> ();
       tree_.nearestKSearch (query, neighbours_, indices, distances);
-      const OrientedPlane plane = localPlane (indices);
+      if (step == 0)
+        bandwidth = medianSpacing (indices);
+      const OrientedPlane plane = localPlane (indices, distances, bandwidth);
       const double incidence = plane.normal.dot (direction);
       if (std::abs (incidence) < kMinIncidence)
         return false;
@@ -70,8 +84,7 @@ public:
       const bool converged = std::abs (next - t) < kConverged;
       t = next;
       if (converged)
-        return accept (origin + t * direction, indices.front (), std::sqrt (distances.back ()), direction, plane,
-                       min_cos, hit);
+        return accept (origin + t * direction, indices.front (), bandwidth, direction, plane, min_cos, hit);
     }
     return false;
   }
@@ -89,57 +102,74 @@ public:
   }
 
 private:
-  struct OrientedPlane : PointPlane
+  /** The median local spacing of the scan points \a indices: the Gaussian weights' bandwidth along one ray. */
+  double
+  medianSpacing (const pcl::Indices& indices) const
   {
-    bool oriented; ///< the normal's sign comes from the scan's normals (else it is arbitrary)
-  };
+    std::vector<double> spacings (indices.size ());
+    for (std::size_t k = 0; k < indices.size (); ++k)
+      spacings[k] = spacing_[indices[k]];
+    std::nth_element (spacings.begin (), spacings.begin () + spacings.size () / 2, spacings.end ());
+    return spacings[spacings.size () / 2];
+  }
 
-  /** The least-squares plane of \a points refitted without those farther from it than kTrim times the median
-   *  distance (outliers, another surface's points), if at least 4 remain. */
-  static PointPlane
-  trimmedPlane (const Eigen::Matrix3Xd& points)
+  /** The plane of the points \a indices (squared distances \a distances from the query) weighted by
+   *  exp(-d^2 / bandwidth^2), refitted without those farther from it than kTrim times the median distance (outliers,
+   *  another surface's points). Its normal is the weighted mean of the scan's normals where they agree, else the
+   *  weighted covariance's least direction (unoriented). */
+  OrientedPlane
+  localPlane (const pcl::Indices& indices, const std::vector<float>& distances, double bandwidth) const
   {
-    const PointPlane plane = fitPlane (points);
-    const Eigen::VectorXd distances = ((points.colwise () - plane.centroid).transpose () * plane.normal).cwiseAbs ();
-    std::vector<double> sorted (distances.data (), distances.data () + distances.size ());
+    Eigen::VectorXd weights (indices.size ());
+    for (std::size_t k = 0; k < indices.size (); ++k) // relative to the nearest: no underflow far from the scan
+      weights[k] = std::exp (-(distances[k] - distances.front ()) / (bandwidth * bandwidth));
+    OrientedPlane plane = weightedPlane (indices, weights);
+    Eigen::VectorXd residuals (indices.size ());
+    for (std::size_t k = 0; k < indices.size (); ++k)
+      residuals[k] = std::abs ((points_.col (indices[k]) - plane.centroid).dot (plane.normal));
+    std::vector<double> sorted (residuals.data (), residuals.data () + residuals.size ());
     std::nth_element (sorted.begin (), sorted.begin () + sorted.size () / 2, sorted.end ());
     const double limit = kTrim * sorted[sorted.size () / 2] + kTrimFloor;
-    Eigen::Matrix3Xd kept (3, points.cols ());
-    Eigen::Index count = 0;
-    for (Eigen::Index k = 0; k < points.cols (); ++k)
-      if (distances[k] <= limit)
-        kept.col (count++) = points.col (k);
-    return count >= 4 && count < points.cols () ? fitPlane (kept.leftCols (count)) : plane;
+    const Eigen::VectorXd kept = (residuals.array () <= limit).select (weights, 0.0);
+    return (kept.array () > 0.0).count () >= 4 ? weightedPlane (indices, kept) : plane;
   }
 
-  /** The plane of the points \a indices, its normal oriented by the points' given normals where they have any. */
   OrientedPlane
-  localPlane (const pcl::Indices& indices) const
+  weightedPlane (const pcl::Indices& indices, const Eigen::VectorXd& weights) const
   {
-    Eigen::Matrix3Xd neighbourhood (3, indices.size ());
-    Eigen::Vector3d given = Eigen::Vector3d::Zero ();
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero (), given = Eigen::Vector3d::Zero ();
+    double given_weight = 0.0;
     for (std::size_t k = 0; k < indices.size (); ++k) {
-      neighbourhood.col (k) = points_.col (indices[k]);
-      if (normals_.cols () > 0 && normals_.col (indices[k]).allFinite ())
-        given += normals_.col (indices[k]);
+      centroid += weights[k] * points_.col (indices[k]);
+      if (normals_.cols () > 0 && normals_.col (indices[k]).allFinite ()) {
+        given += weights[k] * normals_.col (indices[k]);
+        given_weight += weights[k];
+      }
     }
-    OrientedPlane plane{trimmedPlane (neighbourhood), given.squaredNorm () > 0.0};
-    if (plane.oriented && plane.normal.dot (given) < 0.0)
-      plane.normal = -plane.normal;
-    return plane;
+    centroid /= weights.sum ();
+    if (given_weight > 0.0 && given.norm () >= kMinNormalLength * given_weight)
+      return {centroid, given.normalized (), true};
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero ();
+    for (std::size_t k = 0; k < indices.size (); ++k) {
+      const Eigen::Vector3d d = points_.col (indices[k]) - centroid;
+      covariance += weights[k] * d * d.transpose ();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (covariance);
+    return {centroid, solver.eigenvectors ().col (0), false};
   }
 
-  /** The hit \a point counts if it lies within the local spacing of the scan point \a nearest (no hole between), near
-   *  the middle of the neighbourhood of \a radius its plane was fitted to (not beyond a scan border, on a plane
-   *  extrapolated from one side) and the plane's normal agrees with the ray's. */
+  /** The hit \a point counts if it lies within kSpacingFactor local spacings (\a bandwidth, the median of the
+   *  neighbourhood's: one point's own varies twofold on a random sampling) of the scan point \a nearest (no hole
+   *  between), within \a bandwidth of its plane's centroid along the plane (not beyond a scan border, on a plane extrapolated from one
+   *  side) and the plane's normal agrees with the ray's. */
   bool
-  accept (const Eigen::Vector3d& point, int nearest, double radius, const Eigen::Vector3d& direction,
+  accept (const Eigen::Vector3d& point, int nearest, double bandwidth, const Eigen::Vector3d& direction,
           const OrientedPlane& plane, double min_cos, Eigen::Vector3d& hit) const
   {
-    if ((point - points_.col (nearest)).norm () > kSpacingFactor * spacing_[nearest])
+    if ((point - points_.col (nearest)).norm () > kSpacingFactor * bandwidth)
       return false;
     const Eigen::Vector3d off_centre = point - plane.centroid;
-    if ((off_centre - off_centre.dot (plane.normal) * plane.normal).norm () > kMaxOffCentre * radius)
+    if ((off_centre - off_centre.dot (plane.normal) * plane.normal).norm () > kMaxOffCentre * bandwidth)
       return false;
     const double agreement = plane.normal.dot (direction);
     if ((plane.oriented ? agreement : std::abs (agreement)) < min_cos)

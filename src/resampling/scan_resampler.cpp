@@ -84,6 +84,25 @@ foldedTriangles (const TriangleMesh& reference, const TriangleMesh& resampled)
   return folded;
 }
 
+/** Marks missed the corners of every triangle whose three corners were observed but whose observed positions turn it
+ *  over (by more than 90 degrees against the reference): vertices on both sides of a crease the scan does not have
+ *  (an eyelid's margin, a nostril's rim) landing on the one surface the scan has there. The hole fills take them. */
+void
+rejectFoldingHits (const TriangleMesh& reference, const Eigen::Matrix3Xd& hits, std::vector<char>& missed)
+{
+  TriangleMesh moved{hits, reference.triangles};
+  for (Eigen::Index v = 0; v < hits.cols (); ++v)
+    if (missed[v])
+      moved.vertices.col (v) = reference.vertices.col (v);
+  const std::vector<char> folded = foldedTriangles (reference, moved);
+  for (Eigen::Index t = 0; t < reference.numTriangles (); ++t) {
+    const Eigen::Vector3i corners = reference.triangles.col (t);
+    if (folded[t] && !missed[corners[0]] && !missed[corners[1]] && !missed[corners[2]])
+      for (int k = 0; k < 3; ++k)
+        missed[corners[k]] = 1;
+  }
+}
+
 /** Marks missed the hits whose displacement along the normal differs by more than \a jump (mm) from the median of
  *  their observed neighbours' (a ray that met another surface: an ear's back, an outlier's plane), and those with
  *  fewer observed neighbours than missed ones (ragged hole borders and islands in holes, where the scan's edge is
@@ -340,6 +359,7 @@ ScanResampler::resample () const
   for (Eigen::Index v = 0; v < n; ++v)
     missed[v] = result.displacement.col (v).allFinite () ? 0 : 1;
   rejectInconsistentHits (topology, result.displacement, normals, max_jump_, missed);
+  rejectFoldingHits (reference_, hits, missed);
   std::vector<double> moved;
   for (Eigen::Index v = 0; v < n; ++v)
     if (missed[v])

@@ -56,12 +56,12 @@ TEST (RealScanResamplingTest, Cloud82kIntoTheIctTopology)
                face_coverage, resampled.size (), kFaceVertices, median (resampled), median (model_only),
                result.statistics.coverage, result.statistics.holes.size (), result.statistics.folded_triangles,
                result.statistics.ray_seconds, result.statistics.fill_seconds);
-  // Required: at least 90 % of the face observed, observed median <= 0.3 mm. Measured at the defaults: 77.5 % and
-  // 0.079 mm. Of the 2119 missed face vertices, 1043 have a fit within 1 mm of the scan: the rays found the surface
-  // but the acceptance tests (spacing, off-centre, consistency) refused it on this randomly sampled cloud (one point
-  // per 4 mm^2 against ICT's 1 mm face spacing); looser settings (20 neighbours, 3 mm jumps, 80 degrees) observe
-  // 85 % but fold more of ICT's thin eyelid and lip triangles (349 against 168 folded).
-  EXPECT_GE (face_coverage, 0.75);
+  // Required: at least 90 % of the face observed, observed median <= 0.3 mm. Measured at the defaults: 82.3 % and
+  // 0.046 mm, 88 folded triangles (the least-squares planes of the 12 nearest points observed 77.5 %, with 168 folded;
+  // `morphreg resample`'s fit, refined after the first, observes 86.4 % with 49 folded). The misses are ICT's creases
+  // the scan does not have (eyelid margins, nostrils, the lips' line, the ears' folds): their rays meet the scan at a
+  // grazing angle or against its normal, or land on the one surface the scan has there and fold their triangles.
+  EXPECT_GE (face_coverage, 0.8);
   EXPECT_LE (median (resampled), 0.3);
   EXPECT_LT (median (resampled), median (model_only)) << "the resampled face carries the scan's own detail";
 }

@@ -188,9 +188,9 @@ public:
     return max_hole_fraction_;
   }
 
-  /** \brief Scan points a point cloud's local plane is fitted to (>= 4; default 12); takes effect at the next
-   *  setInputScan.
-   *  \param[in] k the neighbourhood size: more smooth more noise but flatten more curvature
+  /** \brief Scan points a point cloud's local plane is weighted over (>= 4; default 24; the Gaussian weights' bandwidth
+   *  is the local spacing, so the 24th point has almost none); takes effect at the next setInputScan.
+   *  \param[in] k the neighbourhood size: fewer cut the weights off sooner, and the planes jump along a ray
    */
   void
   setNeighbours (int k);
@@ -260,7 +260,7 @@ private:
   double normal_agreement_deg_ = 60.0;
   int ring_width_ = 3;
   double max_hole_fraction_ = 0.5;
-  int neighbours_ = 12;
+  int neighbours_ = 24;
   double fill_regularization_ = 1.0;
   double max_jump_ = 1.0;
 };
