@@ -1,8 +1,8 @@
 // ScanResampler: an 11618-vertex reference (HeadGenerator resolution 44, smoothly offset from the truth by up to
-// 1.5 mm) resampled onto a ScanSimulator scan of about 80k points, as a point cloud (local planes) and as its
-// triangulated range image (ray casting through vtkStaticCellLocator); the search structures' build timed apart; and the
-// same ray queries (both directions from every reference vertex, first hit) through VTK's vtkOBBTree,
-// vtkStaticCellLocator and vtkModifiedBSPTree.
+// 1.5 mm) resampled onto a ScanSimulator scan of about 80k points, as a point cloud (weighted local planes) and as its
+// triangulated range image (ray casting through Intel Embree); the search structures' build timed apart; and the same
+// ray queries (both directions from every reference vertex, first hit, one thread) through Embree and through VTK's
+// vtkOBBTree, vtkStaticCellLocator and vtkModifiedBSPTree.
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/resampling/scan_resampler.h>
@@ -19,8 +19,11 @@
 #include <vtkStaticCellLocator.h>
 
 #include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
 
 #include <cmath>
+#include <limits>
+#include <memory>
 
 namespace
 {
@@ -179,6 +182,68 @@ BM_VtkLocatorRays (benchmark::State& state)
   state.counters["hits"] = hits;
 }
 BENCHMARK (BM_VtkLocatorRays)->ArgName ("locator")->DenseRange (0, 2)->Unit (benchmark::kMillisecond)->UseRealTime ();
+/** An Embree device and scene over the scan mesh, built as the resampler builds its own. */
+struct EmbreeScene
+{
+  std::unique_ptr<RTCDeviceTy, decltype (&rtcReleaseDevice)> device{rtcNewDevice ("verbose=0"), &rtcReleaseDevice};
+  std::unique_ptr<RTCSceneTy, decltype (&rtcReleaseScene)> scene{rtcNewScene (device.get ()), &rtcReleaseScene};
+
+  explicit EmbreeScene (const morphreg::TriangleMesh& mesh)
+  {
+    rtcSetSceneFlags (scene.get (), RTC_SCENE_FLAG_ROBUST);
+    RTCGeometry geometry = rtcNewGeometry (device.get (), RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*> (rtcSetNewGeometryBuffer (
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof (float), mesh.numVertices ()));
+    auto* indices = static_cast<unsigned*> (rtcSetNewGeometryBuffer (
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof (unsigned), mesh.numTriangles ()));
+    Eigen::Map<Eigen::Matrix3Xf> (vertices, 3, mesh.numVertices ()) = mesh.vertices.cast<float> ();
+    Eigen::Map<Eigen::Matrix<unsigned, 3, Eigen::Dynamic>> (indices, 3, mesh.numTriangles ()) =
+        mesh.triangles.cast<unsigned> ();
+    rtcCommitGeometry (geometry);
+    rtcAttachGeometry (scene.get (), geometry);
+    rtcReleaseGeometry (geometry);
+    rtcCommitScene (scene.get ());
+  }
+};
+
+void
+BM_EmbreeBuild (benchmark::State& state)
+{
+  for (auto _ : state)
+    benchmark::DoNotOptimize (EmbreeScene (fixture ().scan_mesh).scene.get ());
+  sizeCounters (state);
+}
+BENCHMARK (BM_EmbreeBuild)->Unit (benchmark::kMillisecond)->UseRealTime ();
+
+/** The queries of BM_VtkLocatorRays through Embree's rtcIntersect1, on one thread. */
+void
+BM_EmbreeRays (benchmark::State& state)
+{
+  const Fixture& f = fixture ();
+  const EmbreeScene embree (f.scan_mesh);
+  RTCIntersectContext context;
+  rtcInitIntersectContext (&context);
+  int hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    for (Eigen::Index v = 0; v < f.reference.numVertices (); ++v)
+      for (const float sign : {1.0f, -1.0f}) {
+        RTCRayHit query{};
+        const Eigen::Vector3f from = f.reference.vertices.col (v).cast<float> ();
+        const Eigen::Vector3f ray = sign * f.normals.col (v).cast<float> ();
+        query.ray.org_x = from.x (), query.ray.org_y = from.y (), query.ray.org_z = from.z ();
+        query.ray.dir_x = ray.x (), query.ray.dir_y = ray.y (), query.ray.dir_z = ray.z ();
+        query.ray.tfar = static_cast<float> (kReach);
+        query.ray.mask = std::numeric_limits<unsigned>::max ();
+        query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1 (embree.scene.get (), &context, &query);
+        hits += query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      }
+  }
+  sizeCounters (state);
+  state.counters["hits"] = hits;
+}
+BENCHMARK (BM_EmbreeRays)->Unit (benchmark::kMillisecond)->UseRealTime ();
 } // namespace
 
 BENCHMARK_MAIN ();

@@ -12,6 +12,7 @@ PACKAGES=(
   nlohmann-json3-dev    # JSON reports and landmark files
   libcli11-dev          # the command line
   libtinyxml2-dev       # MeshLab .pp landmark files
+  libembree-dev         # Intel Embree: the scan resampler's ray casting
   xvfb xauth            # headless rendering for the visualiser and its tests
   python3 python3-h5py python3-numpy  # independent HDF5 writer used as a test fixture
   python3-dev pybind11-dev python3-pytest python3-open3d  # the Python module, its tests and its Open3D example

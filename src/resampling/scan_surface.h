@@ -1,5 +1,5 @@
 #pragma once
-// Private to the library: the scan's surface as ScanResampler's rays see it, a triangle mesh (VTK's cell locator)
+// Private to the library: the scan's surface as ScanResampler's rays see it, a triangle mesh (Intel Embree's ray tracing)
 // or a point cloud (local planes over a k-d tree).
 #include <morphreg/mesh/triangle_mesh.h>
 
@@ -33,7 +33,7 @@ public:
   threadSafe () const = 0;
 };
 
-/** A triangulated scan; rays cast through vtkStaticCellLocator. */
+/** A triangulated scan; rays cast through Intel Embree. */
 std::unique_ptr<ScanSurface>
 makeMeshSurface (const TriangleMesh& scan);
 

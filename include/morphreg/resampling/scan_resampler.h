@@ -71,10 +71,11 @@ struct ResamplingResult
  *  reference's edges); each hole's displacement is a thin plate spline interpolating the displacements of the
  *  observed vertices in setRingWidth rings around it, so the fill meets its border without a step.
  *
- *  The scan is a triangle mesh (rays cast through VTK's vtkStaticCellLocator) or a point cloud: there the ray meets
- *  the least-squares plane of the setNeighbours scan points nearest to it, iterated to the hit, and the hit counts
- *  only within twice the local point spacing of the nearest scan point (so rays leaving through a hole miss). Given
- *  cloud normals take part in the agreement test; without them the plane's unoriented normal is used.
+ *  The scan is a triangle mesh (rays cast through Intel Embree) or a point cloud: there the ray meets the
+ *  Gaussian-weighted plane of the setNeighbours scan points nearest to it, iterated to the hit, and the hit counts
+ *  only within 1.5 local point spacings of the nearest scan point (so rays leaving through a hole miss). Given cloud
+ *  normals make the plane's normal and take part in the agreement test; without them the plane's unoriented normal
+ *  is used. Hits whose triangle they turn over are misses too.
  *
  *  Bad input is an InvalidInputError, never a mesh with NaN: a scan whose size is far from the reference's (another
  *  unit), no vertex meeting the scan, or a hole covering more than setMaxHoleFraction of the reference's area.
@@ -98,9 +99,9 @@ public:
   /** \brief Releases the scan's search structure. */
   ~ScanResampler ();
 
-  ScanResampler (const ScanResampler&) = delete; ///< not copyable (owns VTK objects)
+  ScanResampler (const ScanResampler&) = delete; ///< not copyable (owns the scan's search structure)
   ScanResampler&
-  operator= (const ScanResampler&) = delete; ///< not copyable (owns VTK objects)
+  operator= (const ScanResampler&) = delete; ///< not copyable (owns the scan's search structure)
 
   /** \brief The reference mesh in the scan's frame (validated; mm); its vertex normals are the ray directions.
    *  \param[in] reference the mesh whose topology the result keeps
