@@ -18,15 +18,17 @@ namespace detail
 {
 namespace
 {
-constexpr int kMaxSteps = 20;            ///< plane refits along the ray before giving up
-constexpr double kConverged = 0.02;      ///< mm: the hit moved less than this in the last refit
-constexpr double kMinIncidence = 0.2;    ///< |cos| between the ray and the plane normal below which the ray misses
-constexpr int kSpacingNeighbour = 4;     ///< the local spacing: the distance to a point's 4th nearest other point
-constexpr double kSpacingFactor = 1.5;   ///< a hit farther than this many local spacings from every scan point misses
-constexpr double kMaxOffCentre = 1.0;    ///< of the bandwidth: a hit farther from the plane's centroid misses
-constexpr double kTrim = 3.0;            ///< plane points beyond this many median distances from it are dropped
-constexpr double kTrimFloor = 1e-3;      ///< mm, so exactly planar neighbourhoods keep every point
-constexpr double kMinNormalLength = 0.5; ///< the weighted mean of the given normals is kept if at least this long
+constexpr int kMaxSteps = 20;              ///< plane refits along the ray before giving up
+constexpr double kConverged = 0.02;        ///< mm: the hit moved less than this in the last refit
+constexpr double kMinIncidence = 0.2;      ///< |cos| between the ray and the plane normal below which the ray misses
+constexpr int kSpacingNeighbour = 4;       ///< the local spacing: the distance to a point's 4th nearest other point
+constexpr double kSpacingFactor = 1.5;     ///< a hit farther than this many local spacings from every scan point misses
+constexpr double kMaxOffCentre = 1.0;      ///< of the bandwidth: a hit farther from the plane's centroid misses
+constexpr double kTrim = 3.0;              ///< plane points beyond this many median distances from it are dropped
+constexpr double kTrimFloor = 1e-3;        ///< mm, so exactly planar neighbourhoods keep every point
+constexpr double kMinNormalLength = 0.5;   ///< the weighted mean of the given normals is kept if at least this long
+constexpr double kCoveredBandwidths = 2.0; ///< neighbours are searched again when farther ones could weigh more than
+                                           ///< exp(-4) of the nearest
 
 /** A plane through a weighted centroid; its normal's sign is known when it came from the scan's normals. */
 struct OrientedPlane
@@ -59,22 +61,28 @@ public:
 
   /** Newton's iteration on the smooth surface the Gaussian-weighted local planes define (a point set surface): the
    *  ray's point moves to where it meets the plane of the points around it, with one bandwidth for the whole ray, so
-   *  that the planes change continuously along it and the iteration settles. */
+   *  that the planes change continuously along it and the iteration settles. The neighbours found at one point serve
+   *  the next ones while every point within kCoveredBandwidths bandwidths of them is sure to be among them. */
   bool
   intersect (const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double max_distance, double min_cos,
              Eigen::Vector3d& hit) const override
   {
-    double t = 0.0, bandwidth = 0.0;
+    double t = 0.0, bandwidth = 0.0, reach = 0.0;
+    Eigen::Vector3d searched_at;
     pcl::Indices indices;
     std::vector<float> distances;
     for (int step = 0; step < kMaxSteps; ++step) {
       const Eigen::Vector3d at = origin + t * direction;
-      pcl::PointXYZ query;
-      query.getVector3fMap () = at.cast<float> ();
-      tree_.nearestKSearch (query, neighbours_, indices, distances);
-      if (step == 0)
-        bandwidth = medianSpacing (indices);
-      const OrientedPlane plane = localPlane (indices, distances, bandwidth);
+      if (step == 0 || (at - searched_at).norm () > reach) {
+        pcl::PointXYZ query;
+        query.getVector3fMap () = at.cast<float> ();
+        tree_.nearestKSearch (query, neighbours_, indices, distances);
+        if (step == 0)
+          bandwidth = medianSpacing (indices);
+        searched_at = at;
+        reach = std::sqrt (distances.back ()) - kCoveredBandwidths * bandwidth;
+      }
+      const OrientedPlane plane = localPlane (indices, at, bandwidth);
       const double incidence = plane.normal.dot (direction);
       if (std::abs (incidence) < kMinIncidence)
         return false;
@@ -84,7 +92,7 @@ public:
       const bool converged = std::abs (next - t) < kConverged;
       t = next;
       if (converged)
-        return accept (origin + t * direction, indices.front (), bandwidth, direction, plane, min_cos, hit);
+        return accept (origin + t * direction, indices, bandwidth, direction, plane, min_cos, hit);
     }
     return false;
   }
@@ -113,16 +121,19 @@ private:
     return spacings[spacings.size () / 2];
   }
 
-  /** The plane of the points \a indices (squared distances \a distances from the query) weighted by
-   *  exp(-d^2 / bandwidth^2), refitted without those farther from it than kTrim times the median distance (outliers,
-   *  another surface's points). Its normal is the weighted mean of the scan's normals where they agree, else the
-   *  weighted covariance's least direction (unoriented). */
+  /** The plane of the points \a indices weighted by exp(-d^2 / bandwidth^2), d their distance to \a at, refitted
+   *  without those farther from it than kTrim times the median distance (outliers, another surface's points). Its
+   *  normal is the weighted mean of the scan's normals where they agree, else the weighted covariance's least
+   *  direction (unoriented). */
   OrientedPlane
-  localPlane (const pcl::Indices& indices, const std::vector<float>& distances, double bandwidth) const
+  localPlane (const pcl::Indices& indices, const Eigen::Vector3d& at, double bandwidth) const
   {
-    Eigen::VectorXd weights (indices.size ());
-    for (std::size_t k = 0; k < indices.size (); ++k) // relative to the nearest: no underflow far from the scan
-      weights[k] = std::exp (-(distances[k] - distances.front ()) / (bandwidth * bandwidth));
+    Eigen::VectorXd squared (indices.size ());
+    for (std::size_t k = 0; k < indices.size (); ++k)
+      squared[k] = (points_.col (indices[k]) - at).squaredNorm ();
+    // relative to the nearest: no underflow far from the scan
+    const Eigen::VectorXd weights =
+        (-(squared.array () - squared.minCoeff ()) / (bandwidth * bandwidth)).exp ().matrix ();
     OrientedPlane plane = weightedPlane (indices, weights);
     Eigen::VectorXd residuals (indices.size ());
     for (std::size_t k = 0; k < indices.size (); ++k)
@@ -159,14 +170,17 @@ private:
   }
 
   /** The hit \a point counts if it lies within kSpacingFactor local spacings (\a bandwidth, the median of the
-   *  neighbourhood's: one point's own varies twofold on a random sampling) of the scan point \a nearest (no hole
-   *  between), within \a bandwidth of its plane's centroid along the plane (not beyond a scan border, on a plane extrapolated from one
-   *  side) and the plane's normal agrees with the ray's. */
+   *  neighbourhood's: one point's own varies twofold on a random sampling) of its nearest scan point among
+   *  \a indices (no hole between), within \a bandwidth of its plane's centroid along the plane (not beyond a scan
+   *  border, on a plane extrapolated from one side) and the plane's normal agrees with the ray's. */
   bool
-  accept (const Eigen::Vector3d& point, int nearest, double bandwidth, const Eigen::Vector3d& direction,
+  accept (const Eigen::Vector3d& point, const pcl::Indices& indices, double bandwidth, const Eigen::Vector3d& direction,
           const OrientedPlane& plane, double min_cos, Eigen::Vector3d& hit) const
   {
-    if ((point - points_.col (nearest)).norm () > kSpacingFactor * bandwidth)
+    double nearest = std::numeric_limits<double>::infinity ();
+    for (const int index : indices)
+      nearest = std::min (nearest, (point - points_.col (index)).norm ());
+    if (nearest > kSpacingFactor * bandwidth)
       return false;
     const Eigen::Vector3d off_centre = point - plane.centroid;
     if ((off_centre - off_centre.dot (plane.normal) * plane.normal).norm () > kMaxOffCentre * bandwidth)
