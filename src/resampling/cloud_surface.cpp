@@ -142,7 +142,8 @@ private:
     std::nth_element (sorted.begin (), sorted.begin () + sorted.size () / 2, sorted.end ());
     const double limit = kTrim * sorted[sorted.size () / 2] + kTrimFloor;
     const Eigen::VectorXd kept = (residuals.array () <= limit).select (weights, 0.0);
-    return (kept.array () > 0.0).count () >= 4 ? weightedPlane (indices, kept) : plane;
+    const Eigen::Index count = (residuals.array () <= limit).count ();
+    return count >= 4 && count < residuals.size () ? weightedPlane (indices, kept) : plane;
   }
 
   OrientedPlane
