@@ -74,6 +74,11 @@ addResamplingOptions (CLI::App* command, ResamplingOptions& options)
   command->add_option ("--fill-smoothing", options.fill_smoothing, "thin plate spline smoothing of the fills (mm)")
       ->check (nonNegative ())
       ->capture_default_str ();
+  command
+      ->add_option ("--passes", options.passes,
+                    "resampling passes; each after the first casts again from the previous one's fills")
+      ->check (CLI::Range (1, 10))
+      ->capture_default_str ();
 }
 
 std::optional<ResamplingResult>
@@ -92,6 +97,7 @@ resampleFit (const ResamplingOptions& options, const std::string& scan_file, con
   resampler.setRingWidth (options.ring_width);
   resampler.setMaxHoleFraction (options.max_hole_fraction);
   resampler.setFillRegularization (options.fill_smoothing);
+  resampler.setPasses (options.passes);
   resampler.setInputReference (fitted);
   ResamplingResult result;
   try {
@@ -104,11 +110,10 @@ resampleFit (const ResamplingOptions& options, const std::string& scan_file, con
   savePolygonMesh (out, toPolygonMesh (result.mesh, stateColours (result.state)));
   report["resampling"] = statisticsJson (result.statistics);
   report["resampling"]["status"] = "ok";
-  report["resampling"]["settings"] = {{"ray_distance_mm", options.ray_distance},
-                                      {"normal_agreement_deg", options.normal_agreement},
-                                      {"ring_width", options.ring_width},
-                                      {"max_hole_fraction", options.max_hole_fraction},
-                                      {"fill_smoothing", options.fill_smoothing}};
+  report["resampling"]["settings"] = {
+      {"ray_distance_mm", options.ray_distance},  {"normal_agreement_deg", options.normal_agreement},
+      {"ring_width", options.ring_width},         {"max_hole_fraction", options.max_hole_fraction},
+      {"fill_smoothing", options.fill_smoothing}, {"passes", options.passes}};
   report["resampling"]["timings_s"]["total"] =
       std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   report["resampled_mesh"] = out;

@@ -26,9 +26,11 @@ struct ResamplingOptions
   int ring_width = 3;
   double max_hole_fraction = 0.5;
   double fill_smoothing = 1.0;
+  int passes = 3;
 };
 
-/** Adds --ray-distance, --normal-agreement, --ring-width, --max-hole-fraction and --fill-smoothing to \a command. */
+/** Adds --ray-distance, --normal-agreement, --ring-width, --max-hole-fraction, --fill-smoothing and --passes to
+ *  \a command. */
 void
 addResamplingOptions (CLI::App* command, ResamplingOptions& options);
 

@@ -17,8 +17,19 @@
 
 namespace morphreg
 {
+namespace detail
+{
+/** The holes of a resampling, largest first: their vertices and their statistics. */
+struct Holes
+{
+  std::vector<std::vector<int>> vertices;
+  std::vector<ResamplingHole> holes;
+};
+} // namespace detail
+
 namespace
 {
+using detail::Holes;
 using Clock = std::chrono::steady_clock;
 
 /** Sizes further apart than this factor are another unit (cm, inches and m are 10, 25.4 and 1000 times mm), not a
@@ -86,14 +97,16 @@ foldedTriangles (const TriangleMesh& reference, const TriangleMesh& resampled)
 
 /** Marks missed the corners of every triangle whose three corners were observed but whose observed positions turn it
  *  over (by more than 90 degrees against the reference): vertices on both sides of a crease the scan does not have
- *  (an eyelid's margin, a nostril's rim) landing on the one surface the scan has there. The hole fills take them. */
+ *  (an eyelid's margin, a nostril's rim) landing on the one surface the scan has there. The hole fills take them.
+ *  Missed vertices stand at their \a start positions. */
 void
-rejectFoldingHits (const TriangleMesh& reference, const Eigen::Matrix3Xd& hits, std::vector<char>& missed)
+rejectFoldingHits (const TriangleMesh& reference, const Eigen::Matrix3Xd& start, const Eigen::Matrix3Xd& hits,
+                   std::vector<char>& missed)
 {
   TriangleMesh moved{hits, reference.triangles};
   for (Eigen::Index v = 0; v < hits.cols (); ++v)
     if (missed[v])
-      moved.vertices.col (v) = reference.vertices.col (v);
+      moved.vertices.col (v) = start.col (v);
   const std::vector<char> folded = foldedTriangles (reference, moved);
   for (Eigen::Index t = 0; t < reference.numTriangles (); ++t) {
     const Eigen::Vector3i corners = reference.triangles.col (t);
@@ -128,13 +141,6 @@ rejectInconsistentHits (const MeshTopology& topology, const Eigen::Matrix3Xd& of
   for (std::size_t v = 0; v < missed.size (); ++v)
     missed[v] = missed[v] || rejected[v];
 }
-
-/** The holes of a resampling, largest first: their vertices and their statistics. */
-struct Holes
-{
-  std::vector<std::vector<int>> vertices;
-  std::vector<ResamplingHole> holes;
-};
 
 /** The connected misses as holes, largest (by area) first; throws if the largest covers more than \a max_fraction
  *  of the reference's area. */
@@ -173,7 +179,7 @@ findHoles (const MeshTopology& topology, const Eigen::VectorXd& areas, const std
   return result;
 }
 
-/** Fills every hole (see detail::fillHole), recording its anchors and largest fill. */
+/** Fills every hole (see detail::fillHole), recording its anchors. */
 void
 fillHoles (const MeshTopology& topology, const Eigen::Matrix3Xd& reference, const std::vector<char>& missed, int rings,
            double lambda, Holes& holes, Eigen::Matrix3Xd& displacement)
@@ -188,8 +194,6 @@ fillHoles (const MeshTopology& topology, const Eigen::Matrix3Xd& reference, cons
                                " vertices around reference vertex " + std::to_string (hole.front ()) +
                                " cannot be filled from the observed vertices around it: " + e.what ());
     }
-    for (const int v : hole)
-      holes.holes[h].max_fill = std::max (holes.holes[h].max_fill, displacement.col (v).norm ());
   }
 }
 
@@ -315,6 +319,14 @@ ScanResampler::setMaxJump (double jump)
 }
 
 void
+ScanResampler::setPasses (int passes)
+{
+  if (passes < 1)
+    throw InvalidInputError ("ScanResampler::setPasses: " + std::to_string (passes) + " is not a count >= 1");
+  passes_ = passes;
+}
+
+void
 ScanResampler::setFillRegularization (double lambda)
 {
   if (!(lambda >= 0.0) || !std::isfinite (lambda))
@@ -324,17 +336,20 @@ ScanResampler::setFillRegularization (double lambda)
 }
 
 Eigen::Matrix3Xd
-ScanResampler::castRays (const Eigen::Matrix3Xd& normals) const
+ScanResampler::castRays (const Eigen::Matrix3Xd& origins, const Eigen::Matrix3Xd& normals,
+                         const std::vector<char>& cast) const
 {
   const double min_cos = std::cos (normal_agreement_deg_ * M_PI / 180.0);
-  const Eigen::Index n = reference_.numVertices ();
-  Eigen::Matrix3Xd hits = Eigen::Matrix3Xd::Constant (3, n, std::numeric_limits<double>::quiet_NaN ());
+  const Eigen::Index n = origins.cols ();
+  Eigen::Matrix3Xd hits = origins;
 #pragma omp parallel for schedule(dynamic, 256) if (surface_->threadSafe())
   for (Eigen::Index v = 0; v < n; ++v) {
+    if (!cast[v])
+      continue;
     Eigen::Vector3d hit;
-    if (normals.col (v).squaredNorm () > 0.0 &&
-        surface_->intersect (reference_.vertices.col (v), normals.col (v), max_distance_, min_cos, hit))
-      hits.col (v) = hit;
+    const bool found = normals.col (v).squaredNorm () > 0.0 &&
+                       surface_->intersect (origins.col (v), normals.col (v), max_distance_, min_cos, hit);
+    hits.col (v) = found ? hit : Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN ());
   }
   return hits;
 }
@@ -347,60 +362,75 @@ ScanResampler::resample () const
   if (!surface_)
     throw InvalidInputError ("ScanResampler: no scan (setInputScan)");
   requireComparableSize (reference_.vertices, surface_->points ());
-  ResamplingResult result;
-  ResamplingStatistics& stats = result.statistics;
-  const Eigen::Index n = reference_.numVertices ();
-  const Eigen::Matrix3Xd normals = vertexNormals (reference_);
-  const auto ray_start = Clock::now ();
-  const Eigen::Matrix3Xd hits = castRays (normals);
   const MeshTopology topology (reference_);
-  std::vector<char> missed (static_cast<std::size_t> (n));
-  result.displacement = hits - reference_.vertices;
-  for (Eigen::Index v = 0; v < n; ++v)
-    missed[v] = result.displacement.col (v).allFinite () ? 0 : 1;
-  rejectInconsistentHits (topology, result.displacement, normals, max_jump_, missed);
-  rejectFoldingHits (reference_, hits, missed);
-  std::vector<double> moved;
-  for (Eigen::Index v = 0; v < n; ++v)
-    if (missed[v])
-      result.displacement.col (v).setZero ();
-    else
-      moved.push_back (result.displacement.col (v).norm ());
-  stats.ray_seconds = secondsSince (ray_start);
-  stats.vertices = static_cast<int> (n);
-  stats.observed = static_cast<int> (moved.size ());
-  stats.filled = stats.vertices - stats.observed;
-  if (stats.observed == 0)
-    throw InvalidInputError ("ScanResampler: no reference vertex meets the scan within " +
-                             std::to_string (max_distance_) +
-                             " mm along its normal; the scan and the reference do "
-                             "not overlap (is the reference fitted to this scan, in its frame?)");
-  stats.coverage = static_cast<double> (stats.observed) / stats.vertices;
-  stats.median_displacement = median (moved);
-  fillAndSummarise (topology, missed, result);
+  const Eigen::VectorXd areas = vertexAreas (reference_);
+  ResamplingResult result;
+  result.mesh = reference_;
+  std::vector<char> missed (static_cast<std::size_t> (reference_.numVertices ()), 1);
+  Holes holes;
+  for (int pass = 0; pass < passes_; ++pass)
+    holes = resamplePass (topology, areas, missed, result);
+  summarise (missed, areas, holes, result);
   if (!result.mesh.vertices.allFinite ())
     throw NumericalError ("ScanResampler: the resampled mesh has non-finite vertices");
   return result;
 }
 
+Holes
+ScanResampler::resamplePass (const MeshTopology& topology, const Eigen::VectorXd& areas, std::vector<char>& missed,
+                             ResamplingResult& result) const
+{
+  const Eigen::Matrix3Xd start = result.mesh.vertices;
+  const Eigen::Matrix3Xd normals = vertexNormals (result.mesh);
+  const auto ray_start = Clock::now ();
+  const Eigen::Matrix3Xd hits = castRays (start, normals, missed);
+  Eigen::Matrix3Xd displacement = hits - start;
+  for (Eigen::Index v = 0; v < start.cols (); ++v)
+    missed[v] = displacement.col (v).allFinite () ? 0 : 1;
+  rejectInconsistentHits (topology, displacement, normals, max_jump_, missed);
+  rejectFoldingHits (reference_, start, hits, missed);
+  for (Eigen::Index v = 0; v < start.cols (); ++v)
+    if (missed[v])
+      displacement.col (v).setZero ();
+  result.statistics.ray_seconds += secondsSince (ray_start);
+  if (std::all_of (missed.begin (), missed.end (), [] (char m) { return m != 0; }))
+    throw InvalidInputError ("ScanResampler: no reference vertex meets the scan within " +
+                             std::to_string (max_distance_) +
+                             " mm along its normal; the scan and the reference do "
+                             "not overlap (is the reference fitted to this scan, in its frame?)");
+  const auto fill_start = Clock::now ();
+  Holes holes = findHoles (topology, areas, missed, max_hole_fraction_);
+  fillHoles (topology, start, missed, ring_width_, fill_regularization_, holes, displacement);
+  result.statistics.fill_seconds += secondsSince (fill_start);
+  result.mesh.vertices = start + displacement;
+  return holes;
+}
+
 void
-ScanResampler::fillAndSummarise (const MeshTopology& topology, const std::vector<char>& missed,
-                                 ResamplingResult& result) const
+ScanResampler::summarise (const std::vector<char>& missed, const Eigen::VectorXd& areas, Holes& holes,
+                          ResamplingResult& result) const
 {
   ResamplingStatistics& stats = result.statistics;
-  const auto fill_start = Clock::now ();
-  const Eigen::VectorXd areas = vertexAreas (reference_);
-  Holes holes = findHoles (topology, areas, missed, max_hole_fraction_);
-  fillHoles (topology, reference_.vertices, missed, ring_width_, fill_regularization_, holes, result.displacement);
-  stats.fill_seconds = secondsSince (fill_start);
-
-  result.mesh = TriangleMesh{reference_.vertices + result.displacement, reference_.triangles};
+  result.displacement = result.mesh.vertices - reference_.vertices;
   result.state.resize (missed.size ());
+  std::vector<double> moved;
   double observed_area = 0.0;
   for (std::size_t v = 0; v < missed.size (); ++v) {
+    const auto i = static_cast<Eigen::Index> (v);
     result.state[v] = missed[v] ? ResampledVertex::filled : ResampledVertex::observed;
-    observed_area += missed[v] ? 0.0 : areas[static_cast<Eigen::Index> (v)];
+    if (!missed[v]) {
+      moved.push_back (result.displacement.col (i).norm ());
+      observed_area += areas[i];
+    }
   }
+  for (std::size_t h = 0; h < holes.holes.size (); ++h)
+    for (const int v : holes.vertices[h])
+      holes.holes[h].max_fill = std::max (holes.holes[h].max_fill, result.displacement.col (v).norm ());
+  stats.vertices = static_cast<int> (missed.size ());
+  stats.observed = static_cast<int> (moved.size ());
+  stats.filled = stats.vertices - stats.observed;
+  stats.coverage = static_cast<double> (stats.observed) / stats.vertices;
+  stats.median_displacement = median (moved);
   stats.observed_area = observed_area / areas.sum ();
   countFolds (reference_, result.mesh, holes, stats);
   stats.largest_hole_area = holes.holes.empty () ? 0.0 : holes.holes.front ().area / areas.sum ();
