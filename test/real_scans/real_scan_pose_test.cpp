@@ -1,6 +1,7 @@
 // Landmark-free registration of the real head-and-shoulders scan from random similarity poses (required: every
 // pose succeeds: register's checks pass and the face median is at most 0.85 mm).
 #include "real_scan_support.h"
+#include "support/sample_count.h"
 
 #include <morphreg/registration/fit_plausibility.h>
 
@@ -18,8 +19,7 @@ using Icp = morphreg::MorphableICP<pcl::PointNormal>;
 int
 poseCount ()
 {
-  const char* value = std::getenv ("MORPHREG_REAL_POSES");
-  return value ? std::atoi (value) : 24;
+  return sampleCount (24);
 }
 
 struct PoseRun
@@ -77,7 +77,7 @@ TEST (RealScanPoseTest, Cloud82kInMetresAndCentimetres)
   MORPHREG_REQUIRE_REAL_SCANS ();
   const auto cloud = leeScan82k ();
   for (const auto& unit : {std::make_pair (0.001, "m"), std::make_pair (0.1, "cm")})
-    for (int k = 1; k <= 6; ++k) {
+    for (int k = 1; k <= sampleCount (6); ++k) {
       const PoseRun run = runPose (*cloud, randomPose (100 + k), unit.second, k, unit.first);
       EXPECT_EQ (run.unit, unit.second) << "pose " << k;
       EXPECT_LE (run.face_median, 0.85) << unit.second << " pose " << k;

@@ -1,6 +1,7 @@
 // The global start and MorphableICP on scans that hold what real scans carry beyond the head: shoulders and torso,
 // a chair back, hair-like noise on the crown, no normals, any rotation. 20 heads of the built-in population.
 #include "scan_protocol.h"
+#include "support/sample_count.h"
 
 #include <morphreg/model/model_builder.h>
 #include <morphreg/registration/global_alignment.h>
@@ -113,7 +114,7 @@ TEST (ClutterTest, EveryHeadOfTwentyFitsThroughShouldersChairAndHair)
   const MorphableModel::ConstPtr model = morphreg::ModelBuilder (settings).build (meshes, generator.regions ());
   std::mt19937_64 rng (3);
   int failures = 0;
-  for (int head = 0; head < 20; ++head) {
+  for (int head = 0; head < morphreg::test::sampleCount (20); ++head) {
     const Eigen::VectorXd truth_m = model->sampleCoefficients (rng, model->firstComponents (10));
     const TriangleMesh truth = model->generateMesh (truth_m, model->firstComponents (10));
     const ClutteredScan scan = clutteredScan (truth, 700 + head);

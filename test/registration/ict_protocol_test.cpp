@@ -4,6 +4,7 @@
 // The protocol's holes (crown cap at +Y, under the chin at +Z) fit the ICT frame (+Y up, +Z out of the face).
 // 60 registrations: about 2 minutes of CPU time.
 #include "scan_protocol.h"
+#include "support/sample_count.h"
 #include "ict_data.h"
 
 #include <morphreg/common/order_statistics.h>
@@ -108,7 +109,7 @@ TEST (IctIcpTest, HeadsWithinTheFittedComponentsFitFromLandmarkAndCoarseStarts)
   const morphreg::ComponentSelection selection = model.firstComponents (kFittedComponents);
   std::mt19937_64 rng (kCoefficientSeed);
   std::vector<double> landmark_rms, coarse_rms;
-  for (int head = 0; head < kHeads; ++head) {
+  for (int head = 0; head < morphreg::test::sampleCount (kHeads); ++head) {
     const morphreg::TriangleMesh mesh = model.generateMesh (model.sampleCoefficients (rng, selection), selection);
     const auto scan = morphreg::test::simulateProtocolScan (mesh, startLandmarks (model), kScanSeed + head);
     for (const bool landmark_start : {true, false}) {
@@ -121,10 +122,10 @@ TEST (IctIcpTest, HeadsWithinTheFittedComponentsFitFromLandmarkAndCoarseStarts)
   }
   const double worst_landmark = *std::max_element (landmark_rms.begin (), landmark_rms.end ());
   const double worst_coarse = *std::max_element (coarse_rms.begin (), coarse_rms.end ());
-  std::printf ("[ ICT within 30 ] landmark start: median %.3f, worst %.3f mm, %ld/20 <= 1 mm; coarse start: median "
-               "%.3f, worst %.3f mm, %ld/20 <= 1 mm\n",
-               median (landmark_rms), worst_landmark, countAtMost (landmark_rms, 1.0), median (coarse_rms),
-               worst_coarse, countAtMost (coarse_rms, 1.0));
+  std::printf ("[ ICT within 30 ] landmark start: median %.3f, worst %.3f mm, %ld/%zu <= 1 mm; coarse start: median "
+               "%.3f, worst %.3f mm, %ld/%zu <= 1 mm\n",
+               median (landmark_rms), worst_landmark, countAtMost (landmark_rms, 1.0), landmark_rms.size (),
+               median (coarse_rms), worst_coarse, countAtMost (coarse_rms, 1.0), coarse_rms.size ());
   // Required: <= 1.0 mm on every head from both starts. At these settings the landmark start fits 20/20 heads
   // (median 0.68 mm, worst 0.82 mm), the coarse start (robustCoarseSimilarity) 20/20 (median 0.69 mm, worst
   // 0.84 mm), in 17-41 iterations.
@@ -140,7 +141,7 @@ TEST (IctIcpTest, HeadsWithAllComponentsFitWithin30ComponentsCloseToTheirFloor)
   const morphreg::ComponentSelection fitted = model.firstComponents (kFittedComponents);
   std::mt19937_64 rng (kCoefficientSeed + 1);
   std::vector<double> rms, ratio, floors;
-  for (int head = 0; head < kHeads; ++head) {
+  for (int head = 0; head < morphreg::test::sampleCount (kHeads); ++head) {
     const Eigen::VectorXd truth = model.sampleCoefficients (rng, all);
     const morphreg::TriangleMesh mesh = model.generateMesh (truth, all);
     const auto scan = morphreg::test::simulateProtocolScan (mesh, startLandmarks (model), kScanSeed + 100 + head);
@@ -156,8 +157,8 @@ TEST (IctIcpTest, HeadsWithAllComponentsFitWithin30ComponentsCloseToTheirFloor)
     ratio.push_back (fit.rms / floor);
   }
   const double worst_ratio = *std::max_element (ratio.begin (), ratio.end ());
-  std::printf ("[ ICT all 100 ] median RMS %.3f mm (floor median %.3f mm), worst ratio to floor %.2f, %ld/20 <= 2x\n",
-               median (rms), median (floors), worst_ratio, countAtMost (ratio, 2.0));
+  std::printf ("[ ICT all 100 ] median RMS %.3f mm (floor median %.3f mm), worst ratio to floor %.2f, %ld/%zu <= 2x\n",
+               median (rms), median (floors), worst_ratio, countAtMost (ratio, 2.0), ratio.size ());
   // Required: median <= 2.0 mm and every head <= 2x its floor. At these settings: median 1.78 mm (floors' median
   // 1.27 mm), 20/20 heads at 1.18-1.91x (head 7: 2.31 mm, floor 1.21 mm), 18-44 iterations.
   EXPECT_LE (median (rms), 2.0);

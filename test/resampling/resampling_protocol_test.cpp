@@ -10,6 +10,8 @@
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
 
+#include "support/sample_count.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -95,7 +97,7 @@ TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
 
   std::vector<double> observed_rms, filled_rms, filled_above_cut_rms, fit_rms, coverage; // fit_rms: over the filled
   int folded = 0;
-  for (int head = 0; head < kHeads; ++head) {
+  for (int head = 0; head < morphreg::test::sampleCount (kHeads); ++head) {
     const morphreg::TriangleMesh truth_head = generator.sample (kFirstUnseen + head).mesh;
     const auto scan = morphreg::synthetic::ScanSimulator ().scan (truth_head, kFirstUnseen + head);
     morphreg::TriangleMesh truth = truth_head;
@@ -125,13 +127,13 @@ TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
   }
   const double observed = median (observed_rms), filled = median (filled_rms);
   const double filled_above_cut = median (filled_above_cut_rms), fit = median (fit_rms);
-  std::printf ("[ protocol ] %d heads: median observed RMS %.3f mm (max %.3f), median filled RMS %.3f mm (max %.3f; "
-               "model fit on the same vertices %.3f mm), %.3f mm above the neck's cut (max %.3f), median coverage "
-               "%.3f, folded triangles %d\n",
-               kHeads, observed, *std::max_element (observed_rms.begin (), observed_rms.end ()), filled,
-               *std::max_element (filled_rms.begin (), filled_rms.end ()), fit, filled_above_cut,
-               *std::max_element (filled_above_cut_rms.begin (), filled_above_cut_rms.end ()), median (coverage),
-               folded);
+  std::printf (
+      "[ protocol ] %d heads: median observed RMS %.3f mm (max %.3f), median filled RMS %.3f mm (max %.3f; "
+      "model fit on the same vertices %.3f mm), %.3f mm above the neck's cut (max %.3f), median coverage "
+      "%.3f, folded triangles %d\n",
+      morphreg::test::sampleCount (kHeads), observed, *std::max_element (observed_rms.begin (), observed_rms.end ()),
+      filled, *std::max_element (filled_rms.begin (), filled_rms.end ()), fit, filled_above_cut,
+      *std::max_element (filled_above_cut_rms.begin (), filled_above_cut_rms.end ()), median (coverage), folded);
   // Required: observed <= 0.25 mm, filled <= 1.5 mm (medians over the heads). Below the neck's cut (the scan's
   // lowest row) the true head ends in its flat cap, which no scan sees: the fill there can only continue the model
   // fit's neck, so the filled figure over all filled vertices is the fit's neck-length error and is held to the fit's.
