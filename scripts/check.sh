@@ -10,8 +10,9 @@ cd "$(dirname "$0")/.."
 ROOT=$(pwd)
 
 # Sanitizer settings shared by both: stop at the first report, and keep the leak suppressions of system libraries.
-# alloc_dealloc_mismatch=0: PCL's vtk2mesh frees with delete an array VTK allocated with malloc (every VTK and STL
-# file), harmless with glibc and not in morphreg's code.
+# alloc_dealloc_mismatch=0: PCL's own compiled code frees with delete memory it allocated with malloc (vtk2mesh on
+# every VTK and STL file, CorrespondenceRejectorMedianDistance::setSourcePoints, PCLVisualizer::addPolygonMesh),
+# harmless with glibc and not in morphreg's code.
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_string_checks=1:alloc_dealloc_mismatch=0"
 export LSAN_OPTIONS="suppressions=$ROOT/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
