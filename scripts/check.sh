@@ -39,7 +39,7 @@ sanitize() {
   # The Python module is left out: an instrumented extension cannot load into Debian's uninstrumented interpreter
   # without preloading the sanitizer runtime; the library code it wraps is what the suite checks.
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORPHREG_SANITIZE=address,undefined \
-    -DMORPHREG_BUILD_BENCHMARKS=OFF -DMORPHREG_BUILD_PYTHON=OFF
+    -DMORPHREG_BUILD_BENCHMARKS=OFF -DMORPHREG_BUILD_PYTHON=OFF -DMORPHREG_TEST_TIMEOUT_FACTOR=10
   nice -n 10 cmake --build build-asan -j2
   # PackageTest builds consumer projects without the sanitizers against the installed (instrumented) libraries,
   # which cannot load without the sanitizer runtime first: it checks the packaging, which the normal suite does.
@@ -84,7 +84,7 @@ fuzz() {
   install_missing clang-14 libclang-rt-14-dev libomp-14-dev llvm-14
   CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORPHREG_BUILD_FUZZERS=ON \
     -DMORPHREG_BUILD_TESTS=OFF -DMORPHREG_BUILD_TOOLS=OFF -DMORPHREG_BUILD_SAMPLES=OFF \
-    -DMORPHREG_BUILD_BENCHMARKS=OFF -DMORPHREG_BUILD_PYTHON=OFF -DMORPHREG_PRECOMPILED_HEADERS=OFF >/dev/null
+    -DMORPHREG_BUILD_BENCHMARKS=OFF -DMORPHREG_BUILD_PYTHON=OFF -DMORPHREG_TEST_TIMEOUT_FACTOR=10 -DMORPHREG_PRECOMPILED_HEADERS=OFF >/dev/null
   nice -n 10 cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
   export ASAN_SYMBOLIZER_PATH=/usr/bin/llvm-symbolizer-14
   # The inputs are written to a file per run; a RAM disk keeps that cheap.

@@ -31,7 +31,8 @@ function(morphreg_bad_input name code)
     COMMAND ${CMAKE_COMMAND} -DCASE_DIR=${bad_dir}/${name} "-DARGS=${command}" -DEXPECT_CODE=${code}
             "-DEXPECT_TEXT=${case_TEXT}" "-DSETUP=${case_SETUP}" "-DFORBID_TEXT=${case_FORBID}"
             -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/cli/expect_bad_input.cmake)
-  set_tests_properties(CliTest.BadInput.${name} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model" TIMEOUT 300)
+  math(EXPR timeout "300 * ${MORPHREG_TEST_TIMEOUT_FACTOR}")
+  set_tests_properties(CliTest.BadInput.${name} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model" TIMEOUT ${timeout})
   if(case_ENVIRONMENT)
     set_tests_properties(CliTest.BadInput.${name} PROPERTIES ENVIRONMENT_MODIFICATION "${case_ENVIRONMENT}")
   endif()

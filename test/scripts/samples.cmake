@@ -19,7 +19,8 @@ function(sample_test name)
   endforeach()
   add_test(NAME SampleTest.${name}
     COMMAND ${CMAKE_COMMAND} ${definitions} -P ${CMAKE_CURRENT_SOURCE_DIR}/samples/run_sample.cmake)
-  set_tests_properties(SampleTest.${name} PROPERTIES TIMEOUT 120 ${arg_PROPERTIES})
+  math(EXPR timeout "120 * ${MORPHREG_TEST_TIMEOUT_FACTOR}")
+  set_tests_properties(SampleTest.${name} PROPERTIES TIMEOUT ${timeout} ${arg_PROPERTIES})
 endfunction()
 
 # register_scan: a 30-head synthetic model and a scan of an unseen head (measured: vertex RMS 1.00 mm where the scan
