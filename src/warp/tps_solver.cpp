@@ -196,6 +196,8 @@ public:
   bendingEnergy (const Eigen::MatrixXd& w) const
   {
     const Eigen::Index m = q_k_q_.rows () - D - 1;
+    if (m == 0)   // D + 1 landmarks: the spline is affine and bends nothing (and Eigen's empty triangular product would
+      return 0.0; // bind a reference to the null data of its zero-size result)
     const Eigen::MatrixXd g = (qr_.householderQ ().adjoint () * w).bottomRows (m);
     const Eigen::MatrixXd lt_g = factor ().adjoint () * g;
     return lt_g.squaredNorm () - lambda_ * g.squaredNorm ();

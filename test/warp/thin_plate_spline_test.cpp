@@ -102,6 +102,19 @@ TEST (TpsTest, ReproducesAffineMapsWithZeroWeights)
   EXPECT_LE ((tps.jacobian (elsewhere.col (0)) - kLinear).norm (), 1e-9);
 }
 
+// Four landmarks in 3D fix an affine map and leave the spline nothing to bend (the sanitizer run found the bending
+// energy of that case computed from an empty triangular product).
+TEST (TpsTest, FourLandmarksIn3DAreAnAffineMapWithoutBending)
+{
+  const Eigen::Matrix3Xd source = randomLandmarks (4, 7, 150.0);
+  Eigen::Matrix3Xd target = affineMap (source, kLinear, kShift);
+  target.col (3) += Eigen::Vector3d (1.0, -2.0, 0.5); // any four targets are an affine map of four free points
+  ThinPlateSpline<double, 3> tps;
+  tps.fit (source, target);
+  EXPECT_EQ (tps.bendingEnergy (), 0.0);
+  EXPECT_LE (maxColumnDistance (tps.evaluate (source), target), 1e-9 * extent (source));
+}
+
 TEST (TpsTest, ReproducesAffineMaps2D)
 {
   const Eigen::Matrix2Xd source = randomLandmarks<2> (30, 7);
