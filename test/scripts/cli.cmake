@@ -343,11 +343,10 @@ set_tests_properties(CliTest.DemoRunsWithoutScreenshot PROPERTIES
   PASS_REGULAR_EXPRESSION "demo: 6 heads.*fitted mesh .*fitted.ply, report .*report.json\n.*vertex RMS [0-9.]+ mm")
 
 # Screenshots under a virtual X server, one at a time.
-find_program(XVFB_RUN xvfb-run)
-if(NOT XVFB_RUN)
+if(NOT MORPHREG_XVFB)
   return()
 endif()
-set(xvfb ${XVFB_RUN} -a -s "-screen 0 1280x1024x24")
+set(xvfb ${MORPHREG_XVFB})
 add_test(NAME CliTest.RenderWritesPng
   COMMAND ${xvfb} $<TARGET_FILE:morphreg_cli> render --mesh ${cli_dir}/synth/head_000.ply
           --cloud ${cli_dir}/synth/scan_0.pcd --width 320 --height 240 --view oblique --out ${cli_dir}/render.png)

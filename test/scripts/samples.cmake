@@ -93,9 +93,8 @@ if(EXISTS "${MORPHREG_SHARED_DATA_DIR}/makehuman_bodies")
 endif()
 
 # The viewers render offscreen under a virtual X server, one server at a time.
-find_program(XVFB_RUN xvfb-run)
-if(XVFB_RUN)
-  set(xvfb ${XVFB_RUN} -a -s "-screen 0 1280x1024x24")
+if(MORPHREG_XVFB)
+  set(xvfb ${MORPHREG_XVFB})
   sample_test(LiveViewerWritesFrames
     COMMAND ${xvfb} $<TARGET_FILE:sample_live_viewer> --frames ${sample_dir}/LiveViewerWritesFrames --iterations 4
             --width 320 --height 240
