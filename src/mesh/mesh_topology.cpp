@@ -2,9 +2,9 @@
 #include <morphreg/mesh/mesh_topology.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <queue>
-#include <unordered_map>
 
 namespace morphreg
 {
@@ -27,29 +27,32 @@ vertexFaces (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices
     for (int c = 0; c < 3; ++c)
       faces[fill[triangles (c, t)]++] = static_cast<int> (t);
 }
-/** Each undirected edge once (a < b, sorted) with the number of triangles that use it. */
+/** Each undirected edge once (a < b, sorted) with the number of triangles that use it, gathered per lower vertex
+ *  from its incident triangles (\a face_offsets, \a faces: vertexFaces). */
 std::vector<MeshTopology::Edge>
-countEdges (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices)
+countEdges (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices, const std::vector<int>& face_offsets,
+            const std::vector<int>& faces)
 {
   std::vector<MeshTopology::Edge> edges;
-  std::unordered_map<long long, int> edge_index;
-  edge_index.reserve (static_cast<size_t> (triangles.cols ()) * 2);
-  for (Eigen::Index t = 0; t < triangles.cols (); ++t)
-    for (int c = 0; c < 3; ++c) {
-      const int a = std::min (triangles (c, t), triangles ((c + 1) % 3, t));
-      const int b = std::max (triangles (c, t), triangles ((c + 1) % 3, t));
-      const long long key = static_cast<long long> (a) * num_vertices + b;
-      const auto it = edge_index.find (key);
-      if (it == edge_index.end ()) {
-        edge_index.emplace (key, static_cast<int> (edges.size ()));
-        edges.push_back ({a, b, 1});
+  std::vector<int> higher;
+  for (Eigen::Index a = 0; a < num_vertices; ++a) {
+    higher.clear ();
+    for (int f = face_offsets[a]; f < face_offsets[a + 1]; ++f) {
+      if (f > face_offsets[a] && faces[f] == faces[f - 1])
+        continue; // a triangle that uses a twice is listed twice
+      for (int c = 0; c < 3; ++c) {
+        const int x = triangles (c, faces[f]), y = triangles ((c + 1) % 3, faces[f]);
+        if (std::min (x, y) == a)
+          higher.push_back (std::max (x, y));
       }
-      else
-        ++edges[it->second].face_count;
     }
-  std::sort (edges.begin (), edges.end (), [] (const MeshTopology::Edge& x, const MeshTopology::Edge& y) {
-    return x.a != y.a ? x.a < y.a : x.b < y.b;
-  });
+    std::sort (higher.begin (), higher.end ());
+    for (std::size_t k = 0; k < higher.size (); ++k)
+      if (k > 0 && higher[k] == higher[k - 1])
+        ++edges.back ().face_count;
+      else
+        edges.push_back ({static_cast<int> (a), higher[k], 1});
+  }
   return edges;
 }
 
@@ -75,15 +78,15 @@ adjacency (const std::vector<MeshTopology::Edge>& edges, Eigen::Index num_vertic
     std::sort (neighbours.begin () + offsets[v], neighbours.begin () + offsets[v + 1]);
 }
 
-/** The link of vertex \a v (its triangles' opposite edges, as a vertex -> neighbours map); false if a triangle
- *  uses v twice.
- */
+/** The link of vertex \a v: its triangles' edges opposite it; false if a triangle uses v twice or not at all. */
 bool
 vertexLink (const TriangleMesh::Triangles& triangles, const int* first_face, const int* last_face, int v,
-            std::unordered_map<int, std::vector<int>>& link)
+            std::vector<std::array<int, 2>>& link)
 {
+  link.clear ();
   for (const int* face = first_face; face != last_face; ++face) {
-    int others[2], n = 0;
+    std::array<int, 2> others{};
+    int n = 0;
     for (int c = 0; c < 3; ++c)
       if (triangles (c, *face) != v) {
         if (n < 2)
@@ -92,46 +95,51 @@ vertexLink (const TriangleMesh::Triangles& triangles, const int* first_face, con
       }
     if (n != 2)
       return false;
-    link[others[0]].push_back (others[1]);
-    link[others[1]].push_back (others[0]);
+    link.push_back (others);
   }
   return true;
 }
 
-/** True if \a link is one cycle (the link of a closed manifold vertex): every vertex on two of its edges and a
- *  walk through them visits them all.
- */
+/** True if the edges \a link form one cycle (the link of a closed manifold vertex): every vertex on two of them
+ *  and a walk through them comes back after all of them. */
 bool
-isSingleCycle (const std::unordered_map<int, std::vector<int>>& link)
+isSingleCycle (const std::vector<std::array<int, 2>>& link, std::vector<int>& ends)
 {
-  for (const auto& entry : link)
-    if (entry.second.size () != 2)
+  ends.clear ();
+  for (const auto& edge : link)
+    ends.insert (ends.end (), edge.begin (), edge.end ());
+  std::sort (ends.begin (), ends.end ());
+  for (std::size_t k = 0; k < ends.size (); k += 2)
+    if (ends[k] != ends[k + 1] || (k + 2 < ends.size () && ends[k + 2] == ends[k]))
       return false;
-  size_t visited = 1;
-  const int start = link.begin ()->first;
-  int previous = start, current = link.begin ()->second[0];
-  while (current != start && visited <= link.size ()) {
-    const auto& next = link.at (current);
-    const int following = next[0] == previous ? next[1] : next[0];
-    previous = current;
-    current = following;
-    ++visited;
+  const int start = link[0][0];
+  int current = link[0][1];
+  std::size_t walked = 1, last = 0;
+  while (current != start && walked <= link.size ()) {
+    std::size_t next = 0;
+    while (next < link.size () && (next == last || (link[next][0] != current && link[next][1] != current)))
+      ++next;
+    if (next == link.size ())
+      return false;
+    current = link[next][0] == current ? link[next][1] : link[next][0];
+    last = next;
+    ++walked;
   }
-  return visited == link.size ();
+  return walked == link.size ();
 }
 
 /** True if the star of every vertex of \a triangles is a single fan (vertices in no triangle pass). */
 bool
-starsAreFans (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices)
+starsAreFans (const TriangleMesh::Triangles& triangles, Eigen::Index num_vertices, const std::vector<int>& face_offsets,
+              const std::vector<int>& faces)
 {
-  std::vector<int> face_offsets, faces;
-  vertexFaces (triangles, num_vertices, face_offsets, faces);
+  std::vector<std::array<int, 2>> link;
+  std::vector<int> ends;
   for (Eigen::Index v = 0; v < num_vertices; ++v) {
-    std::unordered_map<int, std::vector<int>> link;
     if (!vertexLink (triangles, faces.data () + face_offsets[v], faces.data () + face_offsets[v + 1],
                      static_cast<int> (v), link))
       return false;
-    if (!link.empty () && !isSingleCycle (link))
+    if (!link.empty () && !isSingleCycle (link, ends))
       return false;
   }
   return true;
@@ -145,9 +153,11 @@ MeshTopology::MeshTopology (const TriangleMesh::Triangles& triangles, Eigen::Ind
 {
   if (triangles.size () > 0 && (triangles.minCoeff () < 0 || triangles.maxCoeff () >= num_vertices))
     throw InvalidInputError ("MeshTopology: triangle indices out of range of the vertex count");
-  edges_ = countEdges (triangles, num_vertices);
+  std::vector<int> face_offsets, faces;
+  vertexFaces (triangles, num_vertices, face_offsets, faces);
+  edges_ = countEdges (triangles, num_vertices, face_offsets, faces);
   adjacency (edges_, num_vertices, offsets_, neighbours_);
-  stars_are_fans_ = starsAreFans (triangles, num_vertices);
+  stars_are_fans_ = starsAreFans (triangles, num_vertices, face_offsets, faces);
 }
 
 std::vector<std::array<int, 2>>

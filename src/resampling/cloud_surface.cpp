@@ -1,7 +1,10 @@
 // A point cloud scan as ScanResampler's surface: the ray meets the Gaussian-weighted plane of the scan points nearest
 // to it (a point set surface, as in Adamson and Alexa 2003). Measured against triangulating the same scans first (bench/RESULTS.md, "Scan resampling"), the local planes
 // need no triangulation step and average the range noise over k points where a mesh's triangles keep it.
+#include "point_grid.h"
 #include "scan_surface.h"
+
+#include <morphreg/common/order_statistics.h>
 
 #include <pcl/kdtree/kdtree_flann.h>
 
@@ -29,6 +32,31 @@ constexpr double kTrimFloor = 1e-3;        ///< mm, so exactly planar neighbourh
 constexpr double kMinNormalLength = 0.5;   ///< the weighted mean of the given normals is kept if at least this long
 constexpr double kCoveredBandwidths = 2.0; ///< neighbours are searched again when farther ones could weigh more than
                                            ///< exp(-4) of the nearest
+constexpr double kCellPerNeighbour = 0.25; ///< grid cells of this times sqrt(k) local spacings: half the k-th
+                                           ///< neighbour's usual distance (sqrt(k) / 2 spacings)
+constexpr double kSparsest = 4.0;          ///< rays search up to this many usual k-th neighbour distances beyond their
+                                           ///< reach: a scan 4 times sparser than its median still has hits
+
+/** Per point: the distance to its kSpacingNeighbour-th nearest other point (a k-d tree's search, both cores). */
+std::vector<double>
+localSpacings (const Eigen::Matrix3Xd& points)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  cloud->resize (points.cols ());
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud (cloud);
+  std::vector<double> spacing (points.cols ());
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index i = 0; i < points.cols (); ++i) {
+    pcl::Indices indices;
+    std::vector<float> distances;
+    const int found = tree.nearestKSearch ((*cloud)[i], kSpacingNeighbour + 1, indices, distances);
+    spacing[i] = std::sqrt (distances[found - 1]);
+  }
+  return spacing;
+}
 
 /** A plane through a weighted centroid; its normal's sign is known when it came from the scan's normals. */
 struct OrientedPlane
@@ -38,26 +66,25 @@ struct OrientedPlane
   bool oriented;
 };
 
+/** The scan points around a ray's point, gathered once per search: positions, normals (zero where unknown) and
+ *  whether each has one. */
+struct Neighbourhood
+{
+  Eigen::Matrix3Xd points;
+  Eigen::Matrix3Xd normals;
+  Eigen::VectorXd has_normal;
+  Eigen::VectorXd spacing; ///< each point's local spacing
+};
+
 class CloudSurface : public ScanSurface
 {
 public:
   CloudSurface (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, int neighbours)
-    : points_ (std::move (points)), normals_ (std::move (normals)), neighbours_ (neighbours)
-  {
-    auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-    cloud->resize (points_.cols ());
-    for (Eigen::Index i = 0; i < points_.cols (); ++i)
-      (*cloud)[i].getVector3fMap () = points_.col (i).cast<float> ();
-    tree_.setInputCloud (cloud);
-    spacing_.resize (points_.cols ());
-#pragma omp parallel for schedule(static)
-    for (Eigen::Index i = 0; i < points_.cols (); ++i) {
-      pcl::Indices indices;
-      std::vector<float> distances;
-      const int found = tree_.nearestKSearch ((*cloud)[i], kSpacingNeighbour + 1, indices, distances);
-      spacing_[i] = std::sqrt (distances[found - 1]);
-    }
-  }
+    : points_ (std::move (points)), normals_ (std::move (normals)), neighbours_ (neighbours),
+      spacing_ (localSpacings (points_)),
+      grid_ (points_, kCellPerNeighbour * std::sqrt (double (neighbours)) * median (spacing_)),
+      usual_kth_ (0.5 * std::sqrt (double (neighbours)) * median (spacing_))
+  {}
 
   /** Newton's iteration on the smooth surface the Gaussian-weighted local planes define (a point set surface): the
    *  ray's point moves to where it meets the plane of the points around it, with one bandwidth for the whole ray, so
@@ -69,20 +96,19 @@ public:
   {
     double t = 0.0, bandwidth = 0.0, reach = 0.0;
     Eigen::Vector3d searched_at;
-    pcl::Indices indices;
-    std::vector<float> distances;
+    Neighbourhood around;
     for (int step = 0; step < kMaxSteps; ++step) {
       const Eigen::Vector3d at = origin + t * direction;
       if (step == 0 || (at - searched_at).norm () > reach) {
-        pcl::PointXYZ query;
-        query.getVector3fMap () = at.cast<float> ();
-        tree_.nearestKSearch (query, neighbours_, indices, distances);
+        const double kth = gather (at, max_distance + kSparsest * usual_kth_, around);
+        if (!std::isfinite (kth))
+          return false; // no k scan points near enough for a hit
         if (step == 0)
-          bandwidth = medianSpacing (indices);
+          bandwidth = median (around.spacing); // the Gaussian weights' bandwidth, one along the ray
         searched_at = at;
-        reach = std::sqrt (distances.back ()) - kCoveredBandwidths * bandwidth;
+        reach = std::sqrt (kth) - kCoveredBandwidths * bandwidth;
       }
-      const OrientedPlane plane = localPlane (indices, at, bandwidth);
+      const OrientedPlane plane = localPlane (around, at, bandwidth);
       const double incidence = plane.normal.dot (direction);
       if (std::abs (incidence) < kMinIncidence)
         return false;
@@ -92,7 +118,7 @@ public:
       const bool converged = std::abs (next - t) < kConverged;
       t = next;
       if (converged)
-        return accept (origin + t * direction, indices, bandwidth, direction, plane, min_cos, hit);
+        return accept (origin + t * direction, around, bandwidth, direction, plane, min_cos, hit);
     }
     return false;
   }
@@ -106,81 +132,77 @@ public:
   bool
   threadSafe () const override
   {
-    return true; // k-d tree searches are const
+    return true; // grid searches are const
   }
 
 private:
-  /** The median local spacing of the scan points \a indices: the Gaussian weights' bandwidth along one ray. */
+  /** The k nearest scan points to \a at, if they lie within \a max_radius; returns the k-th's squared distance
+   *  (infinity, and \a around untouched, if they do not). */
   double
-  medianSpacing (const pcl::Indices& indices) const
+  gather (const Eigen::Vector3d& at, double max_radius, Neighbourhood& around) const
   {
-    std::vector<double> spacings (indices.size ());
-    for (std::size_t k = 0; k < indices.size (); ++k)
-      spacings[k] = spacing_[indices[k]];
-    std::nth_element (spacings.begin (), spacings.begin () + spacings.size () / 2, spacings.end ());
-    return spacings[spacings.size () / 2];
+    thread_local std::vector<int> indices;
+    thread_local std::vector<double> distances;
+    const double kth = grid_.nearestK (at, neighbours_, max_radius, indices, distances);
+    if (indices.empty ())
+      return kth;
+    const auto k = static_cast<Eigen::Index> (indices.size ());
+    around.points.resize (3, k);
+    around.normals.resize (3, k);
+    around.has_normal.resize (k);
+    around.spacing.resize (k);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      around.points.col (j) = points_.col (indices[j]);
+      const bool known = normals_.cols () > 0 && normals_.col (indices[j]).allFinite ();
+      around.normals.col (j) = known ? Eigen::Vector3d (normals_.col (indices[j])) : Eigen::Vector3d::Zero ();
+      around.has_normal[j] = known ? 1.0 : 0.0;
+      around.spacing[j] = spacing_[indices[j]];
+    }
+    return kth;
   }
 
-  /** The plane of the points \a indices weighted by exp(-d^2 / bandwidth^2), d their distance to \a at, refitted
+  /** The plane of the points \a around weighted by exp(-d^2 / bandwidth^2), d their distance to \a at, refitted
    *  without those farther from it than kTrim times the median distance (outliers, another surface's points). Its
    *  normal is the weighted mean of the scan's normals where they agree, else the weighted covariance's least
    *  direction (unoriented). */
-  OrientedPlane
-  localPlane (const pcl::Indices& indices, const Eigen::Vector3d& at, double bandwidth) const
+  static OrientedPlane
+  localPlane (const Neighbourhood& around, const Eigen::Vector3d& at, double bandwidth)
   {
-    Eigen::VectorXd squared (indices.size ());
-    for (std::size_t k = 0; k < indices.size (); ++k)
-      squared[k] = (points_.col (indices[k]) - at).squaredNorm ();
+    const Eigen::ArrayXd squared = (around.points.colwise () - at).colwise ().squaredNorm ().transpose ();
     // relative to the nearest: no underflow far from the scan
-    const Eigen::VectorXd weights =
-        (-(squared.array () - squared.minCoeff ()) / (bandwidth * bandwidth)).exp ().matrix ();
-    OrientedPlane plane = weightedPlane (indices, weights);
-    Eigen::VectorXd residuals (indices.size ());
-    for (std::size_t k = 0; k < indices.size (); ++k)
-      residuals[k] = std::abs ((points_.col (indices[k]) - plane.centroid).dot (plane.normal));
-    std::vector<double> sorted (residuals.data (), residuals.data () + residuals.size ());
-    std::nth_element (sorted.begin (), sorted.begin () + sorted.size () / 2, sorted.end ());
-    const double limit = kTrim * sorted[sorted.size () / 2] + kTrimFloor;
-    const Eigen::VectorXd kept = (residuals.array () <= limit).select (weights, 0.0);
-    const Eigen::Index count = (residuals.array () <= limit).count ();
-    return count >= 4 && count < residuals.size () ? weightedPlane (indices, kept) : plane;
+    const Eigen::VectorXd weights = (-(squared - squared.minCoeff ()) / (bandwidth * bandwidth)).exp ().matrix ();
+    const OrientedPlane plane = weightedPlane (around, weights);
+    const Eigen::ArrayXd residuals =
+        ((around.points.colwise () - plane.centroid).transpose () * plane.normal).array ().abs ();
+    const double limit = kTrim * median (residuals.matrix ()) + kTrimFloor;
+    const Eigen::Index count = (residuals <= limit).count ();
+    return count >= 4 && count < residuals.size () ? weightedPlane (around, (residuals <= limit).select (weights, 0.0))
+                                                   : plane;
   }
 
-  OrientedPlane
-  weightedPlane (const pcl::Indices& indices, const Eigen::VectorXd& weights) const
+  static OrientedPlane
+  weightedPlane (const Neighbourhood& around, const Eigen::VectorXd& weights)
   {
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero (), given = Eigen::Vector3d::Zero ();
-    double given_weight = 0.0;
-    for (std::size_t k = 0; k < indices.size (); ++k) {
-      centroid += weights[k] * points_.col (indices[k]);
-      if (normals_.cols () > 0 && normals_.col (indices[k]).allFinite ()) {
-        given += weights[k] * normals_.col (indices[k]);
-        given_weight += weights[k];
-      }
-    }
-    centroid /= weights.sum ();
+    const Eigen::Vector3d centroid = around.points * weights / weights.sum ();
+    const Eigen::Vector3d given = around.normals * weights;
+    const double given_weight = around.has_normal.dot (weights);
     if (given_weight > 0.0 && given.norm () >= kMinNormalLength * given_weight)
       return {centroid, given.normalized (), true};
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero ();
-    for (std::size_t k = 0; k < indices.size (); ++k) {
-      const Eigen::Vector3d d = points_.col (indices[k]) - centroid;
-      covariance += weights[k] * d * d.transpose ();
-    }
+    const Eigen::Matrix3Xd centred = around.points.colwise () - centroid;
+    const Eigen::Matrix3d covariance = centred * weights.asDiagonal () * centred.transpose ();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (covariance);
     return {centroid, solver.eigenvectors ().col (0), false};
   }
 
   /** The hit \a point counts if it lies within kSpacingFactor local spacings (\a bandwidth, the median of the
    *  neighbourhood's: one point's own varies twofold on a random sampling) of its nearest scan point among
-   *  \a indices (no hole between), within \a bandwidth of its plane's centroid along the plane (not beyond a scan
+   *  \a around (no hole between), within \a bandwidth of its plane's centroid along the plane (not beyond a scan
    *  border, on a plane extrapolated from one side) and the plane's normal agrees with the ray's. */
-  bool
-  accept (const Eigen::Vector3d& point, const pcl::Indices& indices, double bandwidth, const Eigen::Vector3d& direction,
-          const OrientedPlane& plane, double min_cos, Eigen::Vector3d& hit) const
+  static bool
+  accept (const Eigen::Vector3d& point, const Neighbourhood& around, double bandwidth, const Eigen::Vector3d& direction,
+          const OrientedPlane& plane, double min_cos, Eigen::Vector3d& hit)
   {
-    double nearest = std::numeric_limits<double>::infinity ();
-    for (const int index : indices)
-      nearest = std::min (nearest, (point - points_.col (index)).norm ());
+    const double nearest = std::sqrt ((around.points.colwise () - point).colwise ().squaredNorm ().minCoeff ());
     if (nearest > kSpacingFactor * bandwidth)
       return false;
     const Eigen::Vector3d off_centre = point - plane.centroid;
@@ -196,8 +218,9 @@ private:
   Eigen::Matrix3Xd points_;
   Eigen::Matrix3Xd normals_;
   int neighbours_;
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree_;
-  std::vector<double> spacing_;
+  std::vector<double> spacing_; ///< per point: the distance to its kSpacingNeighbour-th nearest other point
+  PointGrid grid_;
+  double usual_kth_; ///< mm: the median spacing's k-th neighbour distance, sqrt(k) / 2 spacings
 };
 } // namespace
 

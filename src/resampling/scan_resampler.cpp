@@ -2,6 +2,7 @@
 #include "scan_surface.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/resampling/scan_resampler.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -74,22 +76,13 @@ vertexAreas (const TriangleMesh& mesh)
   return areas;
 }
 
-double
-median (std::vector<double> values)
-{
-  if (values.empty ())
-    return 0.0;
-  const auto middle = values.begin () + static_cast<std::ptrdiff_t> (values.size () / 2);
-  std::nth_element (values.begin (), middle, values.end ());
-  return *middle;
-}
-
 /** Per triangle: its normal turned by more than 90 degrees from the reference's (or it became degenerate). */
 std::vector<char>
 foldedTriangles (const TriangleMesh& reference, const TriangleMesh& resampled)
 {
   const Eigen::Matrix3Xd before = faceNormals (reference), after = faceNormals (resampled);
   std::vector<char> folded (static_cast<std::size_t> (reference.numTriangles ()));
+#pragma omp parallel for schedule(static)
   for (Eigen::Index t = 0; t < reference.numTriangles (); ++t)
     folded[t] = before.col (t).dot (after.col (t)) <= 0.0 ? 1 : 0;
   return folded;
@@ -126,16 +119,19 @@ rejectInconsistentHits (const MeshTopology& topology, const Eigen::Matrix3Xd& of
 {
   const Eigen::VectorXd along = offsets.cwiseProduct (normals).colwise ().sum ().transpose ();
   std::vector<char> rejected (missed.size (), 0);
-  std::vector<double> around;
-  for (std::size_t v = 0; v < missed.size (); ++v) {
+  const auto count = static_cast<std::ptrdiff_t> (missed.size ());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t v = 0; v < count; ++v) {
     if (missed[v])
       continue;
+    thread_local std::vector<double> around;
     around.clear ();
     const auto [begin, end] = topology.neighbours (static_cast<int> (v));
     for (const int* n = begin; n != end; ++n)
       if (!missed[*n])
         around.push_back (along[*n]);
-    const bool isolated = 2 * static_cast<int> (around.size ()) < topology.valence (static_cast<int> (v));
+    const bool isolated =
+        around.empty () || 2 * static_cast<int> (around.size ()) < topology.valence (static_cast<int> (v));
     rejected[v] = isolated || std::abs (along[v] - median (around)) > jump ? 1 : 0;
   }
   for (std::size_t v = 0; v < missed.size (); ++v)
@@ -179,19 +175,33 @@ findHoles (const MeshTopology& topology, const Eigen::VectorXd& areas, const std
   return result;
 }
 
-/** Fills every hole (see detail::fillHole), recording its anchors. */
+/** Fills every hole (see detail::fillHole), recording its anchors; the holes are disjoint and read only observed
+ *  vertices, so they are filled on all cores, the largest first. */
 void
 fillHoles (const MeshTopology& topology, const Eigen::Matrix3Xd& reference, const std::vector<char>& missed, int rings,
            double lambda, Holes& holes, Eigen::Matrix3Xd& displacement)
 {
-  for (std::size_t h = 0; h < holes.holes.size (); ++h) {
-    const std::vector<int>& hole = holes.vertices[h];
+  const auto count = static_cast<std::ptrdiff_t> (holes.holes.size ());
+  std::vector<std::exception_ptr> failures (holes.holes.size ());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::ptrdiff_t h = 0; h < count; ++h) {
     try {
-      holes.holes[h].ring_vertices = detail::fillHole (topology, reference, hole, missed, rings, lambda, displacement);
+      holes.holes[h].ring_vertices =
+          detail::fillHole (topology, reference, holes.vertices[h], missed, rings, lambda, displacement);
+    }
+    catch (...) {
+      failures[h] = std::current_exception (); // nothing may leave an OpenMP loop
+    }
+  }
+  for (std::ptrdiff_t h = 0; h < count; ++h) {
+    if (!failures[h])
+      continue;
+    try {
+      std::rethrow_exception (failures[h]);
     }
     catch (const Error& e) {
-      throw InvalidInputError ("ScanResampler: the hole of " + std::to_string (hole.size ()) +
-                               " vertices around reference vertex " + std::to_string (hole.front ()) +
+      throw InvalidInputError ("ScanResampler: the hole of " + std::to_string (holes.vertices[h].size ()) +
+                               " vertices around reference vertex " + std::to_string (holes.vertices[h].front ()) +
                                " cannot be filled from the observed vertices around it: " + e.what ());
     }
   }
@@ -340,12 +350,15 @@ ScanResampler::castRays (const Eigen::Matrix3Xd& origins, const Eigen::Matrix3Xd
                          const std::vector<char>& cast) const
 {
   const double min_cos = std::cos (normal_agreement_deg_ * M_PI / 180.0);
-  const Eigen::Index n = origins.cols ();
+  std::vector<Eigen::Index> rays; // the vertices to cast from, listed so that the cores share them evenly
+  for (Eigen::Index v = 0; v < origins.cols (); ++v)
+    if (cast[v])
+      rays.push_back (v);
+  const auto count = static_cast<std::ptrdiff_t> (rays.size ());
   Eigen::Matrix3Xd hits = origins;
-#pragma omp parallel for schedule(dynamic, 256) if (surface_->threadSafe())
-  for (Eigen::Index v = 0; v < n; ++v) {
-    if (!cast[v])
-      continue;
+#pragma omp parallel for schedule(dynamic, 64) if (surface_->threadSafe())
+  for (std::ptrdiff_t r = 0; r < count; ++r) {
+    const Eigen::Index v = rays[r];
     Eigen::Vector3d hit;
     const bool found = normals.col (v).squaredNorm () > 0.0 &&
                        surface_->intersect (origins.col (v), normals.col (v), max_distance_, min_cos, hit);
@@ -430,7 +443,7 @@ ScanResampler::summarise (const std::vector<char>& missed, const Eigen::VectorXd
   stats.observed = static_cast<int> (moved.size ());
   stats.filled = stats.vertices - stats.observed;
   stats.coverage = static_cast<double> (stats.observed) / stats.vertices;
-  stats.median_displacement = median (moved);
+  stats.median_displacement = moved.empty () ? 0.0 : median (moved);
   stats.observed_area = observed_area / areas.sum ();
   countFolds (reference_, result.mesh, holes, stats);
   stats.largest_hole_area = holes.holes.empty () ? 0.0 : holes.holes.front ().area / areas.sum ();

@@ -112,3 +112,45 @@ TEST (MeshTopologyTest, PolygonMeshConversionRoundTrips)
   quads.polygons[0].vertices.push_back (4);
   EXPECT_THROW (morphreg::fromPolygonMesh (quads, "quads"), morphreg::InvalidInputError);
 }
+
+// Two closed tetrahedra joined at one vertex: every edge has two triangles, but the shared vertex's star is two
+// fans, not one disc, so the surface is not a closed manifold.
+TEST (MeshTopologyTest, TetrahedraSharingAVertexAreNotAManifold)
+{
+  TriangleMesh mesh;
+  mesh.vertices.resize (3, 7);
+  mesh.vertices << 0, 1, 0, 0, -1, 0, 0, //
+      0, 0, 1, 0, 0, -1, 0,              //
+      0, 0, 0, 1, 0, 0, -1;
+  mesh.triangles.resize (3, 8);
+  mesh.triangles << 0, 0, 0, 1, 0, 0, 0, 4, //
+      2, 3, 1, 2, 5, 6, 4, 5,               //
+      1, 2, 3, 3, 4, 5, 6, 6;
+  const MeshTopology topology (mesh);
+  EXPECT_EQ (topology.edges ().size (), 12u);
+  for (const auto& edge : topology.edges ())
+    EXPECT_EQ (edge.face_count, 2) << edge.a << "-" << edge.b;
+  EXPECT_FALSE (topology.isClosedManifold ());
+
+  TriangleMesh first = mesh; // one tetrahedron alone (vertex 4-6 unused would fail; keep 0-3)
+  first.vertices = mesh.vertices.leftCols (4);
+  first.triangles = mesh.triangles.leftCols (4);
+  EXPECT_TRUE (MeshTopology (first).isClosedManifold ());
+}
+
+// A triangle that uses a vertex twice: its edges are counted as they occur, and the surface is not a manifold.
+TEST (MeshTopologyTest, TriangleUsingAVertexTwice)
+{
+  TriangleMesh mesh;
+  mesh.vertices = Eigen::Matrix3Xd::Random (3, 3);
+  mesh.triangles.resize (3, 1);
+  mesh.triangles << 0, 0, 1;
+  const MeshTopology topology (mesh);
+  ASSERT_EQ (topology.edges ().size (), 2u);
+  EXPECT_EQ (topology.edges ()[0].a, 0);
+  EXPECT_EQ (topology.edges ()[0].b, 0);
+  EXPECT_EQ (topology.edges ()[0].face_count, 1);
+  EXPECT_EQ (topology.edges ()[1].b, 1);
+  EXPECT_EQ (topology.edges ()[1].face_count, 2);
+  EXPECT_FALSE (topology.isClosedManifold ());
+}

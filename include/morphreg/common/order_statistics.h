@@ -15,6 +15,13 @@ namespace morphreg
 double
 median (std::vector<double> values);
 
+/** \brief The median of \a values without copying them into a vector first (a column, an array's matrix view).
+ *  \param[in] values the sample
+ *  \return the median; InvalidInputError if \a values is empty
+ */
+double
+median (const Eigen::Ref<const Eigen::VectorXd>& values);
+
 /** \brief The \a fraction quantile of \a values, linearly interpolated between order statistics.
  *  \param[in] values the sample, not empty
  *  \param[in] fraction in [0, 1]: 0 the minimum, 0.5 the median, 1 the maximum
