@@ -2,7 +2,10 @@
 // 1.5 mm) resampled onto a ScanSimulator scan of about 80k points, as a point cloud (weighted local planes) and as its
 // triangulated range image (ray casting through Intel Embree); the search structures' build timed apart; and the same
 // ray queries (both directions from every reference vertex, first hit, one thread) through Embree and through VTK's
-// vtkOBBTree, vtkStaticCellLocator and vtkModifiedBSPTree.
+// vtkOBBTree, vtkStaticCellLocator and vtkModifiedBSPTree; and the point cloud's 24-nearest-neighbour queries through
+// the resampler's grid and through PCL's KdTreeFLANN.
+#include "resampling/point_grid.h"
+
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/resampling/scan_resampler.h>
@@ -17,6 +20,9 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
+
+#include <pcl/common/io.h>
+#include <pcl/kdtree/kdtree_flann.h>
 
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
@@ -249,6 +255,69 @@ BM_EmbreeRays (benchmark::State& state)
   state.counters["hits"] = hits;
 }
 BENCHMARK (BM_EmbreeRays)->Unit (benchmark::kMillisecond)->UseRealTime ();
+
+constexpr int kNeighbours = 24; ///< the resampler's default
+
+/** The scan cloud's points as 3 x N. */
+Eigen::Matrix3Xd
+scanPoints ()
+{
+  const auto& cloud = *fixture ().scan.cloud;
+  Eigen::Matrix3Xd points (3, cloud.size ());
+  for (std::size_t i = 0; i < cloud.size (); ++i)
+    points.col (static_cast<Eigen::Index> (i)) = cloud[i].getVector3fMap ().cast<double> ();
+  return points;
+}
+
+/** The grid cell the resampler picks: 0.25 sqrt(k) times the median distance of a point to its 4th nearest other. */
+double
+resamplerCellSize (const Eigen::Matrix3Xd& points)
+{
+  const morphreg::detail::PointGrid provisional (points, 2.0);
+  std::vector<int> indices;
+  std::vector<double> squared, spacing;
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    spacing.push_back (std::sqrt (provisional.nearestK (points.col (i), 5, HUGE_VAL, indices, squared)));
+  std::nth_element (spacing.begin (), spacing.begin () + spacing.size () / 2, spacing.end ());
+  return 0.25 * std::sqrt (double (kNeighbours)) * spacing[spacing.size () / 2];
+}
+
+/** The 24 nearest scan points to every reference vertex (one thread): the resampler's grid (0) or PCL's KdTreeFLANN
+ *  (1), the structures built outside the timing. */
+void
+BM_NeighbourSearch (benchmark::State& state)
+{
+  const Fixture& f = fixture ();
+  const Eigen::Matrix3Xd points = scanPoints ();
+  const double cell = resamplerCellSize (points);
+  const morphreg::detail::PointGrid grid (points, cell);
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  pcl::copyPointCloud (*f.scan.cloud, *cloud);
+  tree.setInputCloud (cloud);
+  std::vector<int> indices;
+  std::vector<double> squared;
+  std::vector<float> squared_float;
+  double sum = 0.0;
+  for (auto _ : state) {
+    sum = 0.0;
+    for (Eigen::Index v = 0; v < f.reference.numVertices (); ++v) {
+      const Eigen::Vector3d query = f.reference.vertices.col (v);
+      if (state.range (0) == 0)
+        sum += grid.nearestK (query, kNeighbours, std::numeric_limits<double>::infinity (), indices, squared);
+      else {
+        pcl::PointXYZ at;
+        at.getVector3fMap () = query.cast<float> ();
+        tree.nearestKSearch (at, kNeighbours, indices, squared_float);
+        sum += squared_float.back ();
+      }
+    }
+  }
+  sizeCounters (state);
+  state.counters["mean_kth_mm2"] = sum / static_cast<double> (f.reference.numVertices ());
+  state.counters["cell_mm"] = cell;
+}
+BENCHMARK (BM_NeighbourSearch)->ArgName ("flann")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
 } // namespace
 
 BENCHMARK_MAIN ();

@@ -12,7 +12,8 @@ namespace detail
 {
 /** Exact k nearest neighbours of queries near a fixed point set (a scan's surface), through a uniform grid: the
  *  cells around the query are read in growing cubes until the k-th nearest point lies within the cube. For the
- *  resampler's small k and near-surface queries it does a fraction of a k-d tree's work (bench_resampling). */
+ *  resampler's small k and near-surface queries it answers in two thirds of the time of PCL's KdTreeFLANN
+ *  (bench_resampling, BM_NeighbourSearch). */
 class PointGrid
 {
 public:
