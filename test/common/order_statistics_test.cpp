@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <vector>
+
 TEST (OrderStatisticsTest, PercentilesInterpolateBetweenOrderStatistics)
 {
   EXPECT_DOUBLE_EQ (morphreg::percentile ({3.0, 1.0, 2.0}, 0.5), 2.0);
@@ -15,6 +19,27 @@ TEST (OrderStatisticsTest, MedianTakesTheUpperMiddleValue)
 {
   EXPECT_DOUBLE_EQ (morphreg::median ({5.0, 1.0, 3.0}), 3.0);
   EXPECT_DOUBLE_EQ (morphreg::median ({4.0, 1.0, 2.0, 3.0}), 3.0);
+}
+
+// Small samples are ranked by counting, larger ones selected: both give the sorted sample's upper middle value, with
+// ties, for vectors and for Eigen vectors.
+TEST (OrderStatisticsTest, MedianOfSmallAndLargeSamplesWithTies)
+{
+  std::mt19937 rng (3);
+  std::uniform_int_distribution<int> value (0, 9); // many ties
+  for (int size = 1; size <= 100; ++size) {
+    std::vector<double> sample (static_cast<std::size_t> (size));
+    for (double& v : sample)
+      v = value (rng);
+    std::vector<double> sorted = sample;
+    std::sort (sorted.begin (), sorted.end ());
+    const double expected = sorted[sorted.size () / 2];
+    EXPECT_DOUBLE_EQ (morphreg::median (sample), expected) << size << " values";
+    const Eigen::VectorXd column = Eigen::Map<const Eigen::VectorXd> (sample.data (), size);
+    EXPECT_DOUBLE_EQ (morphreg::median (column), expected) << size << " values";
+    EXPECT_DOUBLE_EQ (morphreg::median ((2.0 * column.array ()).matrix ()), 2.0 * expected) << size << " values";
+  }
+  EXPECT_THROW (morphreg::median (Eigen::VectorXd ()), morphreg::InvalidInputError);
 }
 
 TEST (OrderStatisticsTest, TrimmedStatisticsKeepTheSmallestShare)
