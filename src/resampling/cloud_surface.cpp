@@ -1,6 +1,7 @@
 // A point cloud scan as ScanResampler's surface: the ray meets the Gaussian-weighted plane of the scan points nearest
-// to it (a point set surface, as in Adamson and Alexa 2003). Measured against triangulating the same scans first (bench/RESULTS.md, "Scan resampling"), the local planes
-// need no triangulation step and average the range noise over k points where a mesh's triangles keep it.
+// to it (a point set surface, as in Adamson and Alexa 2003), found through a grid of the points (point_grid.h).
+// Measured against triangulating the same scans first (bench/RESULTS.md, "Scan resampling"), the local planes need no
+// triangulation step and average the range noise over k points where a mesh's triangles keep it.
 #include "point_grid.h"
 #include "scan_surface.h"
 

@@ -1,6 +1,6 @@
 #pragma once
-// Private to the library: the scan's surface as ScanResampler's rays see it, a triangle mesh (Intel Embree's ray tracing)
-// or a point cloud (Gaussian-weighted local planes over a grid of its points).
+// Private to the library: the scan's surface as ScanResampler's rays see it, a triangle mesh (Intel Embree's ray
+// tracing) or a point cloud (Gaussian-weighted local planes over a grid of its points).
 #include <morphreg/mesh/triangle_mesh.h>
 
 #include <Eigen/Core>
