@@ -12,8 +12,9 @@ namespace detail
 {
 namespace
 {
-constexpr double kMaxCells = 4.0e6; ///< the grid's cell count stays below this (16 MB of cell offsets)
-constexpr double kFarCells = 1.0e6; ///< cell coordinates are clamped to +-this before conversion to int
+constexpr double kMaxCells = 4.0e6;  ///< the grid's cell count stays below this (16 MB of cell offsets)
+constexpr double kFarCells = 1.0e6;  ///< cell coordinates are clamped to +-this before conversion to int
+constexpr double kStrayShare = 1e-3; ///< per axis, this share of the points at either end may lie beyond the grid
 
 /** A candidate as one integer that sorts by distance: the squared distance's float bits (non-negative floats order
  *  as their bit patterns) above the point's position in the grid's order. */
@@ -40,11 +41,28 @@ cellCounts (const Eigen::Vector3d& extent, double cell)
 {
   return (extent.array () / cell).floor () + 1.0;
 }
+
+/** The value below which a \a fraction of \a values lie (the smallest for fraction 0). */
+double
+quantile (const Eigen::RowVectorXd& values, double fraction)
+{
+  std::vector<double> sorted (values.data (), values.data () + values.size ());
+  const auto at = static_cast<std::ptrdiff_t> (fraction * static_cast<double> (sorted.size () - 1));
+  std::nth_element (sorted.begin (), sorted.begin () + at, sorted.end ());
+  return sorted[static_cast<std::size_t> (at)];
+}
 } // namespace
 
 PointGrid::PointGrid (const Eigen::Matrix3Xd& points, double cell_size)
 {
-  const Eigen::Vector3d low = points.rowwise ().minCoeff (), extent = points.rowwise ().maxCoeff () - low;
+  // The grid spans the points but their outermost thousandth per axis: far strays (a laser's hit on a wall) would
+  // stretch the cells over the whole scan. The strays fall into the border cells, which reach out without limit.
+  Eigen::Vector3d low, high;
+  for (int a = 0; a < 3; ++a) {
+    low[a] = quantile (points.row (a), kStrayShare);
+    high[a] = quantile (points.row (a), 1.0 - kStrayShare);
+  }
+  const Eigen::Vector3d extent = high - low;
   cell_size_ = cell_size > 0.0 && std::isfinite (cell_size) ? cell_size : std::max (extent.maxCoeff (), 1.0) / 64.0;
   for (Eigen::Array3d counts = cellCounts (extent, cell_size_); counts.prod () > kMaxCells;
        counts = cellCounts (extent, cell_size_))

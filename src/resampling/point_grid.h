@@ -18,9 +18,17 @@ class PointGrid
 {
 public:
   /** Grids the columns of \a points (3 x N, finite, N > 0) in cubic cells of \a cell_size mm, enlarged as needed to
-   *  keep the grid within a few million cells. A query reads the cells within two cell sizes of it first: half the
-   *  usual k-th neighbour distance is a good cell size. */
+   *  keep the grid within a few million cells. The grid spans all but the outermost thousandth of the points per
+   *  axis, so that a few far strays do not stretch its cells; they fall into the border cells. A query reads the
+   *  cells within two cell sizes of it first: half the usual k-th neighbour distance is a good cell size. */
   PointGrid (const Eigen::Matrix3Xd& points, double cell_size);
+
+  /** The cells' size (mm): the one asked for unless the grid would have had too many cells. */
+  double
+  cellSize () const
+  {
+    return cell_size_;
+  }
 
   /** The \a k nearest points to \a query (k <= the number of points), in no particular order: their column indices
    *  and squared distances; returns the largest of those squared distances. If fewer than k points lie within

@@ -102,19 +102,25 @@ TEST (PointGridTest, NothingBeyondTheSearchRadius)
   expectNearest (points, centre, 24, indices);
 }
 
-TEST (PointGridTest, FarOutliersStretchingTheGridKeepItExact)
+TEST (PointGridTest, FarStraysKeepTheCellsSmallAndTheSearchExact)
 {
   std::mt19937 rng (10);
   Eigen::Matrix3Xd points = noisySphere (3000, rng);
   points.col (0) = Eigen::Vector3d (1e7, -1e7, 1e7); // a grid of 0.5 mm cells over this would be 10^30 cells
   points.col (1) = Eigen::Vector3d (-1e7, 1e7, -1e7);
   const PointGrid grid (points, 0.5);
+  const double sphere_cell = PointGrid (points.rightCols (2998), 0.5).cellSize (); // 0.5 mm would be too many cells
+  EXPECT_NEAR (grid.cellSize (), sphere_cell, 0.01 * sphere_cell) << "two strays do not stretch the cells";
   std::vector<int> indices;
   std::vector<double> squared;
-  for (const Eigen::Vector3d& query : {Eigen::Vector3d (100, 0, 0), Eigen::Vector3d (1e7, -1e7, 1e7)}) {
+  for (const Eigen::Vector3d& query : {Eigen::Vector3d (100, 0, 0), Eigen::Vector3d (1e7, -1e7, 1e7),
+                                       Eigen::Vector3d (-2e7, 5e6, 0), Eigen::Vector3d (0, 0, 101)}) {
     grid.nearestK (query, 8, std::numeric_limits<double>::infinity (), indices, squared);
     expectNearest (points, query, 8, indices);
   }
+  Eigen::Matrix3Xd spread = noisySphere (3000, rng); // a tenth of the points far out: the grid spans them all
+  spread.rightCols (300) *= 100.0;
+  EXPECT_GT (PointGrid (spread, 0.5).cellSize (), 10.0 * sphere_cell);
 }
 
 TEST (PointGridTest, DegenerateClouds)

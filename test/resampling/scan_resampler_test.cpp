@@ -137,6 +137,19 @@ TEST (ScanResamplerTest, SimulatedLaserScanIsResampledCloseToTheTruth)
   const morphreg::ResamplingResult unoriented = resampler.resample ();
   EXPECT_NEAR (unoriented.statistics.coverage, result.statistics.coverage, 0.01);
 
+  // A few strays metres away (a laser's hits on the room) leave the result as it was.
+  pcl::PointCloud<pcl::PointNormal> with_strays = *scan.cloud;
+  for (const float far : {5000.0f, -8000.0f, 12000.0f}) {
+    pcl::PointNormal stray;
+    stray.getVector3fMap () = Eigen::Vector3f (far, 0.5f * far, -far);
+    stray.getNormalVector3fMap () = Eigen::Vector3f::UnitZ ();
+    with_strays.push_back (stray);
+  }
+  resampler.setInputScan (with_strays);
+  const morphreg::ResamplingResult strays = resampler.resample ();
+  EXPECT_EQ (strays.statistics.observed, result.statistics.observed);
+  EXPECT_TRUE (strays.mesh.vertices.isApprox (result.mesh.vertices, 1e-9));
+
   // One pass observes less: the later passes cast again from the fills, closer to the scan than the reference.
   resampler.setInputScan (*scan.cloud);
   resampler.setPasses (1);
