@@ -4,6 +4,7 @@
 // ray queries (both directions from every reference vertex, first hit, one thread) through Embree and through VTK's
 // vtkOBBTree, vtkStaticCellLocator and vtkModifiedBSPTree; and the point cloud's 24-nearest-neighbour queries through
 // the resampler's grid and through PCL's KdTreeFLANN.
+#include "resampling/embree_scene.h"
 #include "resampling/point_grid.h"
 
 #include <morphreg/mesh/mesh_normals.h>
@@ -25,7 +26,6 @@
 #include <pcl/kdtree/kdtree_flann.h>
 
 #include <benchmark/benchmark.h>
-#include <embree3/rtcore.h>
 
 #include <cmath>
 #include <limits>
@@ -98,7 +98,7 @@ sizeCounters (benchmark::State& state)
   state.counters["scan_triangles"] = static_cast<double> (f.scan_mesh.numTriangles ());
 }
 
-/** Building the resampler's search structure: the cloud's k-d tree and spacings (0) or the mesh's cell locator (1). */
+/** Building the resampler's search structure: the cloud's spacings and grid (0) or the mesh's Embree scene (1). */
 void
 BM_ResamplerSetScan (benchmark::State& state)
 {
@@ -193,35 +193,13 @@ BM_VtkLocatorRays (benchmark::State& state)
   state.counters["hits"] = hits;
 }
 BENCHMARK (BM_VtkLocatorRays)->ArgName ("locator")->DenseRange (0, 2)->Unit (benchmark::kMillisecond)->UseRealTime ();
-/** An Embree device and scene over the scan mesh, built as the resampler builds its own. */
-struct EmbreeScene
-{
-  std::unique_ptr<RTCDeviceTy, decltype (&rtcReleaseDevice)> device{rtcNewDevice ("verbose=0"), &rtcReleaseDevice};
-  std::unique_ptr<RTCSceneTy, decltype (&rtcReleaseScene)> scene{rtcNewScene (device.get ()), &rtcReleaseScene};
 
-  explicit EmbreeScene (const morphreg::TriangleMesh& mesh)
-  {
-    rtcSetSceneFlags (scene.get (), RTC_SCENE_FLAG_ROBUST);
-    RTCGeometry geometry = rtcNewGeometry (device.get (), RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*> (rtcSetNewGeometryBuffer (
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof (float), mesh.numVertices ()));
-    auto* indices = static_cast<unsigned*> (rtcSetNewGeometryBuffer (
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof (unsigned), mesh.numTriangles ()));
-    Eigen::Map<Eigen::Matrix3Xf> (vertices, 3, mesh.numVertices ()) = mesh.vertices.cast<float> ();
-    Eigen::Map<Eigen::Matrix<unsigned, 3, Eigen::Dynamic>> (indices, 3, mesh.numTriangles ()) =
-        mesh.triangles.cast<unsigned> ();
-    rtcCommitGeometry (geometry);
-    rtcAttachGeometry (scene.get (), geometry);
-    rtcReleaseGeometry (geometry);
-    rtcCommitScene (scene.get ());
-  }
-};
-
+/** The resampler's Embree scene over the scan mesh. */
 void
 BM_EmbreeBuild (benchmark::State& state)
 {
   for (auto _ : state)
-    benchmark::DoNotOptimize (EmbreeScene (fixture ().scan_mesh).scene.get ());
+    benchmark::DoNotOptimize (morphreg::detail::EmbreeScene (fixture ().scan_mesh).scene ());
   sizeCounters (state);
 }
 BENCHMARK (BM_EmbreeBuild)->Unit (benchmark::kMillisecond)->UseRealTime ();
@@ -231,23 +209,17 @@ void
 BM_EmbreeRays (benchmark::State& state)
 {
   const Fixture& f = fixture ();
-  const EmbreeScene embree (f.scan_mesh);
+  const morphreg::detail::EmbreeScene embree (f.scan_mesh);
   RTCIntersectContext context;
   rtcInitIntersectContext (&context);
   int hits = 0;
   for (auto _ : state) {
     hits = 0;
     for (Eigen::Index v = 0; v < f.reference.numVertices (); ++v)
-      for (const float sign : {1.0f, -1.0f}) {
-        RTCRayHit query{};
-        const Eigen::Vector3f from = f.reference.vertices.col (v).cast<float> ();
-        const Eigen::Vector3f ray = sign * f.normals.col (v).cast<float> ();
-        query.ray.org_x = from.x (), query.ray.org_y = from.y (), query.ray.org_z = from.z ();
-        query.ray.dir_x = ray.x (), query.ray.dir_y = ray.y (), query.ray.dir_z = ray.z ();
-        query.ray.tfar = static_cast<float> (kReach);
-        query.ray.mask = std::numeric_limits<unsigned>::max ();
-        query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1 (embree.scene.get (), &context, &query);
+      for (const double sign : {1.0, -1.0}) {
+        RTCRayHit query = morphreg::detail::EmbreeScene::query (f.reference.vertices.col (v), sign * f.normals.col (v),
+                                                                0.0f, static_cast<float> (kReach));
+        rtcIntersect1 (embree.scene (), &context, &query);
         hits += query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
       }
   }
