@@ -6,6 +6,7 @@
 // the resampler's grid and through PCL's KdTreeFLANN.
 #include "resampling/embree_scene.h"
 #include "resampling/point_grid.h"
+#include "resampling/scan_surface.h"
 
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
@@ -241,19 +242,6 @@ scanPoints ()
   return points;
 }
 
-/** The grid cell the resampler picks: 0.25 sqrt(k) times the median distance of a point to its 4th nearest other. */
-double
-resamplerCellSize (const Eigen::Matrix3Xd& points)
-{
-  const morphreg::detail::PointGrid provisional (points, 2.0);
-  std::vector<int> indices;
-  std::vector<double> squared, spacing;
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    spacing.push_back (std::sqrt (provisional.nearestK (points.col (i), 5, HUGE_VAL, indices, squared)));
-  std::nth_element (spacing.begin (), spacing.begin () + spacing.size () / 2, spacing.end ());
-  return 0.25 * std::sqrt (double (kNeighbours)) * spacing[spacing.size () / 2];
-}
-
 /** The 24 nearest scan points to every reference vertex (one thread): the resampler's grid (0) or PCL's KdTreeFLANN
  *  (1), the structures built outside the timing. */
 void
@@ -261,7 +249,7 @@ BM_NeighbourSearch (benchmark::State& state)
 {
   const Fixture& f = fixture ();
   const Eigen::Matrix3Xd points = scanPoints ();
-  const double cell = resamplerCellSize (points);
+  const double cell = 0.5 * morphreg::detail::usualKthDistance (morphreg::detail::localSpacings (points), kNeighbours);
   const morphreg::detail::PointGrid grid (points, cell);
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();

@@ -33,31 +33,8 @@ constexpr double kTrimFloor = 1e-3;        ///< mm, so exactly planar neighbourh
 constexpr double kMinNormalLength = 0.5;   ///< the weighted mean of the given normals is kept if at least this long
 constexpr double kCoveredBandwidths = 2.0; ///< neighbours are searched again when farther ones could weigh more than
                                            ///< exp(-4) of the nearest
-constexpr double kCellPerNeighbour = 0.25; ///< grid cells of this times sqrt(k) local spacings: half the k-th
-                                           ///< neighbour's usual distance (sqrt(k) / 2 spacings)
 constexpr double kSparsest = 4.0;          ///< rays search up to this many usual k-th neighbour distances beyond their
                                            ///< reach: a scan 4 times sparser than its median still has hits
-
-/** Per point: the distance to its kSpacingNeighbour-th nearest other point (a k-d tree's search, both cores). */
-std::vector<double>
-localSpacings (const Eigen::Matrix3Xd& points)
-{
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  cloud->resize (points.cols ());
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud (cloud);
-  std::vector<double> spacing (points.cols ());
-#pragma omp parallel for schedule(static)
-  for (Eigen::Index i = 0; i < points.cols (); ++i) {
-    pcl::Indices indices;
-    std::vector<float> distances;
-    const int found = tree.nearestKSearch ((*cloud)[i], kSpacingNeighbour + 1, indices, distances);
-    spacing[i] = std::sqrt (distances[found - 1]);
-  }
-  return spacing;
-}
 
 /** A plane through a weighted centroid; its normal's sign is known when it came from the scan's normals. */
 struct OrientedPlane
@@ -82,9 +59,8 @@ class CloudSurface : public ScanSurface
 public:
   CloudSurface (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, int neighbours)
     : points_ (std::move (points)), normals_ (std::move (normals)), neighbours_ (neighbours),
-      spacing_ (localSpacings (points_)),
-      grid_ (points_, kCellPerNeighbour * std::sqrt (double (neighbours)) * median (spacing_)),
-      usual_kth_ (0.5 * std::sqrt (double (neighbours)) * median (spacing_))
+      spacing_ (localSpacings (points_)), usual_kth_ (usualKthDistance (spacing_, neighbours)),
+      grid_ (points_, 0.5 * usual_kth_)
   {}
 
   /** Newton's iteration on the smooth surface the Gaussian-weighted local planes define (a point set surface): the
@@ -220,10 +196,37 @@ private:
   Eigen::Matrix3Xd normals_;
   int neighbours_;
   std::vector<double> spacing_; ///< per point: the distance to its kSpacingNeighbour-th nearest other point
+  double usual_kth_;            ///< mm: the median spacing's k-th neighbour distance, sqrt(k) / 2 spacings
   PointGrid grid_;
-  double usual_kth_; ///< mm: the median spacing's k-th neighbour distance, sqrt(k) / 2 spacings
 };
 } // namespace
+
+// The spacings come from a k-d tree, searched on both cores.
+std::vector<double>
+localSpacings (const Eigen::Matrix3Xd& points)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  cloud->resize (points.cols ());
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    (*cloud)[i].getVector3fMap () = points.col (i).cast<float> ();
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud (cloud);
+  std::vector<double> spacing (points.cols ());
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index i = 0; i < points.cols (); ++i) {
+    pcl::Indices indices;
+    std::vector<float> distances;
+    const int found = tree.nearestKSearch ((*cloud)[i], kSpacingNeighbour + 1, indices, distances);
+    spacing[i] = std::sqrt (distances[found - 1]);
+  }
+  return spacing;
+}
+
+double
+usualKthDistance (const std::vector<double>& spacings, int neighbours)
+{
+  return 0.5 * std::sqrt (double (neighbours)) * median (spacings);
+}
 
 std::unique_ptr<ScanSurface>
 makeCloudSurface (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, int neighbours)

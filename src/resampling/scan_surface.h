@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <vector>
 
 namespace morphreg
 {
@@ -41,5 +42,14 @@ makeMeshSurface (const TriangleMesh& scan);
  *  \a neighbours nearest points stands for the surface. */
 std::unique_ptr<ScanSurface>
 makeCloudSurface (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, int neighbours);
+
+/** Per point of a cloud (3 x N): its local spacing, the distance to its 4th nearest other point. */
+std::vector<double>
+localSpacings (const Eigen::Matrix3Xd& points);
+
+/** Where the spacing is the median of \a spacings, the usual distance of a point's \a neighbours-th nearest
+ *  neighbour: sqrt(k) / 2 spacings. The cloud surface searches through a grid of cells half this size. */
+double
+usualKthDistance (const std::vector<double>& spacings, int neighbours);
 } // namespace detail
 } // namespace morphreg
