@@ -369,6 +369,11 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
                     "weight of the shape prior (coefficients in prior standard deviations)")
       ->check (nonNegative ())
       ->capture_default_str ();
+  command
+      ->add_option ("--refinement-prior", options.refinement_prior,
+                    "refine over all --components at this shape prior, after a first phase over at most 10 per "
+                    "region at --shape-prior (e.g. 0.5 with many components: fits that follow the scan closely)")
+      ->check (nonNegative ());
   command->add_option ("--landmark-weight", options.landmark_weight, "one landmark counts as this many correspondences")
       ->check (nonNegative ())
       ->capture_default_str ();

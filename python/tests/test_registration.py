@@ -30,6 +30,15 @@ def test_fit_recovers_the_unseen_head(fit, scan, truth):
     assert fit.residuals.shape == (3458,)
 
 
+def test_refinement_prior_fits_all_components_closer(fit, model, scan, truth):
+    refined = morphreg.register(model, scan.points, scan.normals, components=10, refinement_prior=0.2)
+    assert refined.report["settings"]["refinement_prior_weight"] == 0.2
+    assert fit.report["settings"]["refinement_prior_weight"] is None
+    def rms(result):
+        return np.sqrt(np.mean(np.linalg.norm(result.vertices - scan_frame(scan, truth.vertices), axis=1) ** 2))
+    assert rms(refined) < 0.9 * rms(fit)
+
+
 def test_result_parts_agree(fit, model):
     similarity = fit.similarity
     assert np.allclose(similarity[:3, :3], fit.scale * fit.rotation)
@@ -152,6 +161,7 @@ def test_mismatched_normals(model, scan):
     ({"iterations": 0}, "iterations = 0 is out of range"),
     ({"tangential_weight": 2.0}, "tangential_weight = 2 is out of range"),
     ({"shape_prior": float("nan")}, "shape_prior = nan is out of range"),
+    ({"refinement_prior": -1.0}, "refinement_prior = -1 is out of range"),
     ({"units": "furlong"}, "furlong"),
     ({"components": "ten"}, "components: expected an int"),
     ({"components": [5, 5]}, "components has 2 counts for a model with 7 regions"),

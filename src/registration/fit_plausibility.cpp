@@ -5,7 +5,9 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace morphreg
 {
@@ -60,6 +62,20 @@ checkFitPlausibility (double scale, const Eigen::Matrix3Xd& fitted_vertices, con
   if (report.divergence == IcpDivergence::prior_exceeded || report.divergence == IcpDivergence::unsolvable)
     fail ("the fit diverged: " + report.message);
   return result;
+}
+
+Eigen::VectorXd
+leadingCoefficientsInSigma (const MorphableModel& model, const ComponentSelection& selection,
+                            const Eigen::VectorXd& coefficients, int leading)
+{
+  const Eigen::VectorXd sigma = model.variances (selection).cwiseSqrt ();
+  std::vector<double> kept;
+  for (int region = 0; region < selection.numRegions (); ++region)
+    for (int k = 0; k < std::min (selection.count (region), leading); ++k) {
+      const int index = selection.offset (region) + k;
+      kept.push_back (coefficients[index] / std::max (sigma[index], 1e-12));
+    }
+  return Eigen::Map<const Eigen::VectorXd> (kept.data (), static_cast<Eigen::Index> (kept.size ()));
 }
 
 } // namespace morphreg

@@ -53,11 +53,12 @@ residualsJson (const IcpReport& report, const Eigen::VectorXd& vertex_residuals)
 FitPlausibility
 checkRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
 {
-  const Eigen::VectorXd sigma = model.variances (icp.getComponentSelection ()).cwiseSqrt ();
-  const Eigen::VectorXd in_sigma = icp.getShapeCoefficients ().cwiseQuotient (sigma.cwiseMax (1e-12));
+  const FitPlausibilitySettings settings;
+  const Eigen::VectorXd leading = leadingCoefficientsInSigma (model, icp.getComponentSelection (),
+                                                              icp.getShapeCoefficients (), settings.leading_components);
   const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
   return checkFitPlausibility (std::cbrt (linear.determinant ()), icp.getFittedVertices (), icp.getVertexResiduals (),
-                               in_sigma, icp.getRegistrationReport ());
+                               leading, icp.getRegistrationReport (), settings);
 }
 
 nlohmann::json

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -56,6 +57,19 @@ requireValidComponents (const std::vector<int>& components)
       throw InvalidInputError ("registration setting components has a negative count (" + std::to_string (count) + ")");
 }
 
+/** Two shape phases: over at most kCoarseComponents per region at \a prior (and \a icp's first-phase lambda_1)
+ *  while the correspondences settle, then over all \a counts at \a refinement_prior and kRefinementSmoothness. */
+std::vector<ShapePhase>
+coarseToFine (const MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model, const std::vector<int>& counts,
+              double prior, double refinement_prior)
+{
+  std::vector<int> coarse = counts;
+  for (int& count : coarse)
+    count = std::min (count, kCoarseComponents);
+  return {{model.firstComponents (coarse), icp.getSmoothnessWeight (), prior},
+          {model.firstComponents (counts), kRefinementSmoothness, refinement_prior}};
+}
+
 /** The rejectors \a settings turn on, after the target-boundary rejector (a chain replaces MorphableICP's default
  *  one, which is that rejector alone, so it stays first). */
 void
@@ -91,6 +105,8 @@ requireValidSettings (const RegistrationSettings& settings)
   requireValidComponents (settings.components);
   requireInRange (settings.tangential_weight, 0.0, 1.0, "tangential_weight");
   requireInRange (settings.shape_prior, 0.0, HUGE_VAL, "shape_prior");
+  if (settings.refinement_prior)
+    requireInRange (*settings.refinement_prior, 0.0, HUGE_VAL, "refinement_prior");
   requireInRange (settings.landmark_weight, 0.0, HUGE_VAL, "landmark_weight");
   parseRobustLoss (settings.loss);
   requireInRange (settings.loss_scale, 0.0, HUGE_VAL, "loss_scale");
@@ -112,8 +128,11 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
     throw InvalidInputError ("registration setting components has " + std::to_string (counts.size ()) +
                              " counts for a model with " + std::to_string (model->numRegions ()) +
                              " regions: give one count for all regions, or one per region");
-  icp.setComponentSelection (counts.size () == 1 ? model->firstComponents (counts.front ())
-                                                 : model->firstComponents (counts));
+  const std::vector<int> per_region =
+      counts.size () == 1 ? std::vector<int> (model->numRegions (), counts.front ()) : counts;
+  icp.setComponentSelection (model->firstComponents (per_region));
+  if (settings.refinement_prior)
+    icp.setShapeSchedule (coarseToFine (icp, *model, per_region, settings.shape_prior, *settings.refinement_prior));
   icp.setMaximumIterations (settings.iterations);
   icp.setSimilarityIterations (settings.similarity_iterations);
   if (settings.max_distance > 0.0)
@@ -130,23 +149,25 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
 nlohmann::json
 toJson (const RegistrationSettings& settings)
 {
-  return {{"iterations", settings.iterations},
-          {"similarity_iterations", settings.similarity_iterations},
-          {"max_correspondence_distance_mm", settings.max_distance},
-          {"components", settings.components},
-          {"point_to_plane", settings.point_to_plane},
-          {"tangential_weight", settings.tangential_weight},
-          {"shape_prior_weight", settings.shape_prior},
-          {"area_weighting", settings.area_weighting},
-          {"landmark_weight", settings.landmark_weight},
-          {"robust_loss", settings.loss},
-          {"robust_scale_mm", settings.loss_scale},
-          {"reject_distance_mm", settings.reject_distance},
-          {"reject_median_factor", settings.reject_median},
-          {"reject_one_to_one", settings.reject_one_to_one},
-          {"reject_trimmed_ratio", settings.reject_trimmed},
-          {"units", settings.units},
-          {"target_smoothing", settings.target_smoothing}};
+  return {
+      {"iterations", settings.iterations},
+      {"similarity_iterations", settings.similarity_iterations},
+      {"max_correspondence_distance_mm", settings.max_distance},
+      {"components", settings.components},
+      {"point_to_plane", settings.point_to_plane},
+      {"tangential_weight", settings.tangential_weight},
+      {"shape_prior_weight", settings.shape_prior},
+      {"refinement_prior_weight", settings.refinement_prior ? nlohmann::json (*settings.refinement_prior) : nullptr},
+      {"area_weighting", settings.area_weighting},
+      {"landmark_weight", settings.landmark_weight},
+      {"robust_loss", settings.loss},
+      {"robust_scale_mm", settings.loss_scale},
+      {"reject_distance_mm", settings.reject_distance},
+      {"reject_median_factor", settings.reject_median},
+      {"reject_one_to_one", settings.reject_one_to_one},
+      {"reject_trimmed_ratio", settings.reject_trimmed},
+      {"units", settings.units},
+      {"target_smoothing", settings.target_smoothing}};
 }
 
 } // namespace morphreg

@@ -7,6 +7,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/model/model_builder.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/synthetic/head_generator.h>
 
 #include <pcl/registration/correspondence_rejection_distance.h>
@@ -202,6 +203,60 @@ TEST_F (MorphableIcpTest, CoarseToFineScheduleFitsAndIsValidated)
   EXPECT_THROW (icp.align (output), morphreg::InvalidInputError);
   EXPECT_THROW (icp.setShapeSchedule ({{selection, -1.0}}), morphreg::InvalidInputError);
   EXPECT_THROW (icp.setRefinementSmoothnessWeight (std::nan ("")), morphreg::InvalidInputError);
+}
+
+TEST_F (MorphableIcpTest, PhasePriorWeightReplacesTheRegistrationsAndIsValidated)
+{
+  const MorphableModel& model = **model_;
+  const morphreg::ComponentSelection selection = model.firstComponents (10);
+  const auto scan = withinModelScan (model, selection, 17, 600);
+  // The same fit with the last phase's lambda_2 set weak, then huge: the huge one pulls the coefficients to the mean.
+  std::map<double, double> coefficient_norm, rms;
+  for (const double last_prior : {0.5, 1e6}) {
+    Icp icp = makeIcp ();
+    icp.setComponentSelection (selection);
+    icp.setTargetLandmarks (scan.landmarks);
+    icp.setShapeSchedule ({{model.firstComponents (5), 0.1, 3.0}, {selection, 0.1, last_prior}});
+    rms[last_prior] = fit (icp, scan);
+    coefficient_norm[last_prior] = icp.getShapeCoefficients ().norm ();
+    std::printf ("[ phase prior ] last phase lambda_2 %g: RMS %.3f mm, |m| %.2f mm\n", last_prior, rms[last_prior],
+                 coefficient_norm[last_prior]);
+  }
+  EXPECT_LE (rms[0.5], 1.0);
+  EXPECT_LT (coefficient_norm[1e6], 0.1 * coefficient_norm[0.5]) << "the last phase's own lambda_2 applies";
+  EXPECT_GT (rms[1e6], 2.0 * rms[0.5]);
+
+  Icp icp = makeIcp ();
+  try {
+    icp.setShapeSchedule ({{selection, 0.1, 3.0}, {selection, 0.1, -1.0}});
+    ADD_FAILURE () << "a negative lambda_2 was accepted";
+  }
+  catch (const morphreg::InvalidInputError& e) {
+    EXPECT_NE (std::string (e.what ()).find ("lambda_2 of phase 1"), std::string::npos) << e.what ();
+  }
+}
+
+TEST_F (MorphableIcpTest, PlausibilityHoldsLeadingComponentsToTheSigmaLimit)
+{
+  // A coefficient 7 sigma out along the nose's 15th component passes the sigma check, along its 2nd it does not.
+  const MorphableModel& model = **model_;
+  const morphreg::ComponentSelection selection = model.firstComponents (20);
+  const int leading = morphreg::FitPlausibilitySettings ().leading_components, nose = 1;
+  for (const int component : {14, 1}) {
+    Eigen::VectorXd coefficients = Eigen::VectorXd::Zero (selection.total ());
+    const int index = selection.offset (nose) + component;
+    coefficients[index] = 7.0 * std::sqrt (model.variances (selection)[index]);
+    const Eigen::VectorXd kept = morphreg::leadingCoefficientsInSigma (model, selection, coefficients, leading);
+    ASSERT_EQ (kept.size (), model.numRegions () * leading);
+    EXPECT_NEAR (kept.cwiseAbs ().maxCoeff (), component < leading ? 7.0 : 0.0, 1e-9) << component;
+    if (component < leading) {
+      EXPECT_NEAR (kept[nose * leading + component], 7.0, 1e-9) << "stacked region by region";
+    }
+    const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
+    const morphreg::FitPlausibility verdict = morphreg::checkFitPlausibility (
+        1.0, mean, Eigen::VectorXd::Zero (model.numVertices ()), kept, morphreg::IcpReport ());
+    EXPECT_EQ (verdict.plausible, component >= leading) << component;
+  }
 }
 
 TEST_F (MorphableIcpTest, IterationBudgetEndingBeforeAPhaseLeavesAConsistentFit)

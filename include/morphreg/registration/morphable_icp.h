@@ -24,11 +24,15 @@
 
 namespace morphreg
 {
-/** \brief One phase of the shape stage: the components fitted and the smoothness weight lambda_1 used. */
+/** \brief One phase of the shape stage: the components fitted and the weights lambda_1 (smoothness) and lambda_2
+ *  (shape regulariser) used. */
 struct ShapePhase
 {
   ComponentSelection components;  ///< per region at most the counts of MorphableICP::getComponentSelection()
   double smoothness_weight = 1.0; ///< lambda_1 of this phase (>= 0)
+  /** lambda_2 of this phase (>= 0); unset: MorphableICP::setShapePriorWeight's. A strong prior while the
+   *  correspondences settle and a weak one once they have lets many components fit a scan's detail. */
+  std::optional<double> prior_weight = std::nullopt;
 };
 
 /** \brief Where the iterations start when align() is given the identity guess. */
@@ -163,6 +167,24 @@ public:
    */
   void
   setRefinementSmoothnessWeight (double lambda1);
+
+  /** \brief lambda_1 of the default schedule's first phase.
+   *  \return the weight of setSmoothnessWeight
+   */
+  double
+  getSmoothnessWeight () const
+  {
+    return lambda1_;
+  }
+
+  /** \brief lambda_1 of the default schedule's refinement phase.
+   *  \return the weight of setRefinementSmoothnessWeight
+   */
+  double
+  getRefinementSmoothnessWeight () const
+  {
+    return refinement_lambda1_;
+  }
 
   /** \brief Runs the shape stage as these phases in order, each to convergence (coarse-to-fine components,
    *  changing lambda_1); coefficients carry over between phases. Every phase's components must fit within
@@ -421,7 +443,7 @@ private:
   struct Phase
   {
     bool shape = false;
-    ShapePhase settings; ///< the shape phase's components and lambda_1
+    ShapePhase settings; ///< the shape phase's components and weights
     RobustLoss loss = RobustLoss::none;
   };
 

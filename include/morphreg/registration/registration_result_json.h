@@ -15,7 +15,8 @@
 
 namespace morphreg
 {
-/** \brief The plausibility checks (checkFitPlausibility) of \a icp's finished fit of \a model, in mm.
+/** \brief The plausibility checks (checkFitPlausibility) of \a icp's finished fit of \a model, in mm; of the
+ *  shape coefficients, each region's FitPlausibilitySettings::leading_components are held to the sigma limit.
  *  \param[in] icp a registration after align()
  *  \param[in] model the model it fitted
  *  \return the verdict

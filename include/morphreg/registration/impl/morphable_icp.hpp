@@ -112,9 +112,12 @@ template <typename PointTarget, typename Scalar>
 void
 MorphableICP<PointTarget, Scalar>::setShapeSchedule (std::vector<ShapePhase> phases)
 {
-  for (size_t k = 0; k < phases.size (); ++k)
-    requirePriorWeight (phases[k].smoothness_weight,
-                        "MorphableICP::setShapeSchedule: lambda_1 of phase " + std::to_string (k));
+  for (size_t k = 0; k < phases.size (); ++k) {
+    const std::string phase = " of phase " + std::to_string (k);
+    requirePriorWeight (phases[k].smoothness_weight, "MorphableICP::setShapeSchedule: lambda_1" + phase);
+    if (phases[k].prior_weight)
+      requirePriorWeight (*phases[k].prior_weight, "MorphableICP::setShapeSchedule: lambda_2" + phase);
+  }
   schedule_ = std::move (phases);
 }
 
@@ -439,7 +442,7 @@ MorphableICP<PointTarget, Scalar>::solver (const Phase& phase) const
   if (phase.shape)
     settings.components = phase.settings.components;
   settings.smoothness_weight = phase.settings.smoothness_weight;
-  settings.prior_weight = lambda2_;
+  settings.prior_weight = phase.settings.prior_weight.value_or (lambda2_);
   settings.prior = prior_;
   settings.estimate_scale = estimate_scale_;
   settings.damp_reversals = true;
