@@ -21,6 +21,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace morphreg
 {
@@ -242,6 +243,13 @@ registerBuildModelCommand (CLI::App& app)
       ->check (nonNegative ())
       ->needs (scans)
       ->capture_default_str ();
+  command
+      ->add_option ("--fit-refinement-prior", options->registration.refinement_prior,
+                    "with --from-scans: the shape prior of the registration's refinement over all --fit-components "
+                    "(register's --refinement-prior)")
+      ->check (nonNegative ())
+      ->needs (scans)
+      ->default_str ((std::ostringstream () << *options->registration.refinement_prior).str ());
   command->add_option ("--units", options->registration.units, "with --from-scans: the scans' unit")
       ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
       ->needs (scans)

@@ -41,6 +41,17 @@ struct RegisterOptions : RegistrationSettings
   bool quiet = false;
 };
 
+/** The registration of `build-model --from-scans`: register's, but up to 60 components per region refined at a weak
+ *  prior (0.2), so that each fit follows its scan and the model is built from close correspondences. */
+inline RegisterOptions
+fromScansRegistration ()
+{
+  RegisterOptions options;
+  options.components = {60};
+  options.refinement_prior = 0.2;
+  return options;
+}
+
 /** Thrown when a registration finished but failed its plausibility checks (exit code 4); the outputs are written. */
 class FitCheckFailure : public std::runtime_error
 {
@@ -124,8 +135,8 @@ struct BuildModelOptions
   std::string ict_directory;       ///< ICT-FaceKit folder: the 7-region ICT model instead of meshes
   std::string from_scans;          ///< a folder of raw scans or a manifest CSV (morphreg/io/scan_manifest.h)
   std::string report_dir;          ///< from_scans: the per-scan outputs and summary (default: <out>_scans)
-  RegisterOptions registration;    ///< from_scans: its model registers the scans, its settings the fits
-  ResamplingOptions resampling;    ///< from_scans: the resampling of each fit
+  RegisterOptions registration = fromScansRegistration (); ///< from_scans: its model registers the scans
+  ResamplingOptions resampling;                            ///< from_scans: the resampling of each fit
   int ict_samples = 300;
   std::uint64_t seed = 1;
   std::string out = "model.h5";

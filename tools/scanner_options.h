@@ -8,7 +8,7 @@ namespace morphreg
 {
 namespace tools
 {
-/** Adds --noise, --outliers, --angular-samples, --row-spacing and --range-mesh to \a command. */
+/** Adds --noise, --outliers, --angular-samples, --row-spacing, --scale-deviation and --range-mesh to \a command. */
 inline void
 addScannerOptions (CLI::App* command, synthetic::ScanSimulator::Parameters& parameters)
 {
@@ -24,6 +24,12 @@ addScannerOptions (CLI::App* command, synthetic::ScanSimulator::Parameters& para
       ->capture_default_str ();
   command->add_option ("--row-spacing", parameters.row_spacing, "scanner row spacing (mm)")
       ->check (CLI::Range (ScanSimulator::kMinRowSpacing, 1000.0))
+      ->capture_default_str ();
+  command
+      ->add_option ("--scale-deviation", parameters.max_scale_deviation,
+                    "the scan's random scale lies in [1 - D, 1 + D] (0: the scanner measures true size, as when "
+                    "building models from the scans)")
+      ->check (CLI::Range (0.0, 0.5))
       ->capture_default_str ();
   command->add_flag ("--range-mesh", parameters.range_mesh, "also write the triangulated range image");
 }

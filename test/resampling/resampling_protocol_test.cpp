@@ -6,6 +6,7 @@
 #include <morphreg/model/model_builder.h>
 #include <morphreg/model/model_quality.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/registration_settings.h>
 #include <morphreg/resampling/scan_resampler.h>
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
@@ -62,38 +63,38 @@ median (std::vector<double> values)
   return values[values.size () / 2];
 }
 
-/** The model fit to \a scan as the register command makes it (its default settings, coarse start). */
+/** The model fit to \a scan as `build-model --from-scans` makes it: register's settings, up to 60 components per
+ *  region refined at the shape prior 0.2. */
 morphreg::TriangleMesh
-registerScan (const morphreg::MorphableModel::ConstPtr& model, const pcl::PointCloud<pcl::PointNormal>::Ptr& scan)
+registerScan (const morphreg::MorphableModel::Ptr& model, const pcl::PointCloud<pcl::PointNormal>::Ptr& scan)
 {
+  morphreg::RegistrationSettings settings;
+  settings.components = {60};
+  settings.refinement_prior = 0.2;
   morphreg::MorphableICP<pcl::PointNormal> icp;
-  icp.setModel (model);
-  icp.setComponentSelection (model->firstComponents (10));
-  icp.setPointToPlane (true, 0.02);
-  icp.setShapePriorWeight (3.0);
-  icp.setTargetUnit (morphreg::LengthUnit::millimetre);
+  morphreg::configureRegistration (icp, settings, model);
   icp.setInputTarget (scan);
   pcl::PointCloud<pcl::PointNormal> aligned;
   icp.align (aligned);
   return morphreg::TriangleMesh{icp.getFittedVertices (), model->triangles ()};
 }
 
-/** The registering model: 20 components per region from the heads of seeds 1-200. */
-morphreg::MorphableModel::ConstPtr
+/** The registering model: up to 60 components per region from the heads of seeds 1-200. */
+morphreg::MorphableModel::Ptr
 registeringModel (const morphreg::synthetic::HeadGenerator& generator)
 {
   std::vector<morphreg::TriangleMesh> training;
   for (auto& head : generator.population (200, 1))
     training.push_back (std::move (head.mesh));
   morphreg::ModelBuilderSettings settings;
-  settings.max_components = 20;
+  settings.max_components = 60;
   return morphreg::ModelBuilder (settings).build (training, generator.regions ());
 }
 
 TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
 {
   const morphreg::synthetic::HeadGenerator generator;
-  const morphreg::MorphableModel::ConstPtr model = registeringModel (generator);
+  const morphreg::MorphableModel::Ptr model = registeringModel (generator);
 
   std::vector<double> observed_rms, filled_rms, filled_above_cut_rms, fit_rms, coverage; // fit_rms: over the filled
   int folded = 0;
@@ -134,11 +135,13 @@ TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
       morphreg::test::sampleCount (kHeads), observed, *std::max_element (observed_rms.begin (), observed_rms.end ()),
       filled, *std::max_element (filled_rms.begin (), filled_rms.end ()), fit, filled_above_cut,
       *std::max_element (filled_above_cut_rms.begin (), filled_above_cut_rms.end ()), median (coverage), folded);
-  // Required: observed <= 0.25 mm, filled <= 1.5 mm (medians over the heads). Below the neck's cut (the scan's
-  // lowest row) the true head ends in its flat cap, which no scan sees: the fill there can only continue the model
-  // fit's neck, so the filled figure over all filled vertices is the fit's neck-length error and is held to the fit's.
+  // Required: observed <= 0.25 mm, filled <= 1.5 mm (medians over the heads). Most of the fills' error is the neck's
+  // length: below the scan's lowest row the true head ends in a flat cap no scan sees, and the fit's neck ends up to
+  // 15 mm below it; above that row the fills lie within a few tenths of a millimetre. Measured: observed 0.097 mm
+  // (max 0.107), filled 0.724 mm (max 4.7), 0.085 mm above the cut, coverage 0.940, no folds.
   EXPECT_LE (observed, 0.25);
-  EXPECT_LE (filled_above_cut, 1.5);
+  EXPECT_LE (filled, 1.5);
+  EXPECT_LE (filled_above_cut, 0.5);
   EXPECT_LE (filled, 1.05 * fit) << "the fills are no worse than the model fit on the same vertices";
   EXPECT_EQ (folded, 0);
 }
@@ -146,19 +149,23 @@ TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
 // The protocol of models from raw scans at a fifth of its size, to stay near a minute and a half: 20 scanned heads
 // (seeds 1001-1020) instead of 100, generalisation on 20 further true heads (seeds 1101-1120) at 10 components
 // instead of 20 (a model of 20 meshes has 19), specificity from 1000 samples (seed 1) at 10 components; each
-// against the model built from the same heads' true meshes. Measured: generalisation 0.746 mm against 0.648 mm
-// (+15 %), specificity 2.282 mm against 2.086 mm (+9.4 %). Specificity is held to the 10 % asked for; generalisation
-// misses it and is held to 20 % so that it cannot get worse unnoticed (the full 100-scan run through the command
-// line, README, misses it by more: the resampled meshes' error floor dominates once the components are many).
+// against the model built from the same heads' true meshes. The scanner keeps its random pose but not its random
+// scale (up to 5 %): a scan scaled by the scanner is another head's size, which no registration can undo, and a
+// model of such scans holds the scale as a component of its own. Measured: generalisation 0.661 mm against 0.648 mm
+// (+2 %), specificity 2.041 mm against 2.086 mm (-2 %). With the scanner's scale, and register's fit (10 components
+// per region at the prior 3), they were 0.746 against 0.648 mm (+15 %) and 2.282 against 2.086 mm (+9.4 %).
 TEST (ResamplingProtocolTest, ModelFromRawScansMatchesModelFromTrueMeshes)
 {
   constexpr int kComponents = 10;
   const morphreg::synthetic::HeadGenerator generator;
-  const morphreg::MorphableModel::ConstPtr model = registeringModel (generator);
+  const morphreg::MorphableModel::Ptr model = registeringModel (generator);
+  morphreg::synthetic::ScanSimulator::Parameters true_size;
+  true_size.max_scale_deviation = 0.0;
+  const morphreg::synthetic::ScanSimulator scanner (true_size);
   std::vector<morphreg::TriangleMesh> true_meshes, resampled, held_out;
   for (int head = 0; head < kHeads; ++head) {
     true_meshes.push_back (generator.sample (kFirstUnseen + head).mesh);
-    const auto scan = morphreg::synthetic::ScanSimulator ().scan (true_meshes.back (), kFirstUnseen + head);
+    const auto scan = scanner.scan (true_meshes.back (), kFirstUnseen + head);
     morphreg::ScanResampler resampler;
     resampler.setInputReference (registerScan (model, scan.cloud));
     resampler.setInputScan (*scan.cloud);
@@ -174,7 +181,7 @@ TEST (ResamplingProtocolTest, ModelFromRawScansMatchesModelFromTrueMeshes)
   std::printf ("[ protocol ] model of %d heads at %d components: generalisation %.3f mm from raw scans, %.3f mm from "
                "true meshes; specificity %.3f mm from raw scans, %.3f mm from true meshes\n",
                kHeads, kComponents, generalisation_scans, generalisation_truth, specificity_scans, specificity_truth);
-  EXPECT_NEAR (generalisation_scans, generalisation_truth, 0.2 * generalisation_truth);
+  EXPECT_NEAR (generalisation_scans, generalisation_truth, 0.1 * generalisation_truth);
   EXPECT_NEAR (specificity_scans, specificity_truth, 0.1 * specificity_truth);
 }
 } // namespace

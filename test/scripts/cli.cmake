@@ -101,6 +101,8 @@ morphreg_cli_expect_exit(RegisterWrongTruthIsNamed 1 "synth/head_000.ply: 9602 v
   register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --iterations 2 --quiet
   --truth ${cli_dir}/synth/head_000.ply --out ${cli_dir}/bad.ply)
 morphreg_cli_expect_exit(RegisterBadLossExits2 2 "--loss" register --scan a.pcd --model b.h5 --loss cauchy)
+morphreg_cli_expect_exit(RegisterNegativeRefinementPriorExits2 2 "--refinement-prior"
+  register --scan a.pcd --model b.h5 --refinement-prior -1)
 
 # Output on stderr in a log (a file, not a terminal): progress as separate lines, no '\r'; PCL's warnings (a PLY
 # scan's unhandled faces; a PCD scan without normals: "Failed to find match for field 'normal_x'") only with
@@ -291,7 +293,7 @@ set_tests_properties(CliTest.BuildModelFromScans PROPERTIES FIXTURES_REQUIRED "c
 add_test(NAME CliTest.BuildModelFromScansReportsTheBadScan
   COMMAND ${CMAKE_COMMAND} -E cat ${cli_dir}/from_scans_scans/summary.json ${cli_dir}/from_scans_scans/scan_0.json)
 set_tests_properties(CliTest.BuildModelFromScansReportsTheBadScan PROPERTIES FIXTURES_REQUIRED cli_from_scans
-  PASS_REGULAR_EXPRESSION "\"included\": 3,\n  \"left_out\": 1,.*\"id\": \"scan_flat\",\n *\"included\": false,\n *\"reason\": \"[^\"]*lie in a plane.*\"coverage\": 0\\.[0-9]+,.*\"components\": \\[\n *8\n *\\],")
+  PASS_REGULAR_EXPRESSION "\"included\": 3,\n  \"left_out\": 1,.*\"id\": \"scan_flat\",\n *\"included\": false,\n *\"reason\": \"[^\"]*lie in a plane.*\"coverage\": 0\\.[0-9]+,.*\"components\": \\[\n *8\n *\\],.*\"refinement_prior_weight\": 0\\.2,")
 morphreg_cli_expect_exit(BuildModelFromOneScanFails 1 "1 of 2 scans registered and resampled, 1 left out; a model needs at least two"
   build-model --from-scans ${cli_dir}/from_one_scan.csv --model ${cli_dir}/small_model.h5 --quiet
   --out ${cli_dir}/from_one_scan.h5)
