@@ -332,6 +332,35 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   return report;
 }
 
+namespace
+{
+/** The robust loss and the PCL rejector chain of addRegistrationOptions. */
+void
+addRobustnessOptions (CLI::App* command, RegisterOptions& options)
+{
+  command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")
+      ->check (CLI::IsMember ({"none", "huber", "tukey"}))
+      ->capture_default_str ();
+  command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
+      ->check (nonNegative ())
+      ->capture_default_str ();
+  command
+      ->add_option ("--reject-distance", options.reject_distance,
+                    "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
+      ->check (positive ());
+  command
+      ->add_option ("--reject-median", options.reject_median,
+                    "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
+      ->check (positive ());
+  command->add_flag ("--reject-one-to-one", options.reject_one_to_one,
+                     "keep one correspondence per scan point (CorrespondenceRejectorOneToOne)");
+  command
+      ->add_option ("--reject-trimmed", options.reject_trimmed,
+                    "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
+      ->check (CLI::Range (0.01, 1.0));
+}
+} // namespace
+
 void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options)
 {
@@ -385,26 +414,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->capture_default_str ();
   command->add_flag ("--area-weighting", options.area_weighting,
                      "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
-  command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")
-      ->check (CLI::IsMember ({"none", "huber", "tukey"}))
-      ->capture_default_str ();
-  command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--reject-distance", options.reject_distance,
-                    "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
-      ->check (positive ());
-  command
-      ->add_option ("--reject-median", options.reject_median,
-                    "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
-      ->check (positive ());
-  command->add_flag ("--reject-one-to-one", options.reject_one_to_one,
-                     "keep one correspondence per scan point (CorrespondenceRejectorOneToOne)");
-  command
-      ->add_option ("--reject-trimmed", options.reject_trimmed,
-                    "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
-      ->check (CLI::Range (0.01, 1.0));
+  addRobustnessOptions (command, options);
 }
 
 void
