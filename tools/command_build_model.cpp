@@ -210,6 +210,42 @@ addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
   command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
 }
 
+/** The options of `--from-scans` (\a scans): the registering model, the reports and the fits' settings. */
+void
+addFromScansOptions (CLI::App* command, BuildModelOptions& options, CLI::Option* scans)
+{
+  command->add_option ("--model", options.registration.model, "with --from-scans: the model that registers the scans")
+      ->needs (scans);
+  command
+      ->add_option ("--report-dir", options.report_dir,
+                    "with --from-scans: folder of each scan's report <id>.json, fit <id>_fit.ply, resampled mesh "
+                    "<id>.ply and summary.json (default: the --out path + _scans)")
+      ->needs (scans);
+  command
+      ->add_option ("--fit-components", options.registration.components,
+                    "with --from-scans: shape components per region the registration fits (register's --components)")
+      ->check (nonNegative ())
+      ->needs (scans)
+      ->capture_default_str ();
+  command
+      ->add_option ("--fit-refinement-prior", options.registration.refinement_prior,
+                    "with --from-scans: the shape prior of the registration's refinement over all --fit-components "
+                    "(register's --refinement-prior)")
+      ->check (nonNegative ())
+      ->needs (scans)
+      ->default_str ((std::ostringstream () << *options.registration.refinement_prior).str ());
+  command
+      ->add_option ("--fit-refinement-smoothness", options.registration.refinement_smoothness,
+                    "with --from-scans: lambda_1 of that refinement (register's --refinement-smoothness)")
+      ->check (nonNegative ())
+      ->needs (scans)
+      ->capture_default_str ();
+  command->add_option ("--units", options.registration.units, "with --from-scans: the scans' unit")
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
+      ->needs (scans)
+      ->capture_default_str ();
+}
+
 void
 registerBuildModelCommand (CLI::App& app)
 {
@@ -230,30 +266,7 @@ registerBuildModelCommand (CLI::App& app)
       "--from-scans", options->from_scans,
       "build from raw scans: a folder of scans or a manifest CSV (rows scan[,landmarks[,id]]), each registered with "
       "--model and resampled into its topology; scans that fail are reported and left out");
-  command->add_option ("--model", options->registration.model, "with --from-scans: the model that registers the scans")
-      ->needs (scans);
-  command
-      ->add_option ("--report-dir", options->report_dir,
-                    "with --from-scans: folder of each scan's report <id>.json, fit <id>_fit.ply, resampled mesh "
-                    "<id>.ply and summary.json (default: the --out path + _scans)")
-      ->needs (scans);
-  command
-      ->add_option ("--fit-components", options->registration.components,
-                    "with --from-scans: shape components per region the registration fits (register's --components)")
-      ->check (nonNegative ())
-      ->needs (scans)
-      ->capture_default_str ();
-  command
-      ->add_option ("--fit-refinement-prior", options->registration.refinement_prior,
-                    "with --from-scans: the shape prior of the registration's refinement over all --fit-components "
-                    "(register's --refinement-prior)")
-      ->check (nonNegative ())
-      ->needs (scans)
-      ->default_str ((std::ostringstream () << *options->registration.refinement_prior).str ());
-  command->add_option ("--units", options->registration.units, "with --from-scans: the scans' unit")
-      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
-      ->needs (scans)
-      ->capture_default_str ();
+  addFromScansOptions (command, *options, scans);
   addResamplingOptions (command, options->resampling);
   command->add_option ("--samples", options->ict_samples, "heads drawn from the ICT model (with --from-ict)")
       ->check (CLI::Range (2, 100000))

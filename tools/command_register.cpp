@@ -403,6 +403,12 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
                     "refine over all --components at this shape prior, after a first phase over at most 10 per "
                     "region at --shape-prior (e.g. 0.5 with many components: fits that follow the scan closely)")
       ->check (nonNegative ());
+  command
+      ->add_option ("--refinement-smoothness", options.refinement_smoothness,
+                    "lambda_1 of the refinement of --refinement-prior (less for models whose regions cannot agree on "
+                    "the scan, e.g. 0.1 with ICT-FaceKit)")
+      ->check (nonNegative ())
+      ->capture_default_str ();
   command->add_option ("--landmark-weight", options.landmark_weight, "one landmark counts as this many correspondences")
       ->check (nonNegative ())
       ->capture_default_str ();

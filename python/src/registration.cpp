@@ -121,9 +121,9 @@ registerFunction (const MorphableModel::Ptr& model, const py::handle& points, co
                   const py::handle& landmarks, py::object progress, const std::string& units, int iterations,
                   int similarity_iterations, double max_distance, const py::handle& components, bool point_to_plane,
                   double tangential_weight, double shape_prior, std::optional<double> refinement_prior,
-                  double landmark_weight, bool area_weighting, const std::string& loss, double loss_scale,
-                  double reject_distance, double reject_median, bool reject_one_to_one, double reject_trimmed,
-                  bool target_smoothing)
+                  double refinement_smoothness, double landmark_weight, bool area_weighting, const std::string& loss,
+                  double loss_scale, double reject_distance, double reject_median, bool reject_one_to_one,
+                  double reject_trimmed, bool target_smoothing)
 {
   RegistrationSettings settings;
   settings.units = units;
@@ -135,6 +135,7 @@ registerFunction (const MorphableModel::Ptr& model, const py::handle& points, co
   settings.tangential_weight = tangential_weight;
   settings.shape_prior = shape_prior;
   settings.refinement_prior = refinement_prior;
+  settings.refinement_smoothness = refinement_smoothness;
   settings.landmark_weight = landmark_weight;
   settings.area_weighting = area_weighting;
   settings.loss = loss;
@@ -199,11 +200,12 @@ bindRegistration (py::module_& m)
          py::arg ("similarity_iterations") = d.similarity_iterations, py::arg ("max_distance") = d.max_distance,
          py::arg ("components") = d.components.front (), py::arg ("point_to_plane") = d.point_to_plane,
          py::arg ("tangential_weight") = d.tangential_weight, py::arg ("shape_prior") = d.shape_prior,
-         py::arg ("refinement_prior") = d.refinement_prior, py::arg ("landmark_weight") = d.landmark_weight,
-         py::arg ("area_weighting") = d.area_weighting, py::arg ("loss") = d.loss,
-         py::arg ("loss_scale") = d.loss_scale, py::arg ("reject_distance") = d.reject_distance,
-         py::arg ("reject_median") = d.reject_median, py::arg ("reject_one_to_one") = d.reject_one_to_one,
-         py::arg ("reject_trimmed") = d.reject_trimmed, py::arg ("target_smoothing") = d.target_smoothing,
+         py::arg ("refinement_prior") = d.refinement_prior, py::arg ("refinement_smoothness") = d.refinement_smoothness,
+         py::arg ("landmark_weight") = d.landmark_weight, py::arg ("area_weighting") = d.area_weighting,
+         py::arg ("loss") = d.loss, py::arg ("loss_scale") = d.loss_scale,
+         py::arg ("reject_distance") = d.reject_distance, py::arg ("reject_median") = d.reject_median,
+         py::arg ("reject_one_to_one") = d.reject_one_to_one, py::arg ("reject_trimmed") = d.reject_trimmed,
+         py::arg ("target_smoothing") = d.target_smoothing,
          "Fits the model to a scan's points ((N, 3), with (N, 3) normals if known) by MorphableICP, as\n"
          "`morphreg register` does; landmarks: a dict id -> (x, y, z) in the points' unit. The keyword\n"
          "arguments are register's options (--max-distance is max_distance). progress(iteration,\n"

@@ -162,6 +162,7 @@ def test_mismatched_normals(model, scan):
     ({"tangential_weight": 2.0}, "tangential_weight = 2 is out of range"),
     ({"shape_prior": float("nan")}, "shape_prior = nan is out of range"),
     ({"refinement_prior": -1.0}, "refinement_prior = -1 is out of range"),
+    ({"refinement_smoothness": -1.0}, "refinement_smoothness = -1 is out of range"),
     ({"units": "furlong"}, "furlong"),
     ({"components": "ten"}, "components: expected an int"),
     ({"components": [5, 5]}, "components has 2 counts for a model with 7 regions"),

@@ -57,17 +57,17 @@ requireValidComponents (const std::vector<int>& components)
       throw InvalidInputError ("registration setting components has a negative count (" + std::to_string (count) + ")");
 }
 
-/** Two shape phases: over at most kCoarseComponents per region at \a prior (and \a icp's first-phase lambda_1)
- *  while the correspondences settle, then over all \a counts at \a refinement_prior and kRefinementSmoothness. */
+/** Two shape phases: over at most kCoarseComponents per region at \a settings' shape prior (and \a icp's
+ *  first-phase lambda_1) while the correspondences settle, then over all \a counts at its refinement weights. */
 std::vector<ShapePhase>
 coarseToFine (const MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model, const std::vector<int>& counts,
-              double prior, double refinement_prior)
+              const RegistrationSettings& settings)
 {
   std::vector<int> coarse = counts;
   for (int& count : coarse)
     count = std::min (count, kCoarseComponents);
-  return {{model.firstComponents (coarse), icp.getSmoothnessWeight (), prior},
-          {model.firstComponents (counts), kRefinementSmoothness, refinement_prior}};
+  return {{model.firstComponents (coarse), icp.getSmoothnessWeight (), settings.shape_prior},
+          {model.firstComponents (counts), settings.refinement_smoothness, settings.refinement_prior}};
 }
 
 /** The rejectors \a settings turn on, after the target-boundary rejector (a chain replaces MorphableICP's default
@@ -107,6 +107,7 @@ requireValidSettings (const RegistrationSettings& settings)
   requireInRange (settings.shape_prior, 0.0, HUGE_VAL, "shape_prior");
   if (settings.refinement_prior)
     requireInRange (*settings.refinement_prior, 0.0, HUGE_VAL, "refinement_prior");
+  requireInRange (settings.refinement_smoothness, 0.0, HUGE_VAL, "refinement_smoothness");
   requireInRange (settings.landmark_weight, 0.0, HUGE_VAL, "landmark_weight");
   parseRobustLoss (settings.loss);
   requireInRange (settings.loss_scale, 0.0, HUGE_VAL, "loss_scale");
@@ -132,7 +133,7 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
       counts.size () == 1 ? std::vector<int> (model->numRegions (), counts.front ()) : counts;
   icp.setComponentSelection (model->firstComponents (per_region));
   if (settings.refinement_prior)
-    icp.setShapeSchedule (coarseToFine (icp, *model, per_region, settings.shape_prior, *settings.refinement_prior));
+    icp.setShapeSchedule (coarseToFine (icp, *model, per_region, settings));
   icp.setMaximumIterations (settings.iterations);
   icp.setSimilarityIterations (settings.similarity_iterations);
   if (settings.max_distance > 0.0)
@@ -158,6 +159,7 @@ toJson (const RegistrationSettings& settings)
       {"tangential_weight", settings.tangential_weight},
       {"shape_prior_weight", settings.shape_prior},
       {"refinement_prior_weight", settings.refinement_prior ? nlohmann::json (*settings.refinement_prior) : nullptr},
+      {"refinement_smoothness_weight", settings.refinement_smoothness},
       {"area_weighting", settings.area_weighting},
       {"landmark_weight", settings.landmark_weight},
       {"robust_loss", settings.loss},
