@@ -177,15 +177,6 @@ public:
     return lambda1_;
   }
 
-  /** \brief lambda_1 of the default schedule's refinement phase.
-   *  \return the weight of setRefinementSmoothnessWeight
-   */
-  double
-  getRefinementSmoothnessWeight () const
-  {
-    return refinement_lambda1_;
-  }
-
   /** \brief Runs the shape stage as these phases in order, each to convergence (coarse-to-fine components,
    *  changing lambda_1); coefficients carry over between phases. Every phase's components must fit within
    *  getComponentSelection() (checked in align()). Empty (the default): two phases over the selection, with
