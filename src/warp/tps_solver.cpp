@@ -1,5 +1,6 @@
 #include <morphreg/common/error.h>
 #include <morphreg/warp/impl/tps_kernel.hpp>
+#include <morphreg/warp/impl/landmark_pairs.h>
 #include <morphreg/warp/impl/tps_solver.h>
 
 #include <Eigen/Cholesky>
@@ -19,109 +20,11 @@ namespace detail
 {
 namespace
 {
-/** Landmarks closer than this fraction of their extent are one landmark (equal up to round-off). */
-constexpr double kCoincidenceTolerance = 1e-12;
-/** Source landmarks whose thinnest spread is below this fraction of the widest are flat (coplanar/collinear). */
-constexpr double kFlatnessTolerance = 1e-9;
 /** Landmarks must be reproduced to this fraction of their extent: an interpolating spline hits them exactly
  *  (docs/method.md, "Thin plate splines"). */
 constexpr double kResidualTolerance = 1e-9;
 /** Above this relative residual, one step of iterative refinement is taken before the final check. */
 constexpr double kRefineTolerance = 1e-13;
-
-double
-extent (const Eigen::MatrixXd& points)
-{
-  return (points.rowwise ().maxCoeff () - points.rowwise ().minCoeff ()).norm ();
-}
-
-void
-requireLandmarkPairs (const Eigen::MatrixXd& source, const Eigen::MatrixXd& target, const std::string& caller)
-{
-  std::ostringstream msg;
-  msg << caller << ": ";
-  if (source.rows () != target.rows ())
-    msg << "source landmarks are " << source.rows () << "-dimensional but targets are " << target.rows ()
-        << "-dimensional";
-  else if (source.cols () != target.cols ())
-    msg << "mismatched landmark counts: " << source.cols () << " source landmarks but " << target.cols () << " targets";
-  else if (source.rows () != 2 && source.rows () != 3)
-    msg << source.rows () << "-dimensional landmarks; thin plate splines here are 2D or 3D";
-  else if (source.cols () == 0)
-    msg << "no landmarks given";
-  else {
-    for (Eigen::Index i = 0; i < source.cols (); ++i)
-      if (!source.col (i).allFinite () || !target.col (i).allFinite ()) {
-        msg << (source.col (i).allFinite () ? "target" : "source") << " landmark " << i
-            << " is not finite (NaN or Inf)";
-        throw InvalidInputError (msg.str ());
-      }
-    return;
-  }
-  throw InvalidInputError (msg.str ());
-}
-
-/** Indices of the landmark pairs to keep: coincident sources with coincident targets are merged (the first
- *  kept); coincident sources with different targets are an InvalidInputError.
- */
-std::vector<Eigen::Index>
-distinctLandmarks (const Eigen::MatrixXd& source, const Eigen::MatrixXd& target, const std::string& caller)
-{
-  const Eigen::Index n = source.cols ();
-  const double source_tolerance = kCoincidenceTolerance * extent (source);
-  const double target_tolerance = kCoincidenceTolerance * std::max (extent (target), extent (source));
-  std::vector<Eigen::Index> order (n);
-  std::iota (order.begin (), order.end (), Eigen::Index (0));
-  std::sort (order.begin (), order.end (),
-             [&] (Eigen::Index a, Eigen::Index b) { return source (0, a) < source (0, b); });
-  std::vector<bool> dropped (n, false);
-  for (Eigen::Index a = 0; a < n; ++a)
-    for (Eigen::Index b = a + 1; b < n && source (0, order[b]) - source (0, order[a]) <= source_tolerance; ++b) {
-      const Eigen::Index i = std::min (order[a], order[b]), j = std::max (order[a], order[b]);
-      if ((source.col (i) - source.col (j)).norm () > source_tolerance)
-        continue;
-      if ((target.col (i) - target.col (j)).norm () > target_tolerance) {
-        std::ostringstream msg;
-        msg << caller << ": source landmarks " << i << " and " << j << " coincide but their targets differ by "
-            << (target.col (i) - target.col (j)).norm () << "; a spline cannot map one point to two";
-        throw InvalidInputError (msg.str ());
-      }
-      dropped[j] = true;
-    }
-  std::vector<Eigen::Index> kept;
-  for (Eigen::Index i = 0; i < n; ++i)
-    if (!dropped[i])
-      kept.push_back (i);
-  return kept;
-}
-
-/** Throws unless the (merged) source landmarks are enough and span the whole space (not coplanar/collinear);
- *  returns the widest / thinnest spread, the conditioning of the affine part.
- */
-double
-requireAffineSpan (const Eigen::MatrixXd& landmarks, Eigen::Index merged, const std::string& caller)
-{
-  const Eigen::Index n = landmarks.rows (), d = landmarks.cols ();
-  std::ostringstream msg;
-  msg << caller << ": ";
-  if (n < d + 1) {
-    msg << "only " << n << " distinct landmark(s)";
-    if (merged > 0)
-      msg << " (after merging " << merged << " duplicate(s))";
-    msg << "; a " << d << "D thin plate spline needs at least " << d + 1 << " not all "
-        << (d == 3 ? "coplanar" : "collinear");
-    throw InvalidInputError (msg.str ());
-  }
-  const Eigen::MatrixXd centred = landmarks.rowwise () - landmarks.colwise ().mean ();
-  const Eigen::VectorXd spread = Eigen::JacobiSVD<Eigen::MatrixXd> (centred).singularValues ();
-  const Eigen::Index rank = (spread.array () > kFlatnessTolerance * spread[0]).count ();
-  if (rank == d)
-    return spread[0] / spread[d - 1];
-  msg << "all " << n << " source landmarks are " << (rank == d - 1 && d == 3 ? "coplanar" : "collinear")
-      << " (thinnest/widest spread " << spread[d - 1] / spread[0] << "); a " << d
-      << "D thin plate spline needs landmarks that span " << d << "D";
-  throw InvalidInputError (msg.str ());
-}
 
 /** The system L [W; A] = [Y; 0] reduced to the null space of P^T (W = Q2 g) and solved by Cholesky:
  *  (sign Q2^T K Q2 + lambda I) g = sign Q2^T Y is positive definite for distinct, non-flat landmarks;
@@ -257,7 +160,7 @@ fitDistinct (const Eigen::MatrixXd& landmarks, const Eigen::MatrixXd& y, double 
   c.landmarks = landmarks;
   Eigen::MatrixXd w = Eigen::MatrixXd::Zero (y.rows (), D), a = Eigen::MatrixXd::Zero (D + 1, D);
   Eigen::MatrixXd residual = y;
-  const double scale = std::max (extent (y.transpose ()), extent (landmarks.transpose ()));
+  const double scale = std::max (boundingBoxDiagonal (y.transpose ()), boundingBoxDiagonal (landmarks.transpose ()));
   // The solve, then one step of iterative refinement when the residual is above round-off.
   for (int step = 0; step < 2 && (step == 0 || residual.rowwise ().norm ().maxCoeff () > kRefineTolerance * scale);
        ++step) {
@@ -291,19 +194,11 @@ fitDistinct (const Eigen::MatrixXd& landmarks, const Eigen::MatrixXd& y, double 
 TpsFit
 fitThinPlateSpline (const Eigen::MatrixXd& source, const Eigen::MatrixXd& target, const TpsFitOptions& options)
 {
-  requireLandmarkPairs (source, target, options.caller);
-  const std::vector<Eigen::Index> kept = distinctLandmarks (source, target, options.caller);
+  const LandmarkPairs pairs = distinctLandmarkPairs (source, target, options.caller, "thin plate spline");
   const Eigen::Index d = source.rows ();
-  Eigen::MatrixXd landmarks (kept.size (), d), y (kept.size (), d);
-  for (std::size_t i = 0; i < kept.size (); ++i) {
-    landmarks.row (i) = source.col (kept[i]).transpose ();
-    y.row (i) = target.col (kept[i]).transpose ();
-  }
-  const Eigen::Index merged = source.cols () - static_cast<Eigen::Index> (kept.size ());
-  const double affine_condition = requireAffineSpan (landmarks, merged, options.caller);
-  TpsFit fit = d == 3 ? fitDistinct<3> (landmarks, y, affine_condition, options)
-                      : fitDistinct<2> (landmarks, y, affine_condition, options);
-  fit.merged = merged;
+  TpsFit fit = d == 3 ? fitDistinct<3> (pairs.source, pairs.target, pairs.affine_condition, options)
+                      : fitDistinct<2> (pairs.source, pairs.target, pairs.affine_condition, options);
+  fit.merged = pairs.merged;
   return fit;
 }
 
