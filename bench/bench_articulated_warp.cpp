@@ -1,10 +1,14 @@
 // Re-posturing the MakeHuman bodies standing -> seated from their 51 major joints: morphreg::ArticulatedWarp (bone
 // motions, geodesic skinning weights, linear blend skinning, as-rigid-as-possible refinement with its factorisation)
 // next to the blended segmented thin plate spline (morphreg::SegmentedWarp, the settings of its test) in one run, on
-// the same body. Needs ../shared/data/makehuman_bodies.
+// the same body; and the base body warped to the male subject from the 51 joints and 16 surface landmarks by
+// morphreg::MovingLeastSquaresWarp next to the global thin plate spline of the same landmarks. Needs
+// ../shared/data/makehuman_bodies.
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/warp/articulated_warp.h>
+#include <morphreg/warp/moving_least_squares_warp.h>
 #include <morphreg/warp/segmented_warp.h>
+#include <morphreg/warp/thin_plate_spline.h>
 
 #include <benchmark/benchmark.h>
 
@@ -18,7 +22,24 @@ struct Body
   std::unique_ptr<morphreg::MakeHumanBodies> bodies;
   morphreg::TriangleMesh standing;
   morphreg::LandmarkPositions standing_joints, seated_joints;
+  Eigen::Matrix3Xd base_landmarks, male_landmarks; ///< the 51 joints and the 16 surface landmarks, standing
 };
+
+/** The major joints of \a subject standing, then its surface landmarks (vertices of \a mesh). */
+Eigen::Matrix3Xd
+jointsAndSurface (const morphreg::MakeHumanBodies& bodies, const std::string& subject,
+                  const morphreg::TriangleMesh& mesh)
+{
+  const auto joints = bodies.namedJoints (subject, morphreg::BodyPose::standing, bodies.majorJoints ());
+  const std::vector<int>& surface = bodies.surfaceVertices ();
+  Eigen::Matrix3Xd points (3, static_cast<Eigen::Index> (joints.size () + surface.size ()));
+  Eigen::Index k = 0;
+  for (const auto& entry : joints)
+    points.col (k++) = entry.second;
+  for (int v : surface)
+    points.col (k++) = mesh.vertices.col (v);
+  return points;
+}
 
 /** The base body standing and its joints in both postures; null without the shared data. */
 const Body*
@@ -34,6 +55,10 @@ body ()
     result->standing = result->bodies->loadMesh ("base", morphreg::BodyPose::standing);
     result->standing_joints = result->bodies->namedJoints ("base", morphreg::BodyPose::standing, joints);
     result->seated_joints = result->bodies->namedJoints ("base", morphreg::BodyPose::seated, joints);
+    result->base_landmarks = jointsAndSurface (*result->bodies, "base", result->standing);
+    const std::string male = "caucasian-male-young";
+    result->male_landmarks =
+        jointsAndSurface (*result->bodies, male, result->bodies->loadMesh (male, morphreg::BodyPose::standing));
     return result;
   }();
   return loaded.get ();
@@ -81,10 +106,38 @@ BM_SegmentedTps (benchmark::State& state)
     benchmark::DoNotOptimize (warp.warp (b->standing).vertices.data ());
   }
 }
+
+void
+BM_BetweenSubjectsMls (benchmark::State& state)
+{
+  const Body* b = body ();
+  if (!b)
+    return state.SkipWithError ("../shared/data/makehuman_bodies is absent");
+  for (auto _ : state) {
+    morphreg::MovingLeastSquaresWarp warp;
+    warp.setLandmarks (b->base_landmarks, b->male_landmarks);
+    benchmark::DoNotOptimize (warp.warp (b->standing).vertices.data ());
+  }
+}
+
+void
+BM_BetweenSubjectsTps (benchmark::State& state)
+{
+  const Body* b = body ();
+  if (!b)
+    return state.SkipWithError ("../shared/data/makehuman_bodies is absent");
+  for (auto _ : state) {
+    morphreg::ThinPlateSpline<double, 3> tps;
+    tps.fit (b->base_landmarks, b->male_landmarks);
+    benchmark::DoNotOptimize (tps.transformMesh (b->standing).vertices.data ());
+  }
+}
 } // namespace
 
 // Arg: the rigidity (0: skinning alone, 1: the default refinement).
 BENCHMARK (BM_ArticulatedWarp)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
 BENCHMARK (BM_SegmentedTps)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_BetweenSubjectsMls)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_BetweenSubjectsTps)->Unit (benchmark::kMillisecond)->UseRealTime ();
 
 BENCHMARK_MAIN ();

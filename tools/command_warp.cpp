@@ -1,6 +1,6 @@
 // `morphreg warp`: a mesh warped from source to target landmarks by a thin plate spline, globally or by segments
-// with blended seams, or re-postured with rigid bones (--method articulated); with --truth, the warp's error per
-// vertex (colours of the output PLY) and in the report.
+// with blended seams, by moving least squares (--method mls), or re-postured with rigid bones (--method
+// articulated); with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
 #include "mesh_annotations.h"
 #include "option_checks.h"
@@ -18,6 +18,7 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/warp/articulated_warp.h>
 #include <morphreg/warp/limb_parts.h>
+#include <morphreg/warp/moving_least_squares_warp.h>
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/warp_quality.h>
 
@@ -46,6 +47,7 @@ struct WarpOptions
   std::vector<double> overlap{90.0}; ///< one for every segment, or one per segment
   double lambda = 0.0;
   double rigidity = 1.0, skinning_width = 30.0;
+  double mls_falloff = 1.0;
   bool quiet = false;
 };
 
@@ -156,6 +158,19 @@ segmentedWarp (const WarpOptions& options, const WarpInputs& inputs, nlohmann::j
   return warp.warp (inputs.mesh);
 }
 
+TriangleMesh
+movingLeastSquaresWarp (const WarpOptions& options, const WarpInputs& inputs, nlohmann::json& report)
+{
+  const auto [source, target] = landmarkColumns (inputs.source, inputs.target);
+  MovingLeastSquaresWarp warp;
+  warp.setFalloff (options.mls_falloff);
+  fitToLandmarks (options, [&] { warp.setLandmarks (source, target); });
+  report["mode"] = "moving_least_squares";
+  report["falloff_exponent"] = options.mls_falloff;
+  report["merged_landmarks"] = warp.mergedLandmarks ();
+  return warp.warp (inputs.mesh);
+}
+
 Skeleton
 chosenSkeleton (const WarpOptions& options)
 {
@@ -226,6 +241,8 @@ warpMesh (const WarpOptions& options, const WarpInputs& inputs, nlohmann::json& 
   report["landmarks"] = inputs.source.size ();
   if (options.method == "articulated")
     return articulatedWarp (options, inputs, report);
+  if (options.method == "mls")
+    return movingLeastSquaresWarp (options, inputs, report);
   return options.labels.empty () ? globalWarp (options, inputs, report) : segmentedWarp (options, inputs, report);
 }
 
@@ -323,8 +340,9 @@ registerWarpCommand (CLI::App& app)
       ->add_option ("--method", options->method,
                     "tps: thin plate spline (by segments with --labels); articulated: rigid bones between the "
                     "landmarks that name joints of --skeleton, skinned by --labels, refined as rigid as possible; "
-                    "other landmarks must lie on mesh vertices and pin them")
-      ->check (CLI::IsMember ({"tps", "articulated"}))
+                    "other landmarks must lie on mesh vertices and pin them; mls: moving least squares, each point "
+                    "follows the affine motion of its nearest landmarks (between subjects)")
+      ->check (CLI::IsMember ({"tps", "articulated", "mls"}))
       ->capture_default_str ();
   command->add_option ("--skeleton", options->skeleton,
                        "articulated: skeleton JSON {\"bones\": [{\"name\", \"head\", \"tail\", \"segment\", "
@@ -335,6 +353,11 @@ registerWarpCommand (CLI::App& app)
   command
       ->add_option ("--skinning-width", options->skinning_width,
                     "articulated: how fast a bone's weight falls along the mesh (mm)")
+      ->check (positive ())
+      ->capture_default_str ();
+  command
+      ->add_option ("--mls-falloff", options->mls_falloff,
+                    "mls: landmark weights fall as 1 / distance^(2 a); larger a is more local")
       ->check (positive ())
       ->capture_default_str ();
   command

@@ -5,8 +5,10 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace morphreg
 {
@@ -15,6 +17,8 @@ namespace
 /** A point closer to a landmark than this fraction of the landmarks' extent is that landmark (its weight would
  *  overflow): it goes to the landmark's target, as the limit of the warp does. */
 constexpr double kCoincidence = 1e-9;
+/** Points warped together: the landmark loop runs over a block's points in vector registers. */
+constexpr Eigen::Index kBlock = 256;
 } // namespace
 
 void
@@ -37,21 +41,64 @@ MovingLeastSquaresWarp::setFalloff (double alpha)
   alpha_ = alpha;
 }
 
-Eigen::Vector3d
-MovingLeastSquaresWarp::transformPoint (const Eigen::Vector3d& point) const
+Eigen::ArrayXd
+MovingLeastSquaresWarp::weights (const Eigen::ArrayXd& squared_distances) const
 {
-  const Eigen::VectorXd squared = (source_.colwise () - point).colwise ().squaredNorm ().transpose ();
-  Eigen::Index nearest = 0;
-  if (squared.minCoeff (&nearest) <= coincidence_ * coincidence_)
-    return target_.col (nearest);
-  const Eigen::VectorXd weights = squared.array ().pow (-alpha_);
-  const Eigen::Vector3d p = source_ * weights / weights.sum (), q = target_ * weights / weights.sum ();
-  const Eigen::Matrix3Xd from = source_.colwise () - p, to = target_.colwise () - q;
-  // The affine map M minimising sum w_i |M^T (p_i - p) - (q_i - q)|^2 is M = A^-1 B with A = sum w (p_i - p)(p_i -
-  // p)^T and B = sum w (p_i - p)(q_i - q)^T; A is positive definite for landmarks that are not coplanar.
-  const Eigen::Matrix3d a = from * weights.asDiagonal () * from.transpose ();
-  const Eigen::Matrix3d b = from * weights.asDiagonal () * to.transpose ();
-  return q + b.transpose () * a.ldlt ().solve (point - p);
+  if (alpha_ == 1.0)
+    return squared_distances.inverse ();
+  return squared_distances.pow (-alpha_);
+}
+
+void
+MovingLeastSquaresWarp::warpBlock (const Eigen::Ref<const Eigen::Matrix3Xd>& points,
+                                   Eigen::Ref<Eigen::Matrix3Xd> warped) const
+{
+  // Weighted moments about each point, over the landmarks, vectorised across the block's points. With u_i = p_i - x
+  // and the displacements d_i = q_i - p_i they stay bounded near a landmark (w |u|^2 = 1), where moments about the
+  // origin would cancel. Rows: sum w; sum w u (3); sum w d (3); sum w u u^T (9); sum w u d^T (9).
+  // One column per moment, one row per point: every update below is a contiguous vector operation.
+  Eigen::ArrayXXd moments = Eigen::ArrayXXd::Zero (points.cols (), 25);
+  const Eigen::ArrayXXd x = points.transpose ();
+  std::vector<Eigen::Index> at_landmark (static_cast<std::size_t> (points.cols ()), -1);
+  Eigen::ArrayXXd u (points.cols (), 3);
+  for (Eigen::Index i = 0; i < source_.cols (); ++i) {
+    for (int r = 0; r < 3; ++r)
+      u.col (r) = source_ (r, i) - x.col (r);
+    const Eigen::ArrayXd squared = u.square ().rowwise ().sum ();
+    const Eigen::ArrayXd w = weights (squared.max (coincidence_ * coincidence_));
+    const Eigen::Array3d d = target_.col (i) - source_.col (i);
+    moments.col (0) += w;
+    for (int r = 0; r < 3; ++r) {
+      const Eigen::ArrayXd wu = w * u.col (r);
+      moments.col (1 + r) += wu;
+      moments.col (4 + r) += d (r) * w;
+      for (int c = 0; c < 3; ++c) {
+        moments.col (7 + 3 * r + c) += wu * u.col (c);
+        moments.col (16 + 3 * r + c) += d (c) * wu;
+      }
+    }
+    for (Eigen::Index j = 0; j < points.cols (); ++j)
+      if (squared (j) <= coincidence_ * coincidence_)
+        at_landmark[static_cast<std::size_t> (j)] = i;
+  }
+  for (Eigen::Index j = 0; j < points.cols (); ++j) {
+    if (at_landmark[static_cast<std::size_t> (j)] >= 0) {
+      warped.col (j) = target_.col (at_landmark[static_cast<std::size_t> (j)]);
+      continue;
+    }
+    const Eigen::Matrix<double, 25, 1> m = moments.row (j).transpose ();
+    const double total = m (0);
+    const Eigen::Vector3d u_mean = m.segment<3> (1) / total, d_mean = m.segment<3> (4) / total;
+    const Eigen::Matrix3d uu = Eigen::Map<const Eigen::Matrix3d> (m.data () + 7);
+    const Eigen::Matrix3d ud = Eigen::Map<const Eigen::Matrix3d> (m.data () + 16);
+    // The best affine map of the landmarks about x, p_i -> q_i, is x + d_mean + B^T A^-1 (p_i - p_mean) with the
+    // weighted covariances A = sum w (p_i - p_mean)(p_i - p_mean)^T = uu - total u_mean u_mean^T and B = sum w (p_i -
+    // p_mean)(d_i - d_mean)^T; at x itself (p - p_mean = -u_mean). A is positive definite unless the landmarks are
+    // coplanar.
+    const Eigen::Matrix3d a = uu - total * u_mean * u_mean.transpose ();
+    const Eigen::Matrix3d b = ud.transpose () - total * u_mean * d_mean.transpose ();
+    warped.col (j) = points.col (j) + d_mean - b.transpose () * a.ldlt ().solve (u_mean);
+  }
 }
 
 Eigen::Matrix3Xd
@@ -62,9 +109,12 @@ MovingLeastSquaresWarp::transformPoints (const Eigen::Matrix3Xd& points) const
   if (!points.allFinite ())
     throw InvalidInputError ("MovingLeastSquaresWarp: a point to warp is not finite (NaN or Inf)");
   Eigen::Matrix3Xd warped (3, points.cols ());
+  const Eigen::Index blocks = (points.cols () + kBlock - 1) / kBlock;
 #pragma omp parallel for schedule(static)
-  for (Eigen::Index i = 0; i < points.cols (); ++i)
-    warped.col (i) = transformPoint (points.col (i));
+  for (Eigen::Index k = 0; k < blocks; ++k) {
+    const Eigen::Index start = k * kBlock, size = std::min (kBlock, points.cols () - start);
+    warpBlock (points.middleCols (start, size), warped.middleCols (start, size));
+  }
   if (!warped.allFinite ())
     throw NumericalError ("MovingLeastSquaresWarp: a warped point is not finite (landmarks too close to flat?)");
   return warped;

@@ -212,6 +212,13 @@ foreach(case "coincident;coincident_target.csv;nose_tip;right_eyebrow;one positi
   endif()
   morphreg_bad_input(WarpLandmarks_${kind} 1 TEXT ${text} SETUP ${setup}
     ARGS warp --mesh @CASE@/head.ply --source @CASE@/${kind}.csv --target @CASE@/${target_file} --out @CASE@/warped.ply)
+  # The same landmark pairs for the moving least squares warp, whose own check names it.
+  if(kind STREQUAL "collinear")
+    list(APPEND text "moving least squares warp needs landmarks that span 3D")
+  endif()
+  morphreg_bad_input(WarpLandmarksMls_${kind} 1 TEXT ${text} SETUP ${setup}
+    ARGS warp --method mls --mesh @CASE@/head.ply --source @CASE@/${kind}.csv --target @CASE@/${target_file}
+         --out @CASE@/warped.ply)
 endforeach()
 
 # --- Photo annotations ------------------------------------------------------------------------------------------------

@@ -45,6 +45,11 @@ TEST (MovingLeastSquaresWarpTest, ReproducesAnAffineMapAndInterpolatesTheLandmar
   const Eigen::Matrix3Xd near = source.array () + 1.0;
   EXPECT_LT ((warp.transformPoints (near) - target).colwise ().norm ().maxCoeff (), 5.0);
   EXPECT_GT ((warp.transformPoints (near) - target).colwise ().norm ().maxCoeff (), 1e-6);
+  // A micrometre and a nanometre off a landmark (weights of 1e12 and more): still its target, no cancellation.
+  for (double offset : {1e-3, 1e-6}) {
+    const Eigen::Matrix3Xd off = source.array () + offset;
+    EXPECT_LT ((warp.transformPoints (off) - target).cwiseAbs ().maxCoeff (), 1e-2) << offset;
+  }
 }
 
 TEST (MovingLeastSquaresWarpTest, EachRegionFollowsItsNearestLandmarks)

@@ -88,8 +88,13 @@ public:
   warp (const pcl::PolygonMesh& input, pcl::PolygonMesh& output) const;
 
 private:
-  Eigen::Vector3d
-  transformPoint (const Eigen::Vector3d& point) const;
+  /** The weights of landmarks at \a squared_distances (mm^2) from a point. */
+  Eigen::ArrayXd
+  weights (const Eigen::ArrayXd& squared_distances) const;
+
+  /** Warps the columns of \a points into \a warped (a block of transformPoints()). */
+  void
+  warpBlock (const Eigen::Ref<const Eigen::Matrix3Xd>& points, Eigen::Ref<Eigen::Matrix3Xd> warped) const;
 
   Eigen::Matrix3Xd source_;  ///< distinct source landmarks
   Eigen::Matrix3Xd target_;  ///< their targets
