@@ -25,22 +25,6 @@ struct Body
   Eigen::Matrix3Xd base_landmarks, male_landmarks; ///< the 51 joints and the 16 surface landmarks, standing
 };
 
-/** The major joints of \a subject standing, then its surface landmarks (vertices of \a mesh). */
-Eigen::Matrix3Xd
-jointsAndSurface (const morphreg::MakeHumanBodies& bodies, const std::string& subject,
-                  const morphreg::TriangleMesh& mesh)
-{
-  const auto joints = bodies.namedJoints (subject, morphreg::BodyPose::standing, bodies.majorJoints ());
-  const std::vector<int>& surface = bodies.surfaceVertices ();
-  Eigen::Matrix3Xd points (3, static_cast<Eigen::Index> (joints.size () + surface.size ()));
-  Eigen::Index k = 0;
-  for (const auto& entry : joints)
-    points.col (k++) = entry.second;
-  for (int v : surface)
-    points.col (k++) = mesh.vertices.col (v);
-  return points;
-}
-
 /** The base body standing and its joints in both postures; null without the shared data. */
 const Body*
 body ()
@@ -55,10 +39,11 @@ body ()
     result->standing = result->bodies->loadMesh ("base", morphreg::BodyPose::standing);
     result->standing_joints = result->bodies->namedJoints ("base", morphreg::BodyPose::standing, joints);
     result->seated_joints = result->bodies->namedJoints ("base", morphreg::BodyPose::seated, joints);
-    result->base_landmarks = jointsAndSurface (*result->bodies, "base", result->standing);
+    const auto standing = morphreg::BodyPose::standing;
+    result->base_landmarks = result->bodies->jointAndSurfaceLandmarks ("base", standing, result->standing);
     const std::string male = "caucasian-male-young";
     result->male_landmarks =
-        jointsAndSurface (*result->bodies, male, result->bodies->loadMesh (male, morphreg::BodyPose::standing));
+        result->bodies->jointAndSurfaceLandmarks (male, standing, result->bodies->loadMesh (male, standing));
     return result;
   }();
   return loaded.get ();

@@ -114,6 +114,20 @@ MakeHumanBodies::joints (const std::string& subject, BodyPose pose, const std::v
   return positions;
 }
 
+Eigen::Matrix3Xd
+MakeHumanBodies::jointAndSurfaceLandmarks (const std::string& subject, BodyPose pose, const TriangleMesh& mesh) const
+{
+  if (mesh.numVertices () != num_vertices_)
+    throw InvalidInputError ("MakeHumanBodies: a mesh of " + std::to_string (mesh.numVertices ()) +
+                             " vertices is not one of the bodies (" + std::to_string (num_vertices_) + ")");
+  Eigen::Matrix3Xd landmarks = joints (subject, pose, major_joints_);
+  const Eigen::Index num_joints = landmarks.cols ();
+  landmarks.conservativeResize (3, num_joints + static_cast<Eigen::Index> (surface_vertices_.size ()));
+  for (std::size_t k = 0; k < surface_vertices_.size (); ++k)
+    landmarks.col (num_joints + static_cast<Eigen::Index> (k)) = mesh.vertices.col (surface_vertices_[k]);
+  return landmarks;
+}
+
 LandmarkPositions
 MakeHumanBodies::namedJoints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const
 {

@@ -105,23 +105,13 @@ TEST (MovingLeastSquaresWarpTest, BetweenSubjectsWithJointsAndSurfaceLandmarks)
   REQUIRE_BODIES ();
   const morphreg::MakeHumanBodies bodies (morphreg::test::bodiesDirectory ());
   const morphreg::TriangleMesh base = bodies.loadMesh ("base", morphreg::BodyPose::standing);
-  const std::vector<int>& surface = bodies.surfaceVertices ();
-  const auto landmarks = [&] (const std::string& subject, const morphreg::TriangleMesh& mesh) {
-    const auto joints = bodies.namedJoints (subject, morphreg::BodyPose::standing, bodies.majorJoints ());
-    Eigen::Matrix3Xd points (3, static_cast<Eigen::Index> (joints.size () + surface.size ()));
-    Eigen::Index k = 0;
-    for (const auto& entry : joints)
-      points.col (k++) = entry.second;
-    for (int v : surface)
-      points.col (k++) = mesh.vertices.col (v);
-    return points;
-  };
-  const Eigen::Matrix3Xd source = landmarks ("base", base);
+  const auto standing = morphreg::BodyPose::standing;
+  const Eigen::Matrix3Xd source = bodies.jointAndSurfaceLandmarks ("base", standing, base);
   for (const auto& subject : bodies.subjects ()) {
     if (subject == "base")
       continue;
-    const morphreg::TriangleMesh truth = bodies.loadMesh (subject, morphreg::BodyPose::standing);
-    const Eigen::Matrix3Xd target = landmarks (subject, truth);
+    const morphreg::TriangleMesh truth = bodies.loadMesh (subject, standing);
+    const Eigen::Matrix3Xd target = bodies.jointAndSurfaceLandmarks (subject, standing, truth);
     MovingLeastSquaresWarp warp;
     warp.setLandmarks (source, target);
     const auto q = morphreg::evaluateWarp (warp.warp (base), truth, bodies.segmentLabels (), 100.0, &base);

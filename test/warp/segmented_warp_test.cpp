@@ -3,6 +3,7 @@
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/warp_quality.h>
 
+#include "support/expect_error.h"
 #include "support/makehuman_data.h"
 #include "support/test_meshes.h"
 
@@ -312,4 +313,12 @@ TEST (SegmentedWarpTest, MakeHumanReaderRejectsBadFolders)
   const double height = base.vertices.row (1).maxCoeff () - base.vertices.row (1).minCoeff ();
   EXPECT_GT (height, 1500.0) << "converted from decimetres to millimetres";
   EXPECT_LT (height, 2000.0);
+  const Eigen::Matrix3Xd landmarks = bodies.jointAndSurfaceLandmarks ("base", morphreg::BodyPose::standing, base);
+  ASSERT_EQ (landmarks.cols (), 67);
+  EXPECT_EQ (landmarks.col (51), base.vertices.col (bodies.surfaceVertices ().front ()));
+  TriangleMesh smaller = base;
+  smaller.vertices.conservativeResize (3, 100);
+  morphreg::test::expectErrorContaining<morphreg::InvalidInputError> (
+      [&] { bodies.jointAndSurfaceLandmarks ("base", morphreg::BodyPose::standing, smaller); },
+      "a mesh of 100 vertices is not one of the bodies");
 }

@@ -64,6 +64,16 @@ public:
   Eigen::Matrix3Xd
   joints (const std::string& subject, BodyPose pose, const std::vector<std::string>& names) const;
 
+  /** \brief The sparse landmark set as columns (mm): the 51 major joints of a subject in \a pose, then the 16
+   *  surface vertices of \a mesh (the subject's mesh in that pose), the landmarks of the between-subject warps.
+   *  \param[in] subject one of subjects()
+   *  \param[in] pose standing or seated
+   *  \param[in] mesh the subject's mesh in \a pose (loadMesh())
+   *  \return 3 x 67 positions
+   */
+  Eigen::Matrix3Xd
+  jointAndSurfaceLandmarks (const std::string& subject, BodyPose pose, const TriangleMesh& mesh) const;
+
   /** \brief Joint positions (mm) of a subject in \a pose by name, for the \a names wanted (e.g. majorJoints());
    *  InvalidInputError for an unknown subject or joint name.
    *  \param[in] subject one of subjects()
