@@ -1,9 +1,10 @@
-// Thin plate spline warps from numpy landmarks: morphreg.ThinPlateSpline (3D), morphreg.SegmentedWarp (one spline
-// per segment, seams blended) and morphreg.evaluate_warp.
+// Landmark warps from numpy landmarks: morphreg.ThinPlateSpline (3D), morphreg.SegmentedWarp (one spline per segment,
+// seams blended), morphreg.MovingLeastSquaresWarp and morphreg.evaluate_warp.
 #include "bindings.h"
 #include "numpy_arrays.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/warp/moving_least_squares_warp.h>
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/thin_plate_spline.h>
 #include <morphreg/warp/warp_quality.h>
@@ -78,6 +79,44 @@ bindSpline (py::module_& m)
       .def_property_readonly (
           "affine", [] (const Spline& s) { return toArray (Eigen::MatrixXd (s.getAffine ())); },
           "The affine part (4, 3): rows 1, x, y, z.");
+}
+
+py::array
+warpPoints (const MovingLeastSquaresWarp& warp, const py::handle& points)
+{
+  const PointsArgument at = pointsArgument (points, "points", 0);
+  Eigen::Matrix3Xd warped;
+  {
+    py::gil_scoped_release released;
+    warped = warp.transformPoints (at.points);
+  }
+  return toArray (std::move (warped));
+}
+
+void
+bindMovingLeastSquaresWarp (py::module_& m)
+{
+  py::class_<MovingLeastSquaresWarp, MovingLeastSquaresWarp::Ptr> (
+      m, "MovingLeastSquaresWarp",
+      "Moving least squares warp: each point follows the affine map that best carries the (L, 3) landmarks under "
+      "weights 1 / distance^(2 falloff) (mm).")
+      .def (py::init ([] (double falloff) {
+              auto warp = std::make_shared<MovingLeastSquaresWarp> ();
+              warp->setFalloff (falloff);
+              return warp;
+            }),
+            py::arg ("falloff") = 1.0, "falloff: the exponent alpha > 0 (larger is more local).")
+      .def (
+          "set_landmarks",
+          [] (MovingLeastSquaresWarp& warp, const py::handle& source, const py::handle& target) {
+            const auto [from, to] = landmarkPair (source, target);
+            warp.setLandmarks (from, to);
+          },
+          py::arg ("source"), py::arg ("target"), "Sets the landmark pairs, (L, 3) each; four not on one plane.")
+      .def ("evaluate", &warpPoints, py::arg ("points"), "The warped points, (N, 3).")
+      .def ("__call__", &warpPoints, py::arg ("points"))
+      .def_property_readonly ("falloff", &MovingLeastSquaresWarp::getFalloff)
+      .def_property_readonly ("merged_landmarks", &MovingLeastSquaresWarp::mergedLandmarks);
 }
 
 std::vector<int>
@@ -163,6 +202,7 @@ bindWarp (py::module_& m)
 {
   bindSpline (m);
   bindSegmentedWarp (m);
+  bindMovingLeastSquaresWarp (m);
   m.def ("evaluate_warp", &evaluateWarpFunction, py::arg ("warped"), py::arg ("truth"), py::arg ("faces"),
          py::arg ("labels"), py::arg ("band_width") = 100.0,
          "Errors of a warped mesh against the true one (mm), seam stretch and folded triangles, as a dict.");

@@ -2,6 +2,7 @@
 // the results (JSON doubles keep every digit). Usage: morphreg_python_reference request.json result.json
 // Each key of the request present is answered under the same key:
 //   "tps":       {"source", "target", "points": [[x, y, z], ...], "regularization"}  -> the warped points
+//   "mls":       {"source", "target", "points", "falloff"}                          -> the warped points
 //   "model":     {"path", "coefficients", "components", "seed"}                     -> "instance", "sample"
 //   "head":      {"resolution", "seed"}                                            -> "vertices"
 //   "scan":      {"resolution", "head_seed", "seed", "angular_samples", "row_spacing"} -> "points", "normals"
@@ -12,6 +13,7 @@
 #include <morphreg/io/model_io.h>
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
+#include <morphreg/warp/moving_least_squares_warp.h>
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/thin_plate_spline.h>
 
@@ -51,6 +53,15 @@ thinPlateSpline (const json& request)
   spline.setRegularization (request["regularization"].get<double> ());
   spline.fit (points (request["source"]), points (request["target"]));
   return rows (spline.evaluate (points (request["points"])));
+}
+
+json
+movingLeastSquares (const json& request)
+{
+  morphreg::MovingLeastSquaresWarp warp;
+  warp.setFalloff (request["falloff"].get<double> ());
+  warp.setLandmarks (points (request["source"]), points (request["target"]));
+  return rows (warp.transformPoints (points (request["points"])));
 }
 
 json
@@ -108,6 +119,8 @@ main (int argc, char** argv)
   json result = json::object ();
   if (request.contains ("tps"))
     result["tps"] = thinPlateSpline (request["tps"]);
+  if (request.contains ("mls"))
+    result["mls"] = movingLeastSquares (request["mls"]);
   if (request.contains ("model"))
     result["model"] = model (request["model"]);
   if (request.contains ("head"))

@@ -1,4 +1,4 @@
-"""morphreg.ThinPlateSpline, SegmentedWarp and evaluate_warp; equal to the C++ API."""
+"""morphreg.ThinPlateSpline, MovingLeastSquaresWarp, SegmentedWarp and evaluate_warp; equal to the C++ API."""
 import numpy as np
 import pytest
 
@@ -50,6 +50,40 @@ def test_spline_bad_input():
         spline.fit(SOURCE[:3], TARGET[:3])  # three landmarks span no 3D affine map
     with pytest.raises(morphreg.InvalidInputError, match="regularization|lambda"):
         morphreg.ThinPlateSpline(regularization=-1.0)
+
+
+def test_moving_least_squares_interpolates_and_keeps_affine_maps():
+    warp = morphreg.MovingLeastSquaresWarp()
+    warp.set_landmarks(SOURCE, TARGET)
+    assert np.max(np.abs(warp(SOURCE) - TARGET)) < 1e-9
+    assert warp.falloff == 1.0 and warp.merged_landmarks == 0
+    linear = np.array([[1.1, 0.1, 0.0], [0.0, 0.9, 0.2], [0.05, 0.0, 1.0]])
+    warp.set_landmarks(SOURCE, SOURCE @ linear.T + [1.0, 2.0, 3.0])
+    points = RNG.uniform(-150, 150, size=(50, 3))
+    assert np.max(np.abs(warp.evaluate(points) - (points @ linear.T + [1.0, 2.0, 3.0]))) < 1e-8
+
+
+def test_moving_least_squares_equals_the_cpp_api(tmp_path):
+    points = RNG.uniform(-120, 120, size=(200, 3))
+    warp = morphreg.MovingLeastSquaresWarp(falloff=1.5)
+    warp.set_landmarks(SOURCE, TARGET)
+    reference = cpp_reference({"mls": {"source": SOURCE.tolist(), "target": TARGET.tolist(),
+                                       "points": points.tolist(), "falloff": 1.5}}, tmp_path)
+    assert relative_difference(warp(points), reference["mls"]) <= 1e-12
+
+
+def test_moving_least_squares_bad_input():
+    warp = morphreg.MovingLeastSquaresWarp()
+    with pytest.raises(morphreg.InvalidInputError, match="no landmarks set"):
+        warp(SOURCE)
+    with pytest.raises(morphreg.InvalidInputError, match="source has 12 landmarks and target 11"):
+        warp.set_landmarks(SOURCE, TARGET[:11])
+    flat = SOURCE.copy()
+    flat[:, 2] = 0.0
+    with pytest.raises(morphreg.InvalidInputError, match="coplanar"):
+        warp.set_landmarks(flat, TARGET)
+    with pytest.raises(morphreg.InvalidInputError, match="falloff exponent"):
+        morphreg.MovingLeastSquaresWarp(falloff=0.0)
 
 
 def two_segments(generator):
