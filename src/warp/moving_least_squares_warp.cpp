@@ -53,10 +53,10 @@ void
 MovingLeastSquaresWarp::warpBlock (const Eigen::Ref<const Eigen::Matrix3Xd>& points,
                                    Eigen::Ref<Eigen::Matrix3Xd> warped) const
 {
-  // Weighted moments about each point, over the landmarks, vectorised across the block's points. With u_i = p_i - x
-  // and the displacements d_i = q_i - p_i they stay bounded near a landmark (w |u|^2 = 1), where moments about the
-  // origin would cancel. Rows: sum w; sum w u (3); sum w d (3); sum w u u^T (9); sum w u d^T (9).
-  // One column per moment, one row per point: every update below is a contiguous vector operation.
+  // Weighted moments about each point, over the landmarks. With u_i = p_i - x and the displacements d_i = q_i - p_i
+  // they stay bounded near a landmark (w |u|^2 = 1), where moments about the origin would cancel. One row per point
+  // and one column per moment, so every update below is a contiguous vector operation. Columns: sum w; sum w u (3);
+  // sum w d (3); sum w u u^T (9); sum w d u^T (9, column-major).
   Eigen::ArrayXXd moments = Eigen::ArrayXXd::Zero (points.cols (), 25);
   const Eigen::ArrayXXd x = points.transpose ();
   std::vector<Eigen::Index> at_landmark (static_cast<std::size_t> (points.cols ()), -1);
@@ -90,13 +90,13 @@ MovingLeastSquaresWarp::warpBlock (const Eigen::Ref<const Eigen::Matrix3Xd>& poi
     const double total = m (0);
     const Eigen::Vector3d u_mean = m.segment<3> (1) / total, d_mean = m.segment<3> (4) / total;
     const Eigen::Matrix3d uu = Eigen::Map<const Eigen::Matrix3d> (m.data () + 7);
-    const Eigen::Matrix3d ud = Eigen::Map<const Eigen::Matrix3d> (m.data () + 16);
-    // The best affine map of the landmarks about x, p_i -> q_i, is x + d_mean + B^T A^-1 (p_i - p_mean) with the
-    // weighted covariances A = sum w (p_i - p_mean)(p_i - p_mean)^T = uu - total u_mean u_mean^T and B = sum w (p_i -
-    // p_mean)(d_i - d_mean)^T; at x itself (p - p_mean = -u_mean). A is positive definite unless the landmarks are
-    // coplanar.
+    const Eigen::Matrix3d du = Eigen::Map<const Eigen::Matrix3d> (m.data () + 16);
+    // The weighted best affine map p_i -> q_i, at x: f(x) = x + d_mean + B^T A^-1 (x - p_mean), with x - p_mean =
+    // -u_mean and the weighted covariances A = sum w (p_i - p_mean)(p_i - p_mean)^T = uu - total u_mean u_mean^T and
+    // B = sum w (p_i - p_mean)(d_i - d_mean)^T = du^T - total u_mean d_mean^T. A is positive definite unless the
+    // landmarks are coplanar.
     const Eigen::Matrix3d a = uu - total * u_mean * u_mean.transpose ();
-    const Eigen::Matrix3d b = ud.transpose () - total * u_mean * d_mean.transpose ();
+    const Eigen::Matrix3d b = du.transpose () - total * u_mean * d_mean.transpose ();
     warped.col (j) = points.col (j) + d_mean - b.transpose () * a.ldlt ().solve (u_mean);
   }
 }
