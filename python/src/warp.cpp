@@ -39,16 +39,25 @@ fitSpline (Spline& spline, const py::handle& source, const py::handle& target)
   spline.fit (from, to);
 }
 
+/** The (N, 3) \a points moved by \a transform (a callable taking and returning 3 x N points), the GIL released
+ *  while it runs. */
+template <typename Transform>
 py::array
-evaluateSpline (const Spline& spline, const py::handle& points)
+transformedPoints (const py::handle& points, Transform transform)
 {
   const PointsArgument at = pointsArgument (points, "points", 0);
   Eigen::Matrix3Xd warped;
   {
     py::gil_scoped_release released;
-    warped = spline.evaluate (at.points);
+    warped = transform (at.points);
   }
   return toArray (std::move (warped));
+}
+
+py::array
+evaluateSpline (const Spline& spline, const py::handle& points)
+{
+  return transformedPoints (points, [&] (const Eigen::Matrix3Xd& at) { return spline.evaluate (at); });
 }
 
 void
@@ -84,13 +93,7 @@ bindSpline (py::module_& m)
 py::array
 warpPoints (const MovingLeastSquaresWarp& warp, const py::handle& points)
 {
-  const PointsArgument at = pointsArgument (points, "points", 0);
-  Eigen::Matrix3Xd warped;
-  {
-    py::gil_scoped_release released;
-    warped = warp.transformPoints (at.points);
-  }
-  return toArray (std::move (warped));
+  return transformedPoints (points, [&] (const Eigen::Matrix3Xd& at) { return warp.transformPoints (at); });
 }
 
 void
