@@ -192,6 +192,7 @@ runFitPhotos (const FitPhotosOptions& options)
   const TwoViewFit fit = fitViews (options, model, profile, frontal);
 
   nlohmann::json report = twoViewFitJson (fit);
+  report["status"] = "ok";
   report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
   report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
   report["warnings"] = fitWarnings (options, fit);

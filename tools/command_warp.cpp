@@ -294,7 +294,7 @@ runWarp (const WarpOptions& options)
   if (millimetres_per_unit != 1.0 && !options.quiet)
     std::cout << "units: the inputs are in " << options.units << ", converted to mm (the output is in mm)\n";
   nlohmann::json report = {
-      {"units", "mm"}, {"input_units", options.units}, {"mesh", options.mesh}, {"output", options.out}};
+      {"status", "ok"}, {"units", "mm"}, {"input_units", options.units}, {"mesh", options.mesh}, {"output", options.out}};
   const TriangleMesh warped = warpMesh (options, inputs, report);
   if (options.truth.empty ())
     saveTriangleMesh (options.out, warped);
