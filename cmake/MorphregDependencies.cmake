@@ -9,6 +9,7 @@ find_package(HDF5 REQUIRED COMPONENTS C CXX)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(tinyxml2 REQUIRED)
 find_package(embree 3 REQUIRED) # ray casting for the scan resampler (libembree-dev)
+find_package(PNG REQUIRED) # 16-bit depth images (libpng-dev)
 
 if(TARGET hdf5::hdf5_cpp)
   set(MORPHREG_HDF5_TARGETS hdf5::hdf5_cpp hdf5::hdf5)
