@@ -251,6 +251,17 @@ foreach(case resume-after-kill interrupt shards-equal-one-run merge-other-run ot
   set_tests_properties(CliTest.Batch_${case} PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
     SKIP_RETURN_CODE 77)
 endforeach()
+# register --scans as a Slurm job array (docs/register_study.sbatch, 3 tasks, one cancelled and resubmitted) on a
+# one-node Slurm the test starts and stops (scripts/local_slurm.sh); skipped, saying why, where Slurm cannot run
+# (not installed, not root). The script docs/cluster.md shows is that file, byte for byte.
+add_test(NAME SlurmTest.JobArrayEqualsOneRun
+  COMMAND ${cli_scripts}/slurm_array.sh $<TARGET_FILE:morphreg_cli> ${cli_dir}/small_model.h5 ${cli_dir}/batch_scans
+          ${cli_dir}/slurm_array ${PROJECT_SOURCE_DIR})
+set_tests_properties(SlurmTest.JobArrayEqualsOneRun PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans"
+  SKIP_RETURN_CODE 77 TIMEOUT 900)
+add_test(NAME SlurmTest.ClusterDocShowsTheSbatchScript
+  COMMAND ${CMAKE_COMMAND} -DDOC=${PROJECT_SOURCE_DIR}/docs/cluster.md
+          -DFILE=${PROJECT_SOURCE_DIR}/docs/register_study.sbatch -P ${cli_scripts}/doc_shows_file.cmake)
 # Failing scans are recorded in the summary, naming the problem, and the others registered; exit 4 at the end.
 morphreg_cli_expect_exit(BatchFailingScanDoesNotStopTheBatch 4 "2 of 4 scans failed"
   register --scans ${cli_dir}/batch_failing.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/batch_failing
