@@ -290,8 +290,19 @@ file(WRITE ${cli_dir}/batch_shard0_only.json "{\"shard\": \"0/2\", \"scans\": [{
 morphreg_cli_expect_exit(MergeSummariesRejectsOtherJson 1 "batch.csv.json: not a batch summary"
   merge-summaries --out-dir ${cli_dir}/merge_bad ${cli_dir}/batch.csv.json)
 file(WRITE ${cli_dir}/batch.csv.json "{\"rows\": []}")
+# A lock file that is not morphreg's, a model that is not there (its content hash is taken first) and a malformed
+# test hook are named.
+file(WRITE ${cli_dir}/batch_corrupt_lock/.morphreg.lock "not a lock\n")
+morphreg_cli_expect_exit(BatchUnreadableLockIsNamed 1 "batch_corrupt_lock/.morphreg.lock: not a lock file morphreg can read"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/batch_corrupt_lock)
+morphreg_cli_expect_exit(BatchMissingModelIsNamed 1 "no_such_model.h5: no such file"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/no_such_model.h5 --out-dir ${cli_dir}/bad_batch)
+morphreg_cli_expect_exit(BatchMalformedTestHoldIsNamed 1 "MORPHREG_BATCH_TEST_HOLD='x': expected N:DIR"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/batch_bad_hold)
+set_tests_properties(CliTest.BatchMalformedTestHoldIsNamed PROPERTIES ENVIRONMENT MORPHREG_BATCH_TEST_HOLD=x)
 set_tests_properties(CliTest.BatchDuplicateIdIsNamed CliTest.BatchShardOutOfRangeIsNamed CliTest.BatchShardAutoNeedsSlurm
-  CliTest.BatchNeedsOutDir PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans")
+  CliTest.BatchNeedsOutDir CliTest.BatchUnreadableLockIsNamed CliTest.BatchMissingModelIsNamed
+  CliTest.BatchMalformedTestHoldIsNamed PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans")
 
 # build-model --from-scans: the batch scans registered with the small model and resampled, a flat scan among them
 # reported and left out; the model keeps the small model's regions and landmarks. With one usable scan it fails and
