@@ -55,6 +55,7 @@ write_config () {
   local node controller_port node_port
   node=$(hostname -s)
   controller_port=$(free_port) && node_port=$(free_port) || return 1
+  while [ "$node_port" = "$controller_port" ]; do node_port=$(free_port) || return 1; done
   : > "$dir/plugstack.conf"
   cat > "$dir/slurm.conf" << EOF
 # A one-node cluster for morphreg's tests (scripts/local_slurm.sh); everything under $dir.

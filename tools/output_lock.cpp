@@ -38,9 +38,9 @@ hostName ()
   return name;
 }
 
-/** Field 22 of /proc/<pid>/stat, the process's start time in clock ticks since boot; empty if there is no such
- *  process (or it is a zombie: dead, not yet reaped), or no /proc. */
-std::string
+/** Field 22 of /proc/<pid>/stat, the process's start time in clock ticks since boot; "" for a zombie (dead, not yet
+ *  reaped); nullopt if /proc has no such process (or there is no /proc). */
+std::optional<std::string>
 processStart (long pid)
 {
   std::ifstream stat ("/proc/" + std::to_string (pid) + "/stat");
@@ -48,13 +48,13 @@ processStart (long pid)
   std::getline (stat, text);
   const std::size_t name_end = text.rfind (')');
   if (name_end == std::string::npos)
-    return "";
+    return std::nullopt;
   std::istringstream fields (text.substr (name_end + 1));
   std::string value, state;
   fields >> state;
   for (int field = 4; field <= 22; ++field)
     if (!(fields >> value))
-      return "";
+      return std::nullopt;
   return state == "Z" ? "" : value;
 }
 
@@ -71,10 +71,12 @@ liveness (const LockOwner& owner)
 {
   if (owner.host != hostName ())
     return Liveness::unknown;
-  const std::string start = processStart (owner.pid);
-  if (start.empty ())
+  const std::optional<std::string> start = processStart (owner.pid);
+  if (!start)
     return ::kill (static_cast<pid_t> (owner.pid), 0) != 0 && errno == ESRCH ? Liveness::gone : Liveness::alive;
-  return owner.process_start.empty () || start == owner.process_start ? Liveness::alive : Liveness::gone;
+  if (start->empty ())
+    return Liveness::gone; // a zombie
+  return owner.process_start.empty () || *start == owner.process_start ? Liveness::alive : Liveness::gone;
 }
 
 std::string
@@ -104,6 +106,8 @@ readLock (const std::string& path)
     return std::nullopt;
   try {
     const nlohmann::json lock = readJsonFile (path);
+    if (lock.at ("pid").get<long> () <= 0)
+      throw FormatError (path + ": no process id");
     return LockOwner{lock.at ("pid").get<long> (),
                      lock.at ("host").get<std::string> (),
                      lock.at ("process_start").get<std::string> (),
@@ -205,7 +209,7 @@ OutputLock::OutputLock (const std::string& out_dir, int shard, int shards, const
   : path_ (lockPath (out_dir, shard, shards))
 {
   const long pid = static_cast<long> (getpid ());
-  const LockOwner self{pid, hostName (), processStart (pid), utcNow (), run, shards};
+  const LockOwner self{pid, hostName (), processStart (pid).value_or (""), utcNow (), run, shards};
   takeLock (path_, self, out);
   std::snprintf (held_lock, sizeof (held_lock), "%s", path_.c_str ());
   try {
