@@ -19,6 +19,7 @@ PACKAGES=(
   python3-dev pybind11-dev python3-pytest python3-open3d  # the Python module, its tests and its Open3D example
   clang-format          # the layout check (StyleTest.ClangFormat, .clang-format)
   doxygen               # the API reference (`docs` target) and its warning check (ctest doxygen_docs)
+  slurmctld slurmd slurm-client munge  # a one-node Slurm for the job-array test (scripts/local_slurm.sh)
 )
 
 missing=()

@@ -211,11 +211,12 @@ namespace
 reportLostFit (const RegisterOptions& options, std::size_t scan_points, const TooFewCorrespondencesError& error)
 {
   const std::string report_path = reportPath (options);
-  const nlohmann::json report = {{"status", "failed"},
-                                 {"checks", {{"passed", false}, {"failures", {error.what ()}}}},
-                                 {"scan", {{"file", options.scan}, {"points", scan_points}}},
-                                 {"settings", settingsJson (options)},
-                                 {"fitted_mesh", nullptr}};
+  nlohmann::json report = {{"status", "failed"},
+                           {"checks", {{"passed", false}, {"failures", {error.what ()}}}},
+                           {"scan", {{"file", options.scan}, {"points", scan_points}}},
+                           {"settings", settingsJson (options)},
+                           {"fitted_mesh", nullptr}};
+  addProvenance (options, report);
   writeJsonFile (report_path, report);
   throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
 }
@@ -240,6 +241,7 @@ fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model
   report["settings"] = settingsJson (options);
   report["residuals_mm"]["colour_scale_max"] = colour_scale;
   report["fitted_mesh"] = options.out;
+  addProvenance (options, report);
   return report;
 }
 

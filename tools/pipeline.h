@@ -39,7 +39,18 @@ struct RegisterOptions : RegistrationSettings
   std::string landmarks, truth;
   double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
   bool quiet = false;
+  /** Batch mode: what produces the outputs (inputs' content hashes, settings, version; batch_provenance.h),
+   *  recorded in every report the registration writes as "provenance". Null: none recorded. */
+  nlohmann::json provenance;
 };
+
+/** Copies options.provenance, if any, into \a report as "provenance". */
+inline void
+addProvenance (const RegisterOptions& options, nlohmann::json& report)
+{
+  if (!options.provenance.is_null ())
+    report["provenance"] = options.provenance;
+}
 
 /** The registration of `build-model --from-scans`: register's, but up to 60 components per region refined at a weak
  *  prior (0.2), so that each fit follows its scan and the model is built from close correspondences. */

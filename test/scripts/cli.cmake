@@ -226,11 +226,24 @@ file(WRITE ${cli_dir}/batch.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd,batch
            "batch_scans/scan_1.pcd\nbatch_scans/scan_2.pcd,,third\nbatch_scans/scan_3.pcd\n")
 file(WRITE ${cli_dir}/batch_failing.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\nno_such_scan.pcd\nbatch_scans/scan_1.pcd\n")
 file(WRITE ${cli_dir}/batch_duplicate.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd\n\nbatch_scans/scan_1.pcd,,scan_0\n")
-foreach(case resume-after-kill interrupt shards-equal-one-run)
-  morphreg_command_test(CliTest.Batch_${case} FIXTURES_REQUIRED "cli_model;cli_batch_scans" OUTPUT "passed: ${case}"
+# Resume, interruption, shards, records of what made each output and locks (test/scripts/cli/batch.sh says what
+# each case checks); exit 0 only when every check held, 77 when the case cannot apply here (skipped).
+foreach(case resume-after-kill interrupt shards-equal-one-run merge-other-run other-model changed-scan
+    changed-settings live-lock stale-lock shards-and-locks cores-from-affinity)
+  morphreg_command_test(CliTest.Batch_${case} FIXTURES_REQUIRED "cli_model;cli_batch_scans" SKIP_CODE 77
     COMMAND ${cli_scripts}/batch.sh $<TARGET_FILE:morphreg_cli> ${cli_dir}/small_model.h5 ${cli_dir}/batch.csv
             ${cli_dir}/batch_${case} ${case})
 endforeach()
+# register --scans as a Slurm job array (docs/register_study.sbatch, 3 tasks, one cancelled and resubmitted) on a
+# one-node Slurm the test starts and stops (scripts/local_slurm.sh); skipped, saying why, where Slurm cannot run
+# (not installed, not root). The script docs/cluster.md shows is that file, byte for byte.
+morphreg_command_test(SlurmTest.JobArrayEqualsOneRun FIXTURES_REQUIRED "cli_model;cli_batch_scans" SKIP_CODE 77
+  TIMEOUT 900
+  COMMAND ${cli_scripts}/slurm_array.sh $<TARGET_FILE:morphreg_cli> ${cli_dir}/small_model.h5 ${cli_dir}/batch_scans
+          ${cli_dir}/slurm_array ${PROJECT_SOURCE_DIR})
+morphreg_command_test(SlurmTest.ClusterDocShowsTheSbatchScript
+  COMMAND ${CMAKE_COMMAND} -DDOC=${PROJECT_SOURCE_DIR}/docs/cluster.md
+          -DFILE=${PROJECT_SOURCE_DIR}/docs/register_study.sbatch -P ${cli_scripts}/doc_shows_file.cmake)
 # Failing scans are recorded in the summary, naming the problem, and the others registered; exit 4 at the end.
 morphreg_cli_test(BatchFailingScanIsNamedInTheSummary FIXTURES_REQUIRED "cli_model;cli_batch_scans" EXPECT_CODE 4
   ERROR "2 of 4 scans failed" CLEAN ${cli_dir}/batch_failing REPORT ${cli_dir}/batch_failing/summary.json STATUS none
@@ -257,8 +270,19 @@ file(WRITE ${cli_dir}/batch_shard0_only.json "{\"shard\": \"0/2\", \"scans\": [{
 morphreg_cli_expect_exit(MergeSummariesRejectsOtherJson 1 "batch.csv.json: not a batch summary"
   merge-summaries --out-dir ${cli_dir}/merge_bad ${cli_dir}/batch.csv.json)
 file(WRITE ${cli_dir}/batch.csv.json "{\"rows\": []}")
+# A lock file that is not morphreg's, a model that is not there (its content hash is taken first) and a malformed
+# test hook are named.
+file(WRITE ${cli_dir}/batch_corrupt_lock/.morphreg.lock "not a lock\n")
+morphreg_cli_expect_exit(BatchUnreadableLockIsNamed 1 "batch_corrupt_lock/.morphreg.lock: not a lock file morphreg can read"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/batch_corrupt_lock)
+morphreg_cli_expect_exit(BatchMissingModelIsNamed 1 "no_such_model.h5: no such file"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/no_such_model.h5 --out-dir ${cli_dir}/bad_batch)
+morphreg_cli_expect_exit(BatchMalformedTestHoldIsNamed 1 "MORPHREG_BATCH_TEST_HOLD='x': expected N:DIR"
+  register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/batch_bad_hold)
+set_tests_properties(CliTest.BatchMalformedTestHoldIsNamed PROPERTIES ENVIRONMENT MORPHREG_BATCH_TEST_HOLD=x)
 set_tests_properties(CliTest.BatchDuplicateIdIsNamed CliTest.BatchShardOutOfRangeIsNamed CliTest.BatchShardAutoNeedsSlurm
-  CliTest.BatchNeedsOutDir PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans")
+  CliTest.BatchNeedsOutDir CliTest.BatchUnreadableLockIsNamed CliTest.BatchMissingModelIsNamed
+  CliTest.BatchMalformedTestHoldIsNamed PROPERTIES FIXTURES_REQUIRED "cli_model;cli_batch_scans")
 
 # build-model --from-scans: the batch scans registered with the small model and resampled, a flat scan among them
 # reported and left out; the model keeps the small model's regions and landmarks. With one usable scan it fails and

@@ -1,5 +1,5 @@
 # morphreg_command_test(<test name> COMMAND <program> <args>...
-#   [EXPECT_CODE n] [OUTPUT regex...] [ERROR text...] [FORBID regex] [LOG file] [EMPTY_STDERR]
+#   [EXPECT_CODE n] [SKIP_CODE n] [OUTPUT regex...] [ERROR text...] [FORBID regex] [LOG file] [EMPTY_STDERR]
 #   [MAXIMA "regex=>bound"...] [REPORT file [STATUS s] [REPORT_MATCH regex...]] [FILES file...] [ABSENT path...]
 #   [KEEP file...] [CLEAN path...] [CHECKS script... [DEFINE var=value...]] [REQUIRES_DATA path...] [CASE_DIR dir [SETUP step...]]
 #   [XVFB] [FIXTURES_REQUIRED fixture...] [FIXTURES_SETUP fixture...] [TIMEOUT seconds] [PROPERTIES ...])
@@ -15,7 +15,7 @@
 # balanced pair, or match it with '.').
 set(MORPHREG_TEST_SCRIPT_LISTS COMMAND OUTPUT ERROR MAXIMA REPORT_MATCH FILES ABSENT KEEP CLEAN CHECKS REQUIRES_DATA
     SETUP)
-set(MORPHREG_TEST_SCRIPT_VALUES EXPECT_CODE FORBID LOG REPORT STATUS CASE_DIR)
+set(MORPHREG_TEST_SCRIPT_VALUES EXPECT_CODE SKIP_CODE FORBID LOG REPORT STATUS CASE_DIR)
 set(MORPHREG_TEST_OTHER_LISTS DEFINE FIXTURES_REQUIRED FIXTURES_SETUP PROPERTIES)
 
 function(morphreg_require_balanced_brackets name argument)

@@ -2,6 +2,7 @@
 #   cmake -DCOMMAND=<program;args...> [checks...] -P run_command.cmake
 # Lists arrive ";"-separated. The run passes only when every check below holds:
 #   EXPECT_CODE   the exit code (default 0)
+#   SKIP_CODE     an exit code by which the command says the test cannot apply here: reported skipped
 #   OUTPUT        regular expressions that stdout + stderr must match
 #   ERROR         texts that stderr must contain (the file or option and the problem)
 #   FORBID        a regular expression no output line may match; crash signs (a signal, an abort, a sanitizer report,
@@ -86,6 +87,10 @@ else()
 endif()
 message("exit ${code}\nstdout: ${out}\nstderr: ${err}")
 set(output "${out}${err}")
+if(NOT "${SKIP_CODE}" STREQUAL "" AND code STREQUAL "${SKIP_CODE}")
+  message("SKIPPED: the command exited ${code}: it cannot run here (its output above says why)")
+  return()
+endif()
 
 if("${EXPECT_CODE}" STREQUAL "")
   set(EXPECT_CODE 0)
