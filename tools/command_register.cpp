@@ -385,9 +385,9 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->capture_default_str ();
   command
       ->add_option ("--components", options.components,
-                    "shape components per region: one count for all, or one per region")
-      ->check (nonNegative ())
-      ->capture_default_str ();
+                    "shape components per region: one count for all, or one per region (default: every component "
+                    "the model has, at most 60 per region)")
+      ->check (nonNegative ());
   command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
                      "point-to-plane residuals along the scan normals (default) or point-to-point");
   command
@@ -411,12 +411,20 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
                     "the scan, e.g. 0.1 with ICT-FaceKit)")
       ->check (nonNegative ())
       ->capture_default_str ();
-  command->add_option ("--landmark-weight", options.landmark_weight, "one landmark counts as this many correspondences")
+  command
+      ->add_option ("--landmark-weight", options.landmark_weight,
+                    "one landmark counts as this many correspondences in the fit (0: the landmarks only place the "
+                    "start)")
       ->check (nonNegative ())
       ->capture_default_str ();
-  command->add_flag ("--target-smoothing,!--no-target-smoothing", options.target_smoothing,
-                     "fit to each scan point projected onto its neighbours' plane (default; off for sparse or curved "
-                     "real scans)");
+  command
+      ->add_option ("--target-smoothing", options.target_smoothing,
+                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
+                    "such as depth-camera frames; the report's target_surface says what was done)")
+      ->check (CLI::IsMember ({"auto", "on", "off"}))
+      ->capture_default_str ();
+  command->add_flag_callback (
+      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
   command->add_option ("--units", options.units, "the scan's length unit: auto (from its size), mm, cm, m or in")
       ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
       ->capture_default_str ();

@@ -293,8 +293,11 @@ runWarp (const WarpOptions& options)
   std::tie (inputs.source, inputs.target) = namedLandmarkPairs (options.source, options.target, millimetres_per_unit);
   if (millimetres_per_unit != 1.0 && !options.quiet)
     std::cout << "units: the inputs are in " << options.units << ", converted to mm (the output is in mm)\n";
-  nlohmann::json report = {
-      {"status", "ok"}, {"units", "mm"}, {"input_units", options.units}, {"mesh", options.mesh}, {"output", options.out}};
+  nlohmann::json report = {{"status", "ok"},
+                           {"units", "mm"},
+                           {"input_units", options.units},
+                           {"mesh", options.mesh},
+                           {"output", options.out}};
   const TriangleMesh warped = warpMesh (options, inputs, report);
   if (options.truth.empty ())
     saveTriangleMesh (options.out, warped);

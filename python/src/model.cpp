@@ -104,6 +104,8 @@ regionComponentCounts (const MorphableModel& model)
 std::vector<int>
 componentCounts (const py::handle& components)
 {
+  if (components.is_none ())
+    return {};
   if (py::isinstance<py::int_> (components))
     return {components.cast<int> ()};
   if (py::isinstance<py::sequence> (components) && !py::isinstance<py::str> (components)) {

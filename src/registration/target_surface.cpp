@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace morphreg
 {
@@ -29,6 +30,42 @@ isBoundaryPoint (const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, c
   for (size_t k = 1; k < angles.size (); ++k)
     gap = std::max (gap, angles[k] - angles[k - 1]);
   return gap > 0.5 * M_PI;
+}
+
+double
+median (std::vector<double> values)
+{
+  std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
+  return values[values.size () / 2];
+}
+
+/** The noise of \a points over their neighbourhoods' radius (see kNoisyTargetRatio): the median over up to 500
+ *  points, spread evenly through the target's order, of each one's plane residual over its neighbourhood's radius. */
+double
+measureNoiseRatio (const Eigen::Matrix3Xd& points, const TargetSurface::NeighbourSearch& search, int neighbours)
+{
+  const Eigen::Index n = points.cols ();
+  const int k = std::min<int> (neighbours, static_cast<int> (n));
+  if (n < 4)
+    return 0.0;
+  const Eigen::Index step = std::max<Eigen::Index> (1, n / 500);
+  std::vector<double> ratios;
+  pcl::Indices indices;
+  std::vector<float> squared;
+  for (Eigen::Index i = 0; i < n; i += step) {
+    search (static_cast<pcl::index_t> (i), k, indices, squared);
+    Eigen::Matrix3Xd neighbourhood (3, indices.size ());
+    for (size_t j = 0; j < indices.size (); ++j)
+      neighbourhood.col (static_cast<Eigen::Index> (j)) = points.col (indices[j]);
+    const PointPlane plane = fitPlane (neighbourhood);
+    const double radius = squared.empty () ? 0.0 : std::sqrt (squared.back ());
+    if (!plane.normal.allFinite () || !(radius > 0.0))
+      continue;
+    const double residual = std::sqrt (
+        (plane.normal.transpose () * (neighbourhood.colwise () - plane.centroid)).squaredNorm () / indices.size ());
+    ratios.push_back (residual / radius);
+  }
+  return ratios.empty () ? 0.0 : median (ratios);
 }
 } // namespace
 
@@ -56,16 +93,37 @@ TargetSurface::setNeighbours (int k)
 }
 
 void
-TargetSurface::setSmoothing (bool enabled)
+TargetSurface::setSmoothing (TargetSmoothing smoothing)
 {
-  if (enabled != smoothing_)
+  if (smoothing != mode_)
     reset ();
-  smoothing_ = enabled;
+  mode_ = smoothing;
+}
+
+bool
+TargetSurface::getSmoothing ()
+{
+  decideSmoothing ();
+  return smoothing_;
+}
+
+void
+TargetSurface::decideSmoothing ()
+{
+  if (decided_)
+    return;
+  decided_ = true;
+  smoothing_ = mode_ == TargetSmoothing::on;
+  if (mode_ != TargetSmoothing::automatic || !search_)
+    return;
+  noise_ratio_ = measureNoiseRatio (raw_points_, search_, neighbours_);
+  smoothing_ = noise_ratio_ > kNoisyTargetRatio;
 }
 
 void
 TargetSurface::reset ()
 {
+  decided_ = false;
   const Eigen::Index n = raw_points_.cols ();
   points_.resize (3, n);
   normals_.setZero (3, n);
@@ -79,6 +137,7 @@ TargetSurface::compute (const pcl::Correspondences& correspondences)
 {
   if (!search_)
     throw InvalidInputError ("TargetSurface: no target (call setInputTarget)");
+  decideSmoothing ();
   std::vector<pcl::index_t> pending;
   for (const pcl::Correspondence& c : correspondences)
     if (!ready_[static_cast<size_t> (c.index_match)]) {

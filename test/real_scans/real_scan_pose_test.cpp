@@ -4,6 +4,7 @@
 #include "support/sample_count.h"
 
 #include <morphreg/registration/fit_plausibility.h>
+#include <morphreg/registration/registration_result_json.h>
 
 #include <gtest/gtest.h>
 
@@ -45,12 +46,8 @@ runPose (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Matrix4d& 
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   const auto& report = icp.getRegistrationReport ();
   const auto face = faceDistance (fitInScanFrame (icp, pose, unit_scale));
-  // register's checks, on the fit in mm (the fitted vertices and the similarity back from the scan's unit)
-  const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
-  const morphreg::MorphableModel& model = *icp.getModel ();
-  const morphreg::FitPlausibility checks = morphreg::checkFitPlausibility (
-      std::cbrt (linear.determinant ()) / unit_scale, icp.getFittedVertices () / unit_scale, icp.getVertexResiduals (),
-      icp.getShapeCoefficients ().cwiseQuotient (model.variances (icp.getComponentSelection ()).cwiseSqrt ()), report);
+  // register's checks, on the fit in mm whatever the scan's unit
+  const morphreg::FitPlausibility checks = morphreg::checkRegistration (icp, *icp.getModel ());
   for (const std::string& failure : checks.failures)
     ADD_FAILURE () << name << " pose " << k << ": " << failure;
   std::printf ("[ real scan ] %s pose %2d: %s in %zu iterations, %.1f s, unit %s, confidence %.2f, %d points on the "

@@ -273,24 +273,27 @@ TEST_F (MorphableIcpTest, PhasePriorWeightReplacesTheRegistrationsAndIsValidated
 
 TEST_F (MorphableIcpTest, PlausibilityHoldsLeadingComponentsToTheSigmaLimit)
 {
-  // A coefficient 7 sigma out along the nose's 15th component passes the sigma check, along its 2nd it does not.
+  // A coefficient 11 sigma out along the nose's 15th component passes the sigma check, along its 2nd it does not.
   const MorphableModel& model = **model_;
   const morphreg::ComponentSelection selection = model.firstComponents (20);
-  const int leading = morphreg::FitPlausibilitySettings ().leading_components, nose = 1;
+  const morphreg::FitPlausibilitySettings settings;
+  const int leading = settings.leading_components, nose = 1;
+  const double sigmas = settings.max_sigma + 1.0;
   for (const int component : {14, 1}) {
     Eigen::VectorXd coefficients = Eigen::VectorXd::Zero (selection.total ());
     const int index = selection.offset (nose) + component;
-    coefficients[index] = 7.0 * std::sqrt (model.variances (selection)[index]);
+    coefficients[index] = sigmas * std::sqrt (model.variances (selection)[index]);
     const Eigen::VectorXd kept = morphreg::leadingCoefficientsInSigma (model, selection, coefficients, leading);
     ASSERT_EQ (kept.size (), model.numRegions () * leading);
-    EXPECT_NEAR (kept.cwiseAbs ().maxCoeff (), component < leading ? 7.0 : 0.0, 1e-9) << component;
+    EXPECT_NEAR (kept.cwiseAbs ().maxCoeff (), component < leading ? sigmas : 0.0, 1e-9) << component;
     if (component < leading) {
-      EXPECT_NEAR (kept[nose * leading + component], 7.0, 1e-9) << "stacked region by region";
+      EXPECT_NEAR (kept[nose * leading + component], sigmas, 1e-9) << "stacked region by region";
     }
     const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
-    const morphreg::FitPlausibility verdict = morphreg::checkFitPlausibility (
-        1.0, mean, Eigen::VectorXd::Zero (model.numVertices ()), kept, morphreg::IcpReport ());
-    EXPECT_EQ (verdict.plausible, component >= leading) << component;
+    const morphreg::FitMeasures measures = morphreg::measureFit (
+        model, selection, coefficients, Eigen::Matrix4d::Identity (), mean,
+        Eigen::VectorXd::Zero (model.numVertices ()), Eigen::Matrix3Xd (), morphreg::IcpReport (), leading);
+    EXPECT_EQ (morphreg::checkFitPlausibility (measures).plausible, component >= leading) << component;
   }
 }
 

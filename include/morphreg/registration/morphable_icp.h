@@ -300,12 +300,23 @@ public:
 
   /** \brief Residuals against each target point projected onto the least-squares plane of its neighbourhood
    *  (the k of setRejectTargetBoundary) instead of the raw point: scan noise then averages out instead of pulling
-   *  the model towards the nearest noisy points. On by default; the k-d tree still holds the raw points, and the
+   *  the model towards the nearest noisy points. Automatic by default: on for noisy targets (depth cameras), off for
+   *  clean ones, where a plane through a curved, sparsely sampled neighbourhood pulls the surface inwards (see
+   *  TargetSmoothing; the report says what was decided). The k-d tree still holds the raw points, and the
    *  correspondences' distances are measured to the smoothed points before any rejector sees them.
+   *  \param[in] smoothing on, off or automatic
+   */
+  void
+  setTargetSmoothing (TargetSmoothing smoothing);
+
+  /** \brief setTargetSmoothing with on (true) or off (false).
    *  \param[in] enabled false to use the raw target points
    */
   void
-  setTargetSmoothing (bool enabled);
+  setTargetSmoothing (bool enabled)
+  {
+    setTargetSmoothing (enabled ? TargetSmoothing::on : TargetSmoothing::off);
+  }
 
   /** \brief Stop and revert to the best state when a coefficient exceeds \a max_sigma prior standard deviations
    *  (<= 0: never; default 8) or, in a shape phase, the cost per row stayed above 1.05 times the phase's best for

@@ -177,9 +177,9 @@ MorphableICP<PointTarget, Scalar>::setRejectTargetBoundary (bool enabled, int ne
 
 template <typename PointTarget, typename Scalar>
 void
-MorphableICP<PointTarget, Scalar>::setTargetSmoothing (bool enabled)
+MorphableICP<PointTarget, Scalar>::setTargetSmoothing (TargetSmoothing smoothing)
 {
-  target_surface_->setSmoothing (enabled);
+  target_surface_->setSmoothing (smoothing);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -671,6 +671,8 @@ MorphableICP<PointTarget, Scalar>::finish (PoseShapeState state, const PoseShape
   for (size_t c = 0; c < final_ev.kept.size (); ++c)
     vertex_residuals_[final_ev.kept[c].index_query] = final_ev.distances[c];
   report_.correspondences = static_cast<int> (final_ev.kept.size ());
+  report_.target_smoothing = target_surface_->getSmoothing ();
+  report_.target_noise_ratio = target_surface_->getNoiseRatio ();
   if (!final_ev.distances.empty ()) {
     const Eigen::Map<const Eigen::VectorXd> d (final_ev.distances.data (), final_ev.distances.size ());
     report_.fitness_mean = d.mean ();
