@@ -1,12 +1,14 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/ict_facekit.h>
 #include <morphreg/model/ict_region_model.h>
+#include "support/accuracy_bound.h"
 #include "support/temp_directory.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 
 using morphreg::MorphableModel;
 
@@ -157,5 +159,9 @@ TEST (ModelBuilderTest, IctSevenRegionModelFromSamples)
   const auto projection = regional->project (head, regional->allComponents (), 1e-3);
   const Eigen::Map<const Eigen::VectorXd> flat (head.data (), head.size ());
   const double mean_error = std::sqrt ((flat - regional->mean ()).squaredNorm () / static_cast<double> (head.cols ()));
-  EXPECT_LT (projection.rms_error, 0.75 * mean_error);
+  std::cout << "fresh ICT head: projection RMS " << projection.rms_error << " mm, the mean head " << mean_error
+            << " mm\n";
+  // Measured: 4.23 mm; the mean head (the no-op) 7.36 mm.
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, projection.rms_error, 5.0);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, mean_error, 5.0);
 }
