@@ -177,19 +177,11 @@ TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
       coverage, extremeOf (heads, &HeadFigures::coverage, true), folded, medianOf (heads, &HeadFigures::fit_observed));
   constexpr double kObservedBound = 0.115;
   EXPECT_LT (kObservedBound, morphreg::synthetic::ScanSimulator::Parameters ().noise_sigma);
-  // A capped run (MORPHREG_TEST_SAMPLES) takes its medians over fewer heads: it checks the bounds, not their slack.
-  const bool capped = static_cast<int> (heads.size ()) < kHeads;
-  const auto expectAtMost = [&] (const char* what, double figure, double bound) {
-    if (capped)
-      EXPECT_LE (figure, bound) << what;
-    else
-      EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, figure, bound) << what;
+  const auto expectAtMost = [] (const char* what, double figure, double bound) {
+    EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, figure, bound) << what;
   };
-  const auto expectAtLeast = [&] (const char* what, double figure, double bound) {
-    if (capped)
-      EXPECT_GE (figure, bound) << what;
-    else
-      EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, figure, bound) << what;
+  const auto expectAtLeast = [] (const char* what, double figure, double bound) {
+    EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, figure, bound) << what;
   };
   expectAtMost ("median observed RMS", observed, kObservedBound);
   expectAtMost ("largest observed RMS", extremeOf (heads, &HeadFigures::observed), 0.125);
