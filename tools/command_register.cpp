@@ -11,6 +11,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/depth_image_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
@@ -25,7 +26,10 @@
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
+#include <pcl/common/io.h>
+
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -156,24 +160,48 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
 } // namespace
 
 /** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path)
+ScanCloud
+loadScan (const RegisterOptions& options)
 {
-  auto scan = loadCloud<pcl::PointNormal> (path);
+  const std::string& path = options.scan;
+  pcl::PointCloud<pcl::PointNormal>::Ptr scan;
+  if (options.intrinsics.empty ())
+    scan = loadCloud<pcl::PointNormal> (path);
+  else { // a depth image: its organised cloud in mm, no normals
+    const DepthImage image = loadDepthPng (path);
+    DepthIntrinsics camera = loadDepthIntrinsics (options.intrinsics);
+    if (camera.width != image.width || camera.height != image.height)
+      throw InvalidInputError (path + ": the depth image is " + std::to_string (image.width) + " x " +
+                               std::to_string (image.height) + " pixels, the camera of " + options.intrinsics + " " +
+                               std::to_string (camera.width) + " x " + std::to_string (camera.height));
+    scan.reset (new pcl::PointCloud<pcl::PointNormal>);
+    pcl::copyPointCloud (*depthImageToCloud (image.depth, camera), *scan);
+    for (auto& point : *scan)
+      point.normal_x = point.normal_y = point.normal_z = std::numeric_limits<float>::quiet_NaN ();
+  }
+  const std::optional<Eigen::Vector3d> viewpoint =
+      scan->isOrganized () ? std::optional<Eigen::Vector3d> (scan->sensor_origin_.head<3> ().cast<double> ())
+                           : std::nullopt;
   dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (pointsOf (*scan), path);
   scan->is_dense = true;
-  return scan;
+  return {scan, viewpoint};
 }
 
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out)
+convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out)
 {
-  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
+  if (!options.intrinsics.empty () && options.units != "auto" && options.units != "mm")
+    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
+  const std::string units = options.intrinsics.empty () ? options.units : "mm";
+  const LengthUnitGuess unit =
+      morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
+  if (scan.viewpoint)
+    *scan.viewpoint *= millimetresPer (unit.unit);
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   return unit;
@@ -290,10 +318,12 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const auto scan = loadScan (options.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
+  ScanCloud loaded = loadScan (options);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, options, *model, out);
   Icp icp;
   configureRegistration (icp, options, model);
+  icp.setTargetViewpoint (loaded.viewpoint);
   if (!options.landmarks.empty ())
     icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
   icp.setInputTarget (scan);
@@ -440,6 +470,14 @@ registerRegisterCommand (CLI::App& app)
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
   auto* scan =
       command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
+  auto* depth = command->add_option ("--depth", options->scan,
+                                     "a depth camera's image as the scan: a 16-bit PNG of depths in mm (needs "
+                                     "--intrinsics)");
+  auto* intrinsics =
+      command->add_option ("--intrinsics", options->intrinsics,
+                           "the depth camera of --depth: JSON with width, height, fx, fy, cx, cy (pixels)");
+  depth->excludes (scan)->needs (intrinsics);
+  intrinsics->needs (depth);
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
       ->capture_default_str ();
@@ -459,9 +497,9 @@ registerRegisterCommand (CLI::App& app)
                    "report's status \"failed\"; a fit that loses the scan (too few correspondences) exits 4 with "
                    "the report alone.");
   auto batch = std::make_shared<BatchOptions> ();
-  addBatchOptions (command, *options, *batch)->excludes (scan);
-  command->callback ([options, batch, command, scan] () {
-    if (options->scans.empty () && scan->count () == 0)
+  addBatchOptions (command, *options, *batch)->excludes (scan)->excludes (depth);
+  command->callback ([options, batch, command, scan, depth] () {
+    if (options->scans.empty () && scan->count () == 0 && depth->count () == 0)
       throw CLI::RequiredError ("--scan or --scans");
     runRegister (*options, *batch);
   });

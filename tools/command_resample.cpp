@@ -58,8 +58,9 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
   const RegisterOptions& registration = options.registration;
   if (registration.landmarks.empty ())
     throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
-  const auto scan = loadScan (registration.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, registration, model, std::cout);
+  ScanCloud loaded = loadScan (registration);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, registration, model, std::cout);
   const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);
   requireLandmarksOnScan (landmarks, pointsOf (*scan), registration.landmarks);
   const TriangleMesh reference =

@@ -43,12 +43,19 @@ distanceFromHeadSize (double size_ratio, LengthUnit unit)
          (unit == LengthUnit::inch ? kInchHandicap : 0.0);
 }
 
-/** The unit whose reading puts the scan closest to the expected head size. */
+/** The units a depth camera's view may be in. */
+constexpr LengthUnit kViewUnits[] = {LengthUnit::millimetre, LengthUnit::metre};
+
+/** A depth camera's view may hold the room around the person: up to this size against the model. */
+constexpr double kMaxViewRatio = 40.0;
+
+/** The unit of \a candidates whose reading puts the scan closest to the expected head size. */
+template <typename Units>
 LengthUnit
-closestUnit (double size_ratio)
+closestUnit (double size_ratio, const Units& candidates)
 {
   LengthUnit best = LengthUnit::millimetre;
-  for (LengthUnit unit : kUnits)
+  for (LengthUnit unit : candidates)
     if (distanceFromHeadSize (size_ratio, unit) < distanceFromHeadSize (size_ratio, best))
       best = unit;
   return best;
@@ -115,7 +122,7 @@ parseLengthUnit (const std::string& name)
 }
 
 LengthUnitGuess
-guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm)
+guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm, bool one_view)
 {
   if (points.cols () < 4 || !points.allFinite ())
     throw InvalidInputError ("guessLengthUnit: need at least 4 finite points, got " + std::to_string (points.cols ()) +
@@ -126,9 +133,9 @@ guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm)
   const double radius = robustRadius (points);
   LengthUnitGuess guess;
   guess.size_ratio = radius / model_radius_mm;
-  guess.unit = closestUnit (guess.size_ratio);
+  guess.unit = one_view ? closestUnit (guess.size_ratio, kViewUnits) : closestUnit (guess.size_ratio, kUnits);
   const double relative = guess.size_ratio * millimetresPer (guess.unit);
-  const bool head_sized = relative >= kMinHeadRatio && relative <= kMaxHeadRatio;
+  const bool head_sized = relative >= kMinHeadRatio && relative <= (one_view ? kMaxViewRatio : kMaxHeadRatio);
   guess.reason = explainGuess (radius, model_radius_mm, guess.unit, relative, head_sized);
   if (!head_sized)
     guess.unit = LengthUnit::millimetre;

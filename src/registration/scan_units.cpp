@@ -37,11 +37,11 @@ modelRadius (const MorphableModel& model)
 
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
-                          const MorphableModel& model, const std::string& scan_name)
+                          const MorphableModel& model, const std::string& scan_name, bool one_view)
 {
   LengthUnitGuess unit;
   if (units == "auto") {
-    unit = guessLengthUnit (pointsOf (scan), modelRadius (model));
+    unit = guessLengthUnit (pointsOf (scan), modelRadius (model), one_view || scan.isOrganized ());
     requireHeadScale (unit, scan_name);
   }
   else {

@@ -62,14 +62,18 @@ struct LengthUnitGuess
  *  recognised in every unit; a wider head-and-shoulders scan (over 1.88) in inches is taken for cm, and a face alone
  *  (about 0.5) is recognised in mm and m but taken for inches in cm: give the unit in those cases.
  *
+ *  A depth camera's view (\a one_view: an organised cloud) is read in mm or m only (depth images hold mm, PCL's
+ *  grabbers deliver metres) and may be up to 40 times the model (the room around the person).
+ *
  *  \param[in] points the scan's points, 3 x N, in their file's unit
  *  \param[in] model_radius_mm the model's RMS radius in mm
+ *  \param[in] one_view whether the scan is one depth camera's view
 
  *  \return the unit, r and one sentence with the numbers, e.g. "the scan's RMS radius is 0.128 against the model's
  *  104 mm: taken as m (x1000 to mm), it is 1.23 times the model".
  *  Throws InvalidInputError for fewer than 4 or non-finite points, or a non-positive model radius.
  */
 LengthUnitGuess
-guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm);
+guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm, bool one_view = false);
 
 } // namespace morphreg

@@ -20,10 +20,12 @@ namespace morphreg
  *  \param[in] units the scan's unit, or "auto"
  *  \param[in] model the model it will be registered to (mm)
  *  \param[in] scan_name the scan's name for messages (its file)
+ *  \param[in] one_view whether the scan is one depth camera's view (see guessLengthUnit); an organised \a scan is
+ *  one in any case
  *  \return the unit used, the size ratio and why
  */
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
-                          const MorphableModel& model, const std::string& scan_name);
+                          const MorphableModel& model, const std::string& scan_name, bool one_view = false);
 
 } // namespace morphreg
