@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 set(MORPHREG_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/morphreg")
 
 # morphreg_add_component(<name> FOLDERS <src folders> [PUBLIC <deps>] [PRIVATE <deps>]): the shared library

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # install() rules and the exported CMake package: find_package(morphreg [COMPONENTS core photo synthetic
 # visualization]) defines morphreg::<component>; with no components, every one and morphreg::morphreg.
 # The components' export files are written by morphreg_add_component (cmake/MorphregComponents.cmake).

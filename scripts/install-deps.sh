@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the Debian packages morphreg needs to build, test and run its demo.
 # Idempotent: packages already installed are left alone; apt-get update runs before any install.
 # Must run as root (or with sudo available). Fails loudly when a package cannot be installed.

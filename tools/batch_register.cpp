@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register --scans`: a study's scans registered to one model, loaded once, several at a time;
 // resumable (a scan's report on disk means it is done), shardable over a job array, summarised.
 #include "batch_summary.h"

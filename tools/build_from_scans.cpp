@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model --from-scans`: every raw scan of a study registered with a given model and resampled into its
 // topology (as `resample` does), the scans that fail reported and left out, and the model built from the rest.
 #include "batch_summary.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
 #include "commands.h"
 #include "mesh_annotations.h"

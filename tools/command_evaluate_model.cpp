@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg evaluate-model`: a model's compactness, generalisation (on held-out meshes) and specificity (against its
 // training meshes), per number of components, as text or JSON.
 #include "commands.h"

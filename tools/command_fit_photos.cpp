@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg fit-photos`: a head model fitted to an annotated profile photo and frontal photo (docs/method.md,
 // "Fitting to two orthogonal photographs"),
 // written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.

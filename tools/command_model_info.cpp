@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg model-info`: what a model file holds (regions, components, variances, landmarks), as text or JSON.
 #include "commands.h"
 

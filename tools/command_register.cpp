@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"

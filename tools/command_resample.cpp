@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg resample`: a scan + a model file -> the scan's surface in the model's topology. The scan is registered
 // exactly as `register` does it, then ScanResampler moves the fitted mesh's vertices onto the scan along their normals
 // and fills the holes; writes the resampled mesh (vertex colours: observed / filled), the fitted mesh and one JSON

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg warp`: a mesh warped from source to target landmarks by a thin plate spline, globally or by segments
 // with blended seams, by moving least squares (--method mls), or re-postured with rigid bones (--method
 // articulated); with --truth, the warp's error per vertex (colours of the output PLY) and in the report.

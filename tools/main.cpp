@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The morphreg command line: subcommands are registered by the tools/command_*.cpp files.
 #include "commands.h"
 #include "console.h"

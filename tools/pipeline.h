@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
 #include "scan_resampling.h"

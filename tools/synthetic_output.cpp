@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "synthetic_output.h"
 #include "mesh_annotations.h"
 #include "progress.h"

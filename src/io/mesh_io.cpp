@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "off_reader.h"
 #include "vtk_reader.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/registration/registration_result_json.h>
 

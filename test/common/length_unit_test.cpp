@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // guessLengthUnit on head-sized point sets in every unit, the sizes each unit is recognised over, and the unit
 // symbols; the scan checks and the fit's plausibility checks are in test/registration/scan_checks_test.cpp.
 #include <morphreg/common/error.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Independent HDF5 reader/writer (h5py) for the model-file tests: it follows the statismo v0.9 layout as
 documented in include/morphreg/io/model_io.h and shares no code with morphreg.
 

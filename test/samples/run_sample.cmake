@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs one sample for a SampleTest and checks what it did. Variables (lists):
 #   COMMAND   the program and its arguments
 #   OUT_DIR   removed before the run, so the files checked below cannot be left over from an earlier run

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # CliTest: the command line end to end on small synthetic inputs; bad arguments exit 2, bad files exit 1 with a
 # message naming the file (checked by test/scripts/cli/expect_exit.cmake).
 if(NOT TARGET morphreg_cli)

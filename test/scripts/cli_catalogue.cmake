@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The bad-input catalogue (CliTest.BadInput.*): files and arguments a hostile or careless user gives each subcommand.
 # Every case runs in its own folder with copies of its inputs (test/scripts/cli/expect_bad_input.cmake) and asserts
 # the exit code, that stderr names the file or option and the problem, that the inputs are unchanged and that no

@@ -1,7 +1,13 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # StyleTest: the layout rules a reviewer would otherwise check by hand. No function in src/, include/ or python/src/ is longer
-# than 60 lines (scripts/check_function_length.py), and every C++ file is formatted by the project's .clang-format
-# (clang-format from scripts/install-deps.sh).
+# than 60 lines (scripts/check_function_length.py), every C++ file is formatted by the project's .clang-format
+# (clang-format from scripts/install-deps.sh), and every source file names its licence in an SPDX line
+# (scripts/check_spdx.py looks at every file of the tree, so files added later are checked too).
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
+add_test(NAME StyleTest.SpdxLicenceLines
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_spdx.py ${PROJECT_SOURCE_DIR})
+add_test(NAME StyleTest.SpdxCheckerFindsMissingLines
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_spdx.py --self-test)
 add_test(NAME StyleTest.FunctionsAreAtMost60Lines
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_function_length.py --max-lines 60
           ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR}/python/src

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file length_unit.h
  *  \brief Length units of scans (mm, cm, m, inches) and a guess of a scan's unit from its size against a head model.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file ict_facekit.h
  *  \brief Import of the ICT-FaceKit head model (ICT Face Model Light, head and neck part) as shipped in

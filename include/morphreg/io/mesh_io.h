@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mesh_io.h
  *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL; OFF read) on top of PCL's readers, with errors that name

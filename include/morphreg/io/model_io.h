@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file model_io.h
  *  \brief MorphableModel files: HDF5 in the statismo v0.9 layout (readable by statismo/scalismo tools as a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file polygon_mesh_conversion.h
  *  \brief Conversion between morphreg::TriangleMesh and pcl::PolygonMesh.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Batch registration end to end: batch.sh <morphreg> <model.h5> <manifest.csv> <work dir> <case>
 #   resume-after-kill     a run killed (SIGKILL) after its first finished scan, then rerun: no finished scan is
 #                         redone or lost, every scan ends complete, no partial file is left

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DPNG=file.png -DWIDTH=w -DHEIGHT=h -P check_png.cmake
 # Checks that the file is a PNG of the given size (signature and IHDR chunk) and not trivially small.
 file(SIZE "${PNG}" bytes)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DREPORT=file.json -DMAX_TRUTH_RMS=mm -P check_register_report.cmake
 # Checks a `morphreg register` report: the similarity, coefficients per region, residual statistics, the iteration
 # history (one entry per iteration), the termination reason, timings and the error against the truth.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DARGS="program|arg|..." -DREPORT=file.json -DUNITS=mm|cm|m|in -DDETECTION=auto|given
 #       -P check_register_units.cmake
 # Runs `morphreg register` and passes when the fit succeeds (exit 0, report status "ok") with the scan's unit UNITS,

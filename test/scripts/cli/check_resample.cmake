@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DARGS="program|arg|..." -DREPORT=file.json -DMESH=resampled.ply -DFIT=fit.ply -DEXPECT_CODE=n
 #       [-DEXPECT_TEXT=text] [-DMIN_COVERAGE=c] -P check_resample.cmake
 # Runs `morphreg resample`. Exit 0 expected: the report's status and resampling status are "ok", the coverage is at

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DARGS="program|arg|..." -DLOG=file [-DEXPECT_CODE=n] [-DREQUIRE=regex] [-DFORBID=regex] [-DEMPTY=ON]
 #       -P check_stderr.cmake
 # Runs the program with its stderr written to the file LOG (not a terminal, as in a batch job's log), expects exit

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # One case of the bad-input catalogue (test/scripts/cli_catalogue.cmake):
 #   cmake -DCASE_DIR=dir -DARGS="program|arg|..." -DEXPECT_CODE=n -DEXPECT_TEXT="a|b|..." [-DSETUP="op,src,dst[,n]|..."]
 #         [-DFORBID_TEXT="regex"] -P expect_bad_input.cmake

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DARGS="program|arg|..." -DEXPECT_CODE=n -DEXPECT_TEXT=text [-DREPORT=file.json] -P expect_exit.cmake
 # Runs the program and passes when it exits with EXPECT_CODE and its stderr contains EXPECT_TEXT; with REPORT, also
 # when that JSON report was written and its "status" is "failed".
