@@ -3,6 +3,7 @@
 // "Fitting to two orthogonal photographs"),
 // written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
 
@@ -152,8 +153,8 @@ printFitSummary (const FitPhotosOptions& options, const TwoViewFit& fit, bool wi
               << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
 }
 
-/** Writes the fitted mesh coloured by its error against --truth, by the frontal --photo, or plain; returns what
- *  the colours show.
+/** Writes the fitted mesh coloured by its error against --truth (with the error as its quality), by the frontal
+ *  --photo, or plain; returns what the colours show.
  */
 std::string
 writeFittedMesh (const FitPhotosOptions& options, const TwoViewFit& fit, const std::optional<FrontalView>& frontal,
@@ -161,7 +162,7 @@ writeFittedMesh (const FitPhotosOptions& options, const TwoViewFit& fit, const s
 {
   if (!options.truth.empty ()) {
     const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
-    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max)));
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max), errors));
     return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
   }
   if (!options.photo.empty ()) {
@@ -204,7 +205,11 @@ runFitPhotos (const FitPhotosOptions& options)
   if (!options.report.empty ())
     writeJsonFile (options.report, report);
   outputs.keep ();
-  std::cout << "wrote " << options.out << " (model frame, mm; colours: " << colouring << ")\n";
+  std::cout << "wrote " << options.out << " (model frame, mm) "
+            << (colouring == "none" ? "(no colours)"
+                                    : meshContents (options.out, colouring,
+                                                    options.truth.empty () ? "" : "error against the truth in mm"))
+            << '\n';
 }
 } // namespace
 
@@ -262,7 +267,11 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--colour-max", options->colour_max, "error (mm) at the top of the colour scale with --truth")
       ->check (positive ())
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "fitted head to write (PLY, model frame, mm)")->capture_default_str ();
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("fitted head to write (model frame, mm); with --truth or --photo",
+                                    "error against the truth, or the frontal photo", "with --truth, the error in mm"))
+      ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write");
   command->add_flag ("-q,--quiet", options->quiet, "less output");
   command->callback ([options] () { runFitPhotos (*options); });

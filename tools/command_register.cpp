@@ -2,6 +2,7 @@
 // `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "pipeline.h"
@@ -250,11 +251,13 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
              double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
 {
   const std::string report_path = reportPath (options);
+  std::ostringstream colours;
+  colours << "residual, 0-" << colour_scale << " mm";
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
-      << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
-      << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << "wrote " << options.out << ' ' << meshContents (options.out, colours.str (), "residual in mm") << ", "
+      << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
@@ -306,7 +309,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
-  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
+  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale), residuals);
   savePolygonMesh (options.out, coloured);
   const double write_seconds = secondsSince (write_start);
 
@@ -432,7 +435,7 @@ registerRegisterCommand (CLI::App& app)
   auto* scan =
       command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
+  command->add_option ("-o,--out", options->out, meshOutputHelp ("fitted mesh to write", "residual", "residual in mm"))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,

@@ -4,6 +4,7 @@
 // and fills the holes; writes the resampled mesh (vertex colours: observed / filled), the fitted mesh and one JSON
 // report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
+#include "mesh_output.h"
 #include "output_files.h"
 #include "pipeline.h"
 #include "scan_resampling.h"
@@ -47,7 +48,7 @@ resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::Po
     std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
               << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
               << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
-              << options.out << " (vertex colours: grey observed, orange filled)\n";
+              << options.out << ' ' << meshContents (options.out, "grey observed, orange filled", "") << '\n';
 }
 
 /** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
@@ -120,7 +121,9 @@ registerResampleCommand (CLI::App& app)
                     "by a thin plate spline onto --landmarks, METHOD section 5; no registration)")
       ->check (CLI::IsMember ({"fit", "landmarks"}))
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "resampled mesh to write (PLY; colours: observed / filled)")
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("resampled mesh to write", "grey observed, orange filled", ""))
       ->capture_default_str ();
   command->add_option ("--fit-out", registration.out,
                        "the reference (the fit, or the warped mean) to write (default: the --out path + _fit)");

@@ -83,6 +83,17 @@ set_tests_properties(CliTest.RegisterSynthScanMatchesTruth PROPERTIES FIXTURES_R
 add_test(NAME CliTest.RegisterReportIsComplete
   COMMAND ${CMAKE_COMMAND} -DREPORT=${cli_dir}/fit.json -DMAX_TRUTH_RMS=1.0 -P ${cli_scripts}/check_register_report.cmake)
 set_tests_properties(CliTest.RegisterReportIsComplete PROPERTIES FIXTURES_REQUIRED cli_fit)
+# The fitted mesh in each format other tools open: the "wrote" line says what the format carries, and the file,
+# read back by an independent reader, carries it (PLY: colours and the residual as vertex quality; OBJ: v x y z r g b;
+# VTK: colours).
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+foreach(format ply obj vtk)
+  add_test(NAME CliTest.RegisterOutputCarriesWhatItSays.${format}
+    COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_mesh_output.py $<TARGET_FILE:morphreg_cli>
+            ${cli_dir}/fit_format.${format} --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5)
+  set_tests_properties(CliTest.RegisterOutputCarriesWhatItSays.${format} PROPERTIES
+    FIXTURES_REQUIRED "cli_small;cli_model")
+endforeach()
 # The synthetic scan's landmarks are exact: weighted 10 (the default 1 suits landmarks placed with a few mm of error).
 add_test(NAME CliTest.RegisterWithRejectorChainAndLandmarks
   COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
