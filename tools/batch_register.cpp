@@ -4,6 +4,7 @@
 #include "batch_summary.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -194,7 +195,7 @@ registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& mo
         {"scan", {{"file", options.scan}, {"landmarks", options.landmarks}}},
         {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
     const std::string path = reportPath (options);
-    writeJsonFile (path, failure);
+    writeReport (path, failure);
     return failure;
   }
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "batch_summary.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -134,7 +135,7 @@ void
 writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard)
 {
   std::sort (rows.begin (), rows.end (), [] (const ScanSummary& a, const ScanSummary& b) { return a.id < b.id; });
-  writeJsonFile (base + ".json", summaryJson (rows, shard));
+  writeReport (base + ".json", summaryJson (rows, shard));
   writeFileAtomically (base + ".csv", csvText (rows));
 }
 

@@ -5,6 +5,7 @@
 #include "mesh_annotations.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
@@ -134,11 +135,11 @@ buildFromScans (const BuildModelOptions& options, const std::string& report_dir,
   const std::string counts = std::to_string (meshes.size ()) + " of " + std::to_string (scans.size ()) +
                              " scans registered and resampled, " + std::to_string (scans.size () - meshes.size ()) +
                              " left out";
-  writeJsonFile ((fs::path (report_dir) / "summary.json").string (), {{"scans", scans.size ()},
-                                                                      {"included", meshes.size ()},
-                                                                      {"left_out", scans.size () - meshes.size ()},
-                                                                      {"model", options.registration.model},
-                                                                      {"rows", rows}});
+  writeReport ((fs::path (report_dir) / "summary.json").string (), {{"scans", scans.size ()},
+                                                                    {"included", meshes.size ()},
+                                                                    {"left_out", scans.size () - meshes.size ()},
+                                                                    {"model", options.registration.model},
+                                                                    {"rows", rows}});
   if (meshes.size () < 2)
     throw InvalidInputError (options.from_scans + ": " + counts + "; a model needs at least two");
   const Eigen::Index num_vertices = registering->numVertices ();

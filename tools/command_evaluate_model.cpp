@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/mesh_io.h>
@@ -170,7 +171,7 @@ registerEvaluateModelCommand (CLI::App& app)
     const MorphableModel::Ptr model = loadModel (options->model);
     const nlohmann::json result = evaluate (*options, *model);
     if (options->json)
-      std::cout << result.dump (2) << '\n';
+      std::cout << stamped (result).dump (2) << '\n';
     else
       printTable (result);
   });

@@ -6,6 +6,8 @@
 #include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
+#include "pipeline.h"
+#include "provenance.h"
 
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
@@ -203,7 +205,7 @@ runFitPhotos (const FitPhotosOptions& options)
   report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
   report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
-    writeJsonFile (options.report, report);
+    writeReport (options.report, report);
   outputs.keep ();
   std::cout << "wrote " << options.out << " (model frame, mm) "
             << (colouring == "none" ? "(no colours)"

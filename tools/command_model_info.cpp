@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `morphreg model-info`: what a model file holds (regions, components, variances, landmarks), as text or JSON.
 #include "commands.h"
+#include "provenance.h"
 
 #include <morphreg/io/model_io.h>
 
@@ -100,7 +101,7 @@ registerModelInfoCommand (CLI::App& app)
   command->callback ([options] () {
     const nlohmann::json info = describeModel (options->model, *loadModel (options->model));
     if (options->json)
-      std::cout << info.dump (2) << '\n';
+      std::cout << stamped (info).dump (2) << '\n';
     else
       printText (info);
   });

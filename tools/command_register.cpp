@@ -7,13 +7,13 @@
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
@@ -218,7 +218,7 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                                  {"scan", {{"file", options.scan}, {"points", scan_points}}},
                                  {"settings", settingsJson (options)},
                                  {"fitted_mesh", nullptr}};
-  writeJsonFile (report_path, report);
+  writeReport (report_path, report);
   throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
 }
 
@@ -331,7 +331,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
                          {"screenshot", screenshot_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeJsonFile (reportPath (options), report);
+  writeReport (reportPath (options), report);
   concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
   return report;
 }

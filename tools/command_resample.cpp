@@ -7,11 +7,11 @@
 #include "mesh_output.h"
 #include "output_files.h"
 #include "pipeline.h"
+#include "provenance.h"
 #include "scan_resampling.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
@@ -74,7 +74,7 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
       {"scan", {{"file", registration.scan}, {"points", scan->size ()}, {"units", toString (unit.unit)}}},
       {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
   resampleAndReport (options, *scan, reference, report);
-  writeJsonFile (registration.report, report);
+  writeReport (registration.report, report);
   return report;
 }
 

@@ -8,11 +8,11 @@
 #include "option_checks.h"
 #include "output_files.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
@@ -309,7 +309,7 @@ runWarp (const WarpOptions& options)
   else
     contents = ' ' + evaluateAgainstTruth (options, inputs, warped, report);
   if (!options.report.empty ())
-    writeJsonFile (options.report, report);
+    writeReport (options.report, report);
   outputs.keep ();
   std::cout << "wrote " << options.out << contents << '\n';
 }

@@ -198,7 +198,8 @@ add_test(NAME CliTest.ResampleSynthScan
   COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|resample|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--quiet|--out|${cli_dir}/resampled.ply"
           -DREPORT=${cli_dir}/resampled.json -DMESH=${cli_dir}/resampled.ply -DFIT=${cli_dir}/resampled_fit.ply
           -DEXPECT_CODE=0 -DMIN_COVERAGE=0.5 -P ${cli_scripts}/check_resample.cmake)
-set_tests_properties(CliTest.ResampleSynthScan PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+set_tests_properties(CliTest.ResampleSynthScan PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model"
+  FIXTURES_SETUP cli_resampled)
 add_test(NAME CliTest.ResampleRefusedScanLeavesNoOutput
   COMMAND ${CMAKE_COMMAND} "-DARGS=$<TARGET_FILE:morphreg_cli>|resample|--scan|${cli_dir}/small/scan_0.pcd|--model|${cli_dir}/small_model.h5|--max-hole-fraction|0.01|--quiet|--out|${cli_dir}/refused.ply"
           -DREPORT=${cli_dir}/refused.json -DMESH=${cli_dir}/refused.ply -DFIT=${cli_dir}/refused_fit.ply
@@ -612,3 +613,26 @@ if(EXISTS ${bodies}/mh_joints.json)
     CliTest.WarpArticulatedSkeletonMustMatchTheLabels CliTest.WarpArticulatedNamesAMissingBoneJoint
     PROPERTIES FIXTURES_REQUIRED cli_mh_joints)
 endif()
+
+# Provenance: every report names the version that wrote it and the command line that made it; a model names them in
+# its metadata.
+function(morphreg_cli_provenance name command fixture)
+  add_test(NAME CliTest.ReportHasVersionAndCommandLine.${name}
+    COMMAND ${CMAKE_COMMAND} -DCOMMAND=${command} -DVERSION=${PROJECT_VERSION} ${ARGN}
+            -P ${cli_scripts}/check_provenance.cmake)
+  set_tests_properties(CliTest.ReportHasVersionAndCommandLine.${name} PROPERTIES FIXTURES_REQUIRED "${fixture}")
+endfunction()
+morphreg_cli_provenance(register register cli_fit -DREPORT=${cli_dir}/fit.json)
+morphreg_cli_provenance(synth synth cli_small -DREPORT=${cli_dir}/small/population.json)
+morphreg_cli_provenance(batch_summary register cli_batch_failing -DREPORT=${cli_dir}/batch_failing/summary.json)
+morphreg_cli_provenance(build_model_from_scans build-model cli_from_scans
+  -DREPORT=${cli_dir}/from_scans_scans/summary.json)
+morphreg_cli_provenance(fit_photos fit-photos cli_photos -DREPORT=${cli_dir}/photos.json)
+morphreg_cli_provenance(warp warp cli_warp_blend -DREPORT=${cli_dir}/warp_blend.json)
+morphreg_cli_provenance(resample resample cli_resampled -DREPORT=${cli_dir}/resampled.json)
+morphreg_cli_provenance(evaluate_model evaluate-model "cli_small;cli_model"
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|evaluate-model|--model|${cli_dir}/small_model.h5|--meshes|${cli_dir}/small/head_010.ply|${cli_dir}/small/head_011.ply|--samples|10|--json|--quiet")
+morphreg_cli_provenance(model_info model-info cli_model
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|model-info|--model|${cli_dir}/small_model.h5|--json")
+morphreg_cli_provenance(model_metadata build-model cli_model -DKEY=metadata
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|model-info|--model|${cli_dir}/small_model.h5|--json")
