@@ -9,7 +9,6 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/json_file.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/io/scan_manifest.h>
 
 #include <omp.h>
@@ -312,7 +311,7 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
   const std::size_t skipped = rows.size ();
 
   const auto start = Clock::now ();
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   const int cores = std::max (1, static_cast<int> (std::thread::hardware_concurrency ()));
   const int jobs = std::max (1, std::min<int> (batch.jobs > 0 ? batch.jobs : cores, static_cast<int> (tasks.size ())));
   const int threads_per_fit = std::max (1, cores / jobs);

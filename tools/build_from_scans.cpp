@@ -8,8 +8,6 @@
 #include "provenance.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/io/scan_manifest.h>
 
 #include <cmath>
@@ -129,7 +127,7 @@ buildFromScans (const BuildModelOptions& options, const std::string& report_dir,
   fs::create_directories (report_dir, ec);
   if (!fs::is_directory (report_dir, ec))
     throw IoError (report_dir + ": cannot create the report folder");
-  const MorphableModel::Ptr registering = loadModel (options.registration.model);
+  const MorphableModel::Ptr registering = loadModelFile (options.registration.model, std::cout);
   nlohmann::json rows = nlohmann::json::array ();
   const std::vector<TriangleMesh> meshes = resampleScans (options, scans, report_dir, registering, rows);
   const std::string counts = std::to_string (meshes.size ()) + " of " + std::to_string (scans.size ()) +

@@ -8,7 +8,6 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/model/model_quality.h>
 
 #include <nlohmann/json.hpp>
@@ -168,7 +167,7 @@ registerEvaluateModelCommand (CLI::App& app)
   command->footer ("Distances are mean vertex distances in correspondence (mm), each mesh moved rigidly onto the "
                    "model's mean first; the measures use the model's global PCA (its statismo part).");
   command->callback ([options] () {
-    const MorphableModel::Ptr model = loadModel (options->model);
+    const MorphableModel::Ptr model = loadModelFile (options->model, std::cerr);
     const nlohmann::json result = evaluate (*options, *model);
     if (options->json)
       std::cout << stamped (result).dump (2) << '\n';

@@ -14,7 +14,6 @@
 #include <morphreg/photo/two_view_settings.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/frontal_texture.h>
 #include <morphreg/photo/photo_view_io.h>
@@ -184,7 +183,7 @@ runFitPhotos (const FitPhotosOptions& options)
   const auto start = std::chrono::steady_clock::now ();
   OutputFiles outputs ({options.out, options.report},
                        {options.model, options.profile, options.frontal, options.photo, options.truth});
-  const MorphableModel::ConstPtr model = loadModel (options.model);
+  const MorphableModel::ConstPtr model = loadModelFile (options.model, std::cout);
   const ProfileView profile = loadProfileView (options.profile);
   if (options.frontal.empty () && options.approach != "profile")
     throw InvalidInputError ("fit-photos --approach " + options.approach +

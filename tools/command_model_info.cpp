@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `morphreg model-info`: what a model file holds (regions, components, variances, landmarks), as text or JSON.
+// `morphreg model-info`: what a model file holds (regions, components, variances, landmarks, the file's unit), as
+// text or JSON.
 #include "commands.h"
 #include "provenance.h"
 
@@ -41,9 +42,11 @@ describeModel (const std::string& path, const MorphableModel& model)
                         {"vertices", region.vertices.size ()},
                         {"components", region.variances.size ()},
                         {"variances_mm2", toStdVector (region.variances)}});
+  const auto file_units = model.metadata ().find (kFileUnitsKey);
   return {
       {"file", path},
       {"units", model.units ()},
+      {"file_units", file_units == model.metadata ().end () ? std::string ("mm") : file_units->second},
       {"vertices", model.numVertices ()},
       {"triangles", model.triangles ().cols ()},
       {"regions", regions},
@@ -85,7 +88,7 @@ printText (const nlohmann::json& info)
             << "landmarks (" << info["landmarks"].size () << "):";
   for (const auto& [id, vertex] : info["landmarks"].items ())
     std::cout << ' ' << id << '=' << vertex;
-  std::cout << '\n';
+  std::cout << "\nthe file's unit: " << info["file_units"].get<std::string> () << '\n';
 }
 } // namespace
 

@@ -188,6 +188,16 @@ reportPath (const RegisterOptions& options)
                                  : options.report;
 }
 
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out)
+{
+  MorphableModel::Ptr model = loadModel (path);
+  const auto file_units = model->metadata ().find (kFileUnitsKey);
+  if (file_units != model->metadata ().end () && file_units->second.rfind ("mm ", 0) != 0)
+    out << "units: the model file " << path << " is in " << file_units->second << '\n';
+  return model;
+}
+
 nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
@@ -198,7 +208,7 @@ registerScanFile (const RegisterOptions& options)
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   return keepOnSuccessOrFitFailure (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });

@@ -14,7 +14,6 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/resampling/landmark_reference.h>
 
@@ -88,7 +87,7 @@ runResample (ResampleOptions options)
     registration.report = std::filesystem::path (options.out).replace_extension (".json").string ();
   OutputFiles outputs ({options.out, registration.out, registration.report},
                        {registration.scan, registration.model, registration.landmarks});
-  const MorphableModel::Ptr model = loadModel (registration.model);
+  const MorphableModel::Ptr model = loadModelFile (registration.model, std::cout);
   if (options.reference == "landmarks") {
     keepOnSuccessOrFitFailure (outputs, [&] { return resampleFromLandmarks (options, *model); });
     return;

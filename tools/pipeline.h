@@ -71,6 +71,11 @@ LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
                           const MorphableModel& model, std::ostream& out);
 
+/** Loads a model file (loadModel: in mm whatever the file's unit) and says on \a out when the file was in another
+ *  unit and converted. */
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out);
+
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */
 nlohmann::json
 registerScanFile (const RegisterOptions& options);

@@ -71,6 +71,23 @@ add_test(NAME CliTest.ModelInfoPrintsJson COMMAND morphreg_cli model-info --mode
 set_tests_properties(CliTest.ModelInfoPrintsJson PROPERTIES FIXTURES_REQUIRED cli_model
   PASS_REGULAR_EXPRESSION "\"components\": 8,.*\"nose_tip\": [0-9]+.*\"vertices\": 3458")
 morphreg_cli_expect_exit(ModelInfoCorruptModelIsNamed 1 "corrupt_model.h5" model-info --model ${cli_dir}/corrupt_model.h5)
+# A model's unit: statismo files (written by the independent h5py writer of the model tests) in m are recognised by
+# their size and converted, in micrometres refused; a built model states mm.
+add_test(NAME CliTest.ModelFilesInOtherUnits
+  COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/model/statismo_fixture.py write ${cli_dir}/unit_models)
+set_tests_properties(CliTest.ModelFilesInOtherUnits PROPERTIES FIXTURES_SETUP cli_unit_models)
+file(MAKE_DIRECTORY ${cli_dir}/unit_models)
+add_test(NAME CliTest.ModelInfoShowsAModelInMetresConverted
+  COMMAND morphreg_cli model-info --model ${cli_dir}/unit_models/statismo_metres.h5)
+set_tests_properties(CliTest.ModelInfoShowsAModelInMetresConverted PROPERTIES FIXTURES_REQUIRED cli_unit_models
+  PASS_REGULAR_EXPRESSION "units mm\n.*the file's unit: m \\(guessed from its size: the mean's RMS radius is 0\\.173: taken as m \\(x1000 to mm\\), it is 1\\.73 times a head model's 100 mm\\); converted to mm on loading")
+morphreg_cli_expect_exit(ModelInfoRefusesAModelInNoUnit 1
+  "statismo_micrometres.h5: not a head model in any unit: the mean's RMS radius is 1.73e+05"
+  model-info --model ${cli_dir}/unit_models/statismo_micrometres.h5)
+set_tests_properties(CliTest.ModelInfoRefusesAModelInNoUnit PROPERTIES FIXTURES_REQUIRED cli_unit_models)
+add_test(NAME CliTest.ModelInfoShowsTheStatedUnit COMMAND morphreg_cli model-info --model ${cli_dir}/small_model.h5)
+set_tests_properties(CliTest.ModelInfoShowsTheStatedUnit PROPERTIES FIXTURES_REQUIRED cli_model
+  PASS_REGULAR_EXPRESSION "the file's unit: mm \\(the file's units\\)")
 
 add_test(NAME CliTest.RegisterSynthScanMatchesTruth
   COMMAND morphreg_cli register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
