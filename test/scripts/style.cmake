@@ -29,3 +29,10 @@ file(GLOB_RECURSE morphreg_formatted_files CONFIGURE_DEPENDS
 add_test(NAME StyleTest.ClangFormat
   COMMAND ${MORPHREG_CLANG_FORMAT} --dry-run --Werror ${morphreg_formatted_files}
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+
+# The citation file and the changelog name the version of project() (setup.py reads it from there too).
+add_test(NAME StyleTest.CitationAndChangelogNameTheVersion
+  COMMAND ${Python3_EXECUTABLE} -c "import re, sys; v = re.escape(sys.argv[1]); \
+assert re.search('^version: ' + v + '$', open(sys.argv[2]).read(), re.M), 'CITATION.cff: no version ' + sys.argv[1]; \
+assert re.search('^## ' + v + ' ', open(sys.argv[3]).read(), re.M), 'CHANGELOG.md: no section ' + sys.argv[1]"
+          ${PROJECT_VERSION} ${PROJECT_SOURCE_DIR}/CITATION.cff ${PROJECT_SOURCE_DIR}/CHANGELOG.md)
