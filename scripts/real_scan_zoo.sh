@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The real-scan zoo: every scan of ../shared/data/real_head_scans registered with `morphreg register`'s defaults only
 # (the ICT-FaceKit model built as the README builds it; --landmarks where a case has them), from its own pose, from
 # random poses (any rotation, scale 0.85-1.15, in mm and in m) and as simulated depth-camera frames (Kinect v1 class,

@@ -1,10 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
@@ -214,6 +217,16 @@ reportPath (const RegisterOptions& options)
                                  : options.report;
 }
 
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out)
+{
+  MorphableModel::Ptr model = loadModel (path);
+  const auto file_units = model->metadata ().find (kFileUnitsKey);
+  if (file_units != model->metadata ().end () && file_units->second.rfind ("mm ", 0) != 0)
+    out << "units: the model file " << path << " is in " << file_units->second << '\n';
+  return model;
+}
+
 nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
@@ -224,7 +237,7 @@ registerScanFile (const RegisterOptions& options)
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   return keepOnSuccessOrFitFailure (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });
@@ -245,7 +258,7 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                            {"settings", settingsJson (options)},
                            {"fitted_mesh", nullptr}};
   addProvenance (options, report);
-  writeJsonFile (report_path, report);
+  writeReport (report_path, report);
   throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
 }
 
@@ -279,11 +292,13 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
              double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
 {
   const std::string report_path = reportPath (options);
+  std::ostringstream colours;
+  colours << "residual, 0-" << colour_scale << " mm";
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
-      << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
-      << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << "wrote " << options.out << ' ' << meshContents (options.out, colours.str (), "residual in mm") << ", "
+      << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
@@ -337,7 +352,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
-  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
+  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale), residuals);
   savePolygonMesh (options.out, coloured);
   const double write_seconds = secondsSince (write_start);
 
@@ -359,7 +374,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
                          {"screenshot", screenshot_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeJsonFile (reportPath (options), report);
+  writeReport (reportPath (options), report);
   concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
   return report;
 }
@@ -479,7 +494,7 @@ registerRegisterCommand (CLI::App& app)
   depth->excludes (scan)->needs (intrinsics);
   intrinsics->needs (depth);
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
+  command->add_option ("-o,--out", options->out, meshOutputHelp ("fitted mesh to write", "residual", "residual in mm"))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,

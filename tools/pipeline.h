@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
 #include "scan_resampling.h"
@@ -92,6 +93,11 @@ loadScan (const RegisterOptions& options);
 LengthUnitGuess
 convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
                           std::ostream& out);
+
+/** Loads a model file (loadModel: in mm whatever the file's unit) and says on \a out when the file was in another
+ *  unit and converted. */
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out);
 
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */
 nlohmann::json

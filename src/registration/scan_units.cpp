@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/registration/scan_units.h>

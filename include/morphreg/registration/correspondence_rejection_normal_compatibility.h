@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file correspondence_rejection_normal_compatibility.h
  *  \brief Rejects correspondences whose source normal and target normal disagree.

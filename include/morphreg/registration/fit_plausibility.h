@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file fit_plausibility.h
  *  \brief Whether a finished head fit is believable, so that a failed registration is never silent. A fit is judged

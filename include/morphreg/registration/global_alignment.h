@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file global_alignment.h
  *  \brief A landmark-free start for MorphableICP from any rotation, on scans that hold more than the head

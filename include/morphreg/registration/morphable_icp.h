@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file morphable_icp.h
  *  \brief ICP with shape parameters (docs/method.md, "ICP with shape parameters"): registers a scan to a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_units.h
  *  \brief A scan brought to millimetres before a registration: its unit given or guessed from its size against the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file target_surface.h
  *  \brief The registration target as a surface: per point its neighbourhood's plane, the point projected onto it

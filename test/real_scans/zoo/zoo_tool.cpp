@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The real-scan zoo's helper (scripts/real_scan_zoo.sh): poses scans, renders depth-camera frames of them, and scores
 // a fit against the scan's surface by the convention of ../shared/data/real_head_scans/README.md.
 //   morphreg_zoo_tool pose SCAN OUT.ply SEED [m]            the scan under a random similarity (randomPose), in mm or m
