@@ -25,10 +25,12 @@ MorphableConvergence::startPhase (int budget, bool check_rising, Eigen::VectorXd
 }
 
 bool
-MorphableConvergence::checkCost (double cost)
+MorphableConvergence::checkCost (double cost, double best_cost)
 {
   cost_ = cost;
-  improved_ = cost < best_cost_;
+  if (!std::isnan (best_cost))
+    best_cost_ = best_cost;
+  improved_ = std::isnan (best_cost) ? cost < best_cost_ : cost <= best_cost_;
   if (improved_) {
     best_cost_ = cost;
     rising_ = 0;

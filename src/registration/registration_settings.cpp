@@ -132,7 +132,7 @@ requireValidSettings (const RegistrationSettings& settings)
 
 void
 configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings,
-                       const MorphableModel::Ptr& model)
+                       const MorphableModel::ConstPtr& model)
 {
   requireValidSettings (settings);
   icp.setModel (model);

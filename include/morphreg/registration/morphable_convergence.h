@@ -18,8 +18,8 @@ namespace morphreg
  *  left the prior (more than max_sigma standard deviations) or, where the phase checks it, the cost per row stayed
  *  above 1.05 times the phase's best for rising_iterations iterations in a row.
  *
- *  Per iteration: checkCost with the cost at the current state (improved() then says whether it is the phase's
- *  best), the step, update; hasConverged() ends the phase.
+ *  Per iteration: checkCost with the cost at the current state and at the phase's best on the same rows (improved()
+ *  then says whether the current state is the better one), the step, update; hasConverged() ends the phase.
  */
 class MorphableConvergence
 {
@@ -52,10 +52,13 @@ public:
 
   /** \brief Records the cost per row at the state about to be updated.
    *  \param[in] cost the cost per row (mm^2) at the current state
+   *  \param[in] best_cost the phase's best state scored on the same rows (NaN: the best cost recorded so far). The
+   *  rows change with every correspondence search, and rejectors admit more of them as a fit improves, so only a
+   *  comparison on the same rows says whether the state got worse.
    *  \return false if it diverged (the cost rose too often)
    */
   bool
-  checkCost (double cost);
+  checkCost (double cost, double best_cost = std::numeric_limits<double>::quiet_NaN ());
 
   /** \brief Whether the last checkCost was the phase's best.
    *  \return true if the state just checked is the best of the phase, the one to keep

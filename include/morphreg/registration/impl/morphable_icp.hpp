@@ -514,7 +514,8 @@ MorphableICP<PointTarget, Scalar>::runPhase (const Phase& phase, const PoseShape
                            " found) and " + std::to_string (landmark_rows_.size ()) + " landmarks",
                        "the max correspondence distance, the rejectors and the initial alignment");
     visualize (ev);
-    if (!convergence.checkCost (solver.cost (state, rows) / static_cast<double> (rows.size ())))
+    const double per_row = 1.0 / static_cast<double> (rows.size ());
+    if (!convergence.checkCost (per_row * solver.cost (state, rows), per_row * solver.cost (best, rows)))
       break;
     if (convergence.improved ())
       best = state;
