@@ -455,11 +455,18 @@ morphreg_cli_test(RegisterConvergencePlotWithoutDisplayFailsEarly EXPECT_CODE 1 
   PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"
   ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --out ${cli_dir}/no_plot.ply
        --convergence-plot ${cli_dir}/no_plot.png)
-morphreg_cli_test(DemoWritesScreenshot XVFB OUTPUT "overlay .*demo_shot/overlay.png"
+morphreg_cli_test(DemoWritesScreenshot XVFB FIXTURES_SETUP cli_demo_shot OUTPUT "overlay .*demo_shot/overlay.png"
   REPORT ${cli_dir}/demo_shot/report.json FILES ${cli_dir}/demo_shot/overlay.png ${cli_dir}/demo_shot/fitted.ply
   CHECKS ${cli_scripts}/check_png.cmake DEFINE PNG=${cli_dir}/demo_shot/overlay.png WIDTH=400 HEIGHT=300
   ARGS demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --width 400 --height 300
-       --quiet --out ${cli_dir}/demo_shot)
+       --convergence-plot --quiet --out ${cli_dir}/demo_shot)
+# The demo's overlay: the fit coloured by residual beside its colour bar, filling the picture.
+morphreg_command_test(CliTest.DemoOverlayShowsFitAndColourBar FIXTURES_REQUIRED cli_demo_shot
+  COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/overlay.png 400 300
+          --drawn 0.86 0.1 0.98 0.9 0.05 --drawn 0.1 0.1 0.75 0.9 0.4)
+morphreg_command_test(CliTest.DemoConvergencePlotIsDrawn FIXTURES_REQUIRED cli_demo_shot
+  COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/convergence.png 800 500
+          --drawn 0.15 0.15 0.9 0.85 0.01)
 morphreg_cli_test(RegisterScreenshotWithoutDisplayFails FIXTURES_REQUIRED "cli_small;cli_model" EXPECT_CODE 1
   ERROR "xvfb-run" ABSENT ${cli_dir}/no_display.ply ${cli_dir}/no_display.png REPORT ${cli_dir}/no_display.json
   PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"
