@@ -48,8 +48,8 @@ LayerToggles::addLayer (const std::string& name, char key, const std::vector<std
   showLegend ();
 }
 
-LayerToggles::Layer&
-LayerToggles::layer (const std::string& name)
+const LayerToggles::Layer&
+LayerToggles::layer (const std::string& name) const
 {
   const auto found = std::find_if (layers_.begin (), layers_.end (), [&] (const Layer& l) { return l.name == name; });
   if (found == layers_.end ())
@@ -60,17 +60,17 @@ LayerToggles::layer (const std::string& name)
 void
 LayerToggles::setVisible (const std::string& name, bool visible)
 {
-  Layer& shown = layer (name);
+  const Layer& shown = layer (name);
   for (const std::string& id : shown.ids)
     viewer_.setVisibility (id, visible);
-  shown.visible = visible;
+  layers_[static_cast<std::size_t> (&shown - layers_.data ())].visible = visible;
   showLegend ();
 }
 
 bool
 LayerToggles::isVisible (const std::string& name) const
 {
-  return const_cast<LayerToggles*> (this)->layer (name).visible;
+  return layer (name).visible;
 }
 
 bool

@@ -87,8 +87,8 @@ private:
     bool visible;
   };
 
-  Layer&
-  layer (const std::string& name);
+  const Layer&
+  layer (const std::string& name) const;
 
   void
   showLegend ();
