@@ -19,6 +19,7 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <cmath>
 
 VTK_MODULE_INIT (vtkRenderingContextOpenGL2)
