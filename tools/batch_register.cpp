@@ -262,10 +262,10 @@ requireBatchOptions (const RegisterOptions& options, const BatchOptions& batch)
 {
   if (batch.out_dir.empty ())
     throw InvalidInputError ("register --scans: give --out-dir, the folder of the outputs");
-  if (!options.screenshot.empty () || !options.truth.empty () || !options.landmarks.empty () ||
-      !options.report.empty ())
-    throw InvalidInputError ("register --scans: --screenshot, --truth, --landmarks and --report are for one scan "
-                             "(landmark files go in the manifest's second column)");
+  if (!options.screenshot.empty () || !options.convergence_plot.empty () || !options.truth.empty () ||
+      !options.landmarks.empty () || !options.report.empty ())
+    throw InvalidInputError ("register --scans: --screenshot, --convergence-plot, --truth, --landmarks and --report "
+                             "are for one scan (landmark files go in the manifest's second column)");
   std::error_code ec;
   fs::create_directories (batch.out_dir, ec);
   if (!fs::is_directory (batch.out_dir, ec))

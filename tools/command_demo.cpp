@@ -31,6 +31,7 @@ struct DemoOptions
   std::uint64_t seed = 1;
   int model_components = 20;
   bool screenshot = true;
+  bool convergence_plot = false;
   bool use_landmarks = false;
   bool quiet = false;
   synthetic::ScanSimulator::Parameters scanner;
@@ -56,9 +57,9 @@ runDemo (DemoOptions options)
 {
   const auto start = std::chrono::steady_clock::now ();
   const synthetic::ScanSimulator check_scanner (options.scanner); // bad scanner settings fail before any work
-  if (options.screenshot && !std::getenv ("DISPLAY"))
-    throw InvalidInputError ("demo: the overlay screenshot renders through X and $DISPLAY is unset; run under "
-                             "`xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
+  if ((options.screenshot || options.convergence_plot) && !std::getenv ("DISPLAY"))
+    throw InvalidInputError ("demo: the overlay screenshot and the convergence plot render through X and $DISPLAY is "
+                             "unset; run under `xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
   OutputFolder output (options.out, {});
   const synthetic::HeadGenerator generator (options.resolution);
   const std::string population = options.out + "/population";
@@ -86,6 +87,7 @@ runDemo (DemoOptions options)
   fit.out = options.out + "/fitted.ply";
   fit.report = options.out + "/report.json";
   fit.screenshot = options.screenshot ? options.out + "/overlay.png" : "";
+  fit.convergence_plot = options.convergence_plot ? options.out + "/convergence.png" : "";
   fit.quiet = options.quiet;
   const nlohmann::json report = keepOnSuccessOrFitFailure (output, [&] { return registerScanFile (fit); });
 
@@ -119,6 +121,8 @@ registerDemoCommand (CLI::App& app)
       ->check (positive ())
       ->capture_default_str ();
   command->add_flag ("--no-screenshot{false}", options->screenshot, "skip the PNG overlay (runs without X)");
+  command->add_flag ("--convergence-plot", options->convergence_plot,
+                     "plot the fit's RMS per iteration into <out>/convergence.png (needs X)");
   command->add_flag ("--use-landmarks", options->use_landmarks,
                      "start the registration from the scan's true landmarks instead of the coarse alignment");
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");

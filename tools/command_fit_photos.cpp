@@ -196,7 +196,8 @@ runFitPhotos (const FitPhotosOptions& options)
 
   nlohmann::json report = twoViewFitJson (fit);
   report["status"] = "ok";
-  report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
+  report["units"] = "mm (residuals, coefficients_mm; coefficients in prior standard deviations); the similarity maps "
+                    "model mm into the normalised photo frame";
   report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
   report["warnings"] = fitWarnings (options, fit);
   report["settings"] = toJson (static_cast<const TwoViewSettings&> (options));

@@ -7,6 +7,7 @@
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "display_inputs.h"
 #include "provenance.h"
 
 #include <morphreg/common/cloud_matrix.h>
@@ -27,6 +28,7 @@
 #include <morphreg/registration/scan_units.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/common/colour_map.h>
+#include <morphreg/visualization/convergence_plot.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include <pcl/common/io.h>
@@ -34,6 +36,7 @@
 #include <algorithm>
 #include <limits>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -55,17 +58,6 @@ double
 secondsSince (Clock::time_point start)
 {
   return std::chrono::duration<double> (Clock::now () - start).count ();
-}
-
-/** The colour scale (mm) of the residual map: the given maximum, else the 95th percentile of the residuals. */
-double
-colourScale (const Eigen::VectorXd& residuals, double requested)
-{
-  if (requested > 0.0)
-    return requested;
-  const std::vector<double> finite = sortedFinite (residuals);
-  const double percentile = finite.empty () ? 0.0 : finite[(finite.size () * 95) / 100];
-  return std::max (percentile, 1e-3);
 }
 
 /** \a scan without its missing points (PCL marks them NaN). An infinite coordinate is no such mark but a broken
@@ -138,18 +130,43 @@ truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const E
   return report;
 }
 
-/** Scan points and the fitted model coloured by residual, seen from the fitted face's front-left. */
+/** The fitted model coloured by residual under a sparse sample of the scan's points (small, grey: no moiré), seen
+ *  from the fitted face's front-left, the head filling the picture. */
 void
 saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options,
              const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
              const Eigen::VectorXd& residuals, double scale, const Eigen::Matrix4d& pose)
 {
-  viewer.addTargetCloud (scan, "scan", 0, 1.0);
-  viewer.addResidualHeatMap (fitted, residuals, scale);
+  const std::size_t scan_points = static_cast<std::size_t> (options.width) * options.height / 60;
+  viewer.addScanOverlay (scan, scan_points, "scan");
+  viewer.addResidualHeatMap (fitted, residuals, scale, "residuals");
+  viewer.setFramedShapes ({"residuals"});
   const Eigen::Matrix3d linear = pose.topLeftCorner<3, 3> ();
   const Eigen::Matrix3d rotation = linear / std::cbrt (linear.determinant ());
   viewer.resetCamera (rotation * Eigen::Vector3d (0.5, 0.15, 1.0).normalized (), rotation * Eigen::Vector3d::UnitY ());
   viewer.saveScreenshot (options.screenshot, options.width, options.height);
+}
+
+/** The overlay (with a viewer) and the convergence plot (if asked), recorded in \a report; returns the seconds. */
+double
+saveFigures (RegistrationVisualizer* viewer, const RegisterOptions& options, Icp& icp,
+             const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted, double scale,
+             nlohmann::json& report)
+{
+  const auto start = Clock::now ();
+  if (viewer) {
+    saveOverlay (*viewer, options, scan, fitted, icp.getVertexResiduals (), scale,
+                 icp.getFinalTransformation ().cast<double> ());
+    report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
+  }
+  if (!options.convergence_plot.empty ()) {
+    const int width = 800, height = 500;
+    saveConvergencePlot (options.convergence_plot, icp.getRegistrationReport (),
+                         "registration of " + std::filesystem::path (options.scan).filename ().string (), width,
+                         height);
+    report["convergence_plot"] = {{"file", options.convergence_plot}, {"width", width}, {"height", height}};
+  }
+  return secondsSince (start);
 }
 
 void
@@ -231,12 +248,16 @@ nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
   const auto start = Clock::now ();
-  OutputFiles outputs ({options.out, reportPath (options), options.screenshot},
+  OutputFiles outputs ({options.out, reportPath (options), options.screenshot, options.convergence_plot},
                        {options.scan, options.model, options.landmarks, options.truth});
   // Without X the screenshot would fail after the fit: open the offscreen viewer first.
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
+  const char* x_display = std::getenv ("DISPLAY");
+  if (!options.convergence_plot.empty () && (x_display == nullptr || *x_display == '\0'))
+    throw InvalidInputError ("register --convergence-plot " + options.convergence_plot +
+                             ": the plot renders through X and $DISPLAY is unset; run under `xvfb-run -a`");
   const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   return keepOnSuccessOrFitFailure (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
@@ -289,7 +310,7 @@ fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model
 /** The fit's one-paragraph summary on \a out; throws FitCheckFailure when the report failed its checks. */
 void
 concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const nlohmann::json& report,
-             double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
+             double fit_seconds, double colour_scale, std::ostream& out)
 {
   const std::string report_path = reportPath (options);
   std::ostringstream colours;
@@ -298,7 +319,8 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
       << "wrote " << options.out << ' ' << meshContents (options.out, colours.str (), "residual in mm") << ", "
-      << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << report_path << (report.contains ("screenshot") ? ", " + options.screenshot : std::string ())
+      << (report.contains ("convergence_plot") ? ", " + options.convergence_plot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
@@ -351,7 +373,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const auto write_start = Clock::now ();
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
-  const double scale = colourScale (residuals, options.colour_max);
+  const double scale = residualColourScale (residuals, options.colour_max);
   const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale), residuals);
   savePolygonMesh (options.out, coloured);
   const double write_seconds = secondsSince (write_start);
@@ -359,23 +381,17 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
   if (!options.truth.empty ())
     report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
-  double screenshot_seconds = 0.0;
-  if (viewer) {
-    const auto shot_start = Clock::now ();
-    saveOverlay (*viewer, options, *scan, fitted, residuals, scale, icp.getFinalTransformation ().cast<double> ());
-    screenshot_seconds = secondsSince (shot_start);
-    report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
-  }
+  const double figure_seconds = saveFigures (viewer, options, icp, *scan, fitted, scale, report);
   if (follow_up)
     follow_up (*scan, fitted, report);
   report["timings_s"] = {{"load", load_seconds},
                          {"fit", fit_seconds},
                          {"write_mesh", write_seconds},
-                         {"screenshot", screenshot_seconds},
+                         {"figures", figure_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
   writeReport (reportPath (options), report);
-  concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
+  concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, out);
   return report;
 }
 
@@ -499,6 +515,8 @@ registerRegisterCommand (CLI::App& app)
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,
                        "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
+  command->add_option ("--convergence-plot", options->convergence_plot,
+                       "PNG plot of the RMS distance to the scan at each iteration (needs X: xvfb-run -a)");
   command->add_option ("-l,--landmarks", options->landmarks,
                        "landmarks on the scan (.pp .json .csv .pts) to start from (Umeyama on >= 3)");
   command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a).
+// `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a). A
+// mesh with a per-vertex "quality" (register's fitted meshes: the residual in mm) is coloured by it, with a colour bar.
 #include "commands.h"
 #include "output_files.h"
+#include "display_inputs.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
@@ -12,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace morphreg
 {
@@ -29,6 +32,7 @@ struct RenderOptions
   int height = 960;
   std::string view = "front";
   double opacity = 1.0;
+  double colour_max = 0.0;               ///< the residual colour scale's top (mm); 0: the 95th percentile
   std::vector<std::string> side_by_side; ///< two captions: the two meshes in a left and a right viewport
 };
 
@@ -53,6 +57,18 @@ sideBySide (const RenderOptions& options, RegistrationVisualizer& viewer)
   return {left, right};
 }
 
+/** Adds the meshes (those with residuals coloured by them, with the colour bar); returns their ids. */
+std::vector<std::string>
+addMeshes (const RenderOptions& options, const std::vector<int>& viewports, RegistrationVisualizer& viewer)
+{
+  std::vector<std::string> ids;
+  for (std::size_t i = 0; i < options.meshes.size (); ++i) {
+    ids.push_back ("mesh_" + std::to_string (i));
+    addMeshFile (viewer, options.meshes[i], options.colour_max, options.opacity, ids.back (), viewports[i]);
+  }
+  return ids;
+}
+
 void
 runRender (const RenderOptions& options)
 {
@@ -70,11 +86,11 @@ runRender (const RenderOptions& options)
   std::vector<int> viewports (options.meshes.size (), 0);
   if (!options.side_by_side.empty ())
     viewports = sideBySide (options, viewer);
-  for (std::size_t i = 0; i < options.meshes.size (); ++i)
-    viewer.addModelMesh (loadPolygonMesh (options.meshes[i]), options.opacity, "mesh_" + std::to_string (i),
-                         viewports[i]);
+  const std::vector<std::string> meshes = addMeshes (options, viewports, viewer);
   for (std::size_t i = 0; i < options.clouds.size (); ++i)
-    viewer.addTargetCloud (*loadCloud<pcl::PointXYZ> (options.clouds[i]), "cloud_" + std::to_string (i));
+    addScanFile (viewer, options.clouds[i], !meshes.empty (), options.width, options.height,
+                 "cloud_" + std::to_string (i));
+  viewer.setFramedShapes (meshes); // the head, not the shoulders a scan may hold
   for (std::size_t i = 0; i < options.landmarks.size (); ++i)
     viewer.addLandmarks (loadLandmarks (options.landmarks[i]),
                          i == 0 ? RegistrationVisualizer::LandmarkRole::Target
@@ -111,9 +127,14 @@ registerRenderCommand (CLI::App& app)
   command->add_option ("--view", options->view, "camera: front, back, left, right, oblique")
       ->check (CLI::IsMember ({"front", "back", "left", "right", "oblique"}))
       ->capture_default_str ();
-  command->add_option ("--opacity", options->opacity, "mesh opacity")
+  command->add_option ("--opacity", options->opacity, "mesh opacity (meshes without residuals)")
       ->check (CLI::Range (0.0, 1.0))
       ->capture_default_str ();
+  command
+      ->add_option ("--colour-max", options->colour_max,
+                    "top of the residual colour bar (mm) for meshes with a per-vertex quality (register's fits); 0: "
+                    "the 95th percentile")
+      ->check (CLI::NonNegativeNumber);
   command
       ->add_option ("--side-by-side", options->side_by_side,
                     "two captions: the two --mesh files side by side (left, right) under one camera")

@@ -23,6 +23,8 @@ registerRenderCommand (CLI::App& app);
 void
 registerWarpCommand (CLI::App& app);
 void
+registerViewCommand (CLI::App& app);
+void
 registerBuildModelCommand (CLI::App& app);
 void
 registerRegisterCommand (CLI::App& app);
@@ -51,6 +53,7 @@ registerCommands (CLI::App& app)
   registerEvaluateModelCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
+  registerViewCommand (app);
   registerWarpCommand (app);
 }
 } // namespace tools

@@ -34,9 +34,10 @@ namespace tools
 struct RegisterOptions : RegistrationSettings
 {
   std::string scan, model, out = "fitted.ply";
-  std::string scans;      ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
-  std::string report;     ///< empty: next to out, with .json
-  std::string screenshot; ///< empty: none
+  std::string scans;            ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
+  std::string report;           ///< empty: next to out, with .json
+  std::string screenshot;       ///< empty: none
+  std::string convergence_plot; ///< PNG of the RMS distance per iteration; empty: none
   int width = 1280, height = 960;
   std::string landmarks, truth;
   /** With a depth image as the scan (a 16-bit PNG in mm): its camera's intrinsics (JSON; depth_image_io.h). */

@@ -103,8 +103,12 @@ void
 bindResult (py::module_& m)
 {
   py::class_<PhotoFitResult> (m, "PhotoFitResult", "The outcome of morphreg.fit_photos.")
-      .def_property_readonly ("coefficients",
-                              [] (const PhotoFitResult& r) { return toArray (Eigen::VectorXd (r.fit.coefficients)); })
+      .def_property_readonly (
+          "coefficients", [] (const PhotoFitResult& r) { return toArray (Eigen::VectorXd (r.fit.coefficients)); },
+          "Shape coefficients in prior standard deviations (statismo's unit), stacked by region.")
+      .def_property_readonly (
+          "coefficients_mm", [] (const PhotoFitResult& r) { return toArray (Eigen::VectorXd (r.fit.coefficients_mm)); },
+          "The shape coefficients as lengths (mm along each selected component), stacked by region.")
       .def_property_readonly (
           "scale", [] (const PhotoFitResult& r) { return r.fit.scale; }, "Normalised photo units per model millimetre.")
       .def_property_readonly ("rotation",

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/landmarks.h>
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/photo/polyline_2d.h>
 #include <morphreg/photo/two_view_fitting.h>
 #include <morphreg/warp/thin_plate_spline.h>
@@ -353,8 +354,8 @@ initialState (const MorphableModel& model, const TwoViewProblem& problem, const 
 void
 storeState (const MorphableModel& model, const PoseShapeState& state, TwoViewFit& fit)
 {
-  fit.coefficients = state.coefficients;
-  fit.coefficient_sigmas = state.coefficients.cwiseQuotient (model.variances (fit.selection).cwiseSqrt ());
+  fit.coefficients_mm = state.coefficients;
+  fit.coefficients = coefficientsInStandardDeviations (model, state.coefficients, fit.selection);
   fit.scale = state.scale ();
   fit.rotation = state.rotation;
   fit.translation = state.translation;

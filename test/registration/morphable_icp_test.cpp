@@ -7,6 +7,7 @@
 #include "support/sample_count.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/model/model_builder.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/fit_plausibility.h>
@@ -255,7 +256,7 @@ TEST_F (MorphableIcpTest, PhasePriorWeightReplacesTheRegistrationsAndIsValidated
     icp.setTargetLandmarks (scan.landmarks);
     icp.setShapeSchedule ({{model.firstComponents (5), 0.1, 3.0}, {selection, 0.1, last_prior}});
     rms[last_prior] = fit (icp, scan);
-    coefficient_norm[last_prior] = icp.getShapeCoefficients ().norm ();
+    coefficient_norm[last_prior] = icp.getShapeCoefficientsMm ().norm ();
     std::printf ("[ phase prior ] last phase lambda_2 %g: RMS %.3f mm, |m| %.2f mm\n", last_prior, rms[last_prior],
                  coefficient_norm[last_prior]);
   }
@@ -564,10 +565,20 @@ TEST_F (MorphableIcpTest, BaseSettersChangeBehaviourAsInPcl)
   EXPECT_EQ (with_residual, report.correspondences);
   const Eigen::Matrix4f t = icp.getFinalTransformation ();
   const Eigen::Vector3f v =
-      (**model_).vertex (10, icp.getShapeCoefficients (), icp.getComponentSelection ()).cast<float> ();
+      (**model_).vertex (10, icp.getShapeCoefficientsMm (), icp.getComponentSelection ()).cast<float> ();
   const Eigen::Vector3f mapped = t.topLeftCorner<3, 3> () * v + t.topRightCorner<3, 1> ();
   EXPECT_LT ((mapped - output[10].getVector3fMap ()).norm (), 1e-2)
       << "the final transformation maps the fitted model-frame shape onto the output";
+  // statismo's unit: each coefficient is its length over its component's prior standard deviation.
+  const Eigen::VectorXd sd = (**model_).variances (icp.getComponentSelection ()).cwiseSqrt ();
+  const Eigen::VectorXd& mm = icp.getShapeCoefficientsMm ();
+  EXPECT_GT (mm.cwiseAbs ().maxCoeff (), 0.1) << "a fitted shape, not the mean";
+  EXPECT_LT ((icp.getShapeCoefficients () - mm.cwiseQuotient (sd)).cwiseAbs ().maxCoeff (), 1e-12);
+  EXPECT_LT (
+      (morphreg::coefficientsInMillimetres (**model_, icp.getShapeCoefficients (), icp.getComponentSelection ()) - mm)
+          .cwiseAbs ()
+          .maxCoeff (),
+      1e-9);
 }
 
 TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)

@@ -18,7 +18,7 @@ function(morphreg_cli_expect_exit name code text)
 endfunction()
 
 morphreg_cli_test(VersionPrints OUTPUT "morphreg [0-9]+\\.[0-9]+" ARGS --version)
-foreach(command synth build-model register resample fit-photos warp render demo model-info merge-summaries
+foreach(command synth build-model register resample fit-photos warp render view demo model-info merge-summaries
     evaluate-model)
   morphreg_cli_test(Help.${command} OUTPUT "Usage: .*${command}.*-q,--quiet.*-v,--verbose" ARGS ${command} --help)
 endforeach()
@@ -388,11 +388,85 @@ morphreg_cli_test(RenderSideBySide FIXTURES_REQUIRED cli_synth XVFB OUTPUT "wrot
 morphreg_cli_expect_exit(RenderSideBySideNeedsTwoMeshes 1 "render --side-by-side shows two --mesh files"
   render --mesh ${cli_dir}/synth/head_000.ply --side-by-side left right --out ${cli_dir}/render_one.png)
 set_tests_properties(CliTest.RenderSideBySideNeedsTwoMeshes PROPERTIES FIXTURES_REQUIRED cli_synth)
-morphreg_cli_test(DemoWritesScreenshot XVFB OUTPUT "overlay .*demo_shot/overlay.png"
+# The colour bar of a residual mesh sits at the right (RegistrationVisualizer::colourBarRegion); the fit is framed
+# to fill the rest of the picture.
+set(cli_bar_drawn "--drawn 0.86 0.1 0.98 0.9 0.05")
+morphreg_cli_test(RenderResidualMeshShowsColourBar FIXTURES_REQUIRED cli_fit XVFB
+  OUTPUT "wrote .*render_residuals.png \\(400x300\\)" FILES ${cli_dir}/render_residuals.png
+  CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/render_residuals.png WIDTH=400 HEIGHT=300
+         "PIXEL_CHECKS=${cli_bar_drawn} --drawn 0.05 0.05 0.8 0.95 0.4"
+  ARGS render --mesh ${cli_dir}/fit.ply --cloud ${cli_dir}/small/scan_0.pcd --landmarks
+       ${cli_dir}/small/scan_0_landmarks.json --width 400 --height 300 --out ${cli_dir}/render_residuals.png)
+# A depth camera's organised frame holds NaN where it saw nothing: those points are skipped, the others drawn.
+set(cli_organised ${cli_dir}/organised_nan.pcd)
+set(organised_points "")
+foreach(row RANGE 19)
+  foreach(column RANGE 19)
+    if(column LESS 5)
+      string(APPEND organised_points "nan nan nan\n")
+    else()
+      string(APPEND organised_points "${column}0 ${row}0 500\n")
+    endif()
+  endforeach()
+endforeach()
+file(WRITE ${cli_organised} "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 20\nHEIGHT 20\n"
+     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 400\nDATA ascii\n${organised_points}")
+morphreg_cli_test(RenderOrganisedCloudSkipsNaN XVFB OUTPUT "wrote .*render_organised.png \\(320x240\\)"
+  FILES ${cli_dir}/render_organised.png CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/render_organised.png WIDTH=320 HEIGHT=240
+         "PIXEL_CHECKS=--min-std 5 --drawn 0.3 0.3 0.7 0.7 0.02"
+  ARGS render --cloud ${cli_organised} --width 320 --height 240 --out ${cli_dir}/render_organised.png)
+file(WRITE ${cli_dir}/all_nan.pcd "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\nnan nan nan\nnan nan nan\nnan nan nan\nnan nan nan\n")
+morphreg_cli_test(RenderAllMissingCloudIsNamed XVFB EXPECT_CODE 1 ERROR "all_nan.pcd.*no valid point"
+  ABSENT ${cli_dir}/render_nan.png ARGS render --cloud ${cli_dir}/all_nan.pcd --out ${cli_dir}/render_nan.png)
+
+# view: the window's picture headless (--screenshot): the scan over the fit coloured by residual, its colour bar, the
+# landmarks and the correspondences.
+morphreg_cli_test(ViewScreenshotShowsFitAndColourBar FIXTURES_REQUIRED cli_fit XVFB
+  OUTPUT "wrote .*view.png \\(400x300\\)" FILES ${cli_dir}/view.png CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/view.png WIDTH=400 HEIGHT=300
+         "PIXEL_CHECKS=${cli_bar_drawn} --drawn 0.05 0.05 0.8 0.95 0.4"
+  ARGS view --scan ${cli_dir}/small/scan_0.pcd --fit ${cli_dir}/fit.ply --landmarks
+       ${cli_dir}/small/scan_0_landmarks.json --screenshot ${cli_dir}/view.png --width 400 --height 300)
+# A mesh without residuals has no colour bar: the right of the picture stays empty.
+morphreg_cli_test(ViewPlainMeshHasNoColourBar FIXTURES_REQUIRED cli_synth XVFB FILES ${cli_dir}/view_plain.png
+  CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/view_plain.png WIDTH=320 HEIGHT=240
+         "PIXEL_CHECKS=--blank 0.9 0.1 1.0 0.9 0.0 --drawn 0.2 0.2 0.8 0.8 0.5"
+  ARGS view --fit ${cli_dir}/synth/head_000.ply --screenshot ${cli_dir}/view_plain.png --width 320 --height 240)
+morphreg_cli_expect_exit(ViewNeedsSomethingToShow 1 "nothing to show" view --screenshot ${cli_dir}/view_none.png)
+morphreg_cli_test(ViewWithoutDisplayIsNamed EXPECT_CODE 1 ERROR "xvfb-run" PROPERTIES
+  ENVIRONMENT_MODIFICATION "DISPLAY=unset:" FIXTURES_REQUIRED cli_synth
+  ARGS view --fit ${cli_dir}/synth/head_000.ply)
+
+# register --convergence-plot: the RMS per iteration as a PNG chart beside the report, which names it.
+morphreg_cli_test(RegisterWritesConvergencePlot FIXTURES_REQUIRED "cli_small;cli_model" XVFB
+  OUTPUT "wrote .*fit_plot.ply.*fit_plot_convergence.png" REPORT ${cli_dir}/fit_plot.json
+  REPORT_MATCH "\"convergence_plot\": *{[^}]*fit_plot_convergence.png"
+  CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/fit_plot_convergence.png WIDTH=800 HEIGHT=500
+         "PIXEL_CHECKS=--drawn 0.15 0.15 0.9 0.85 0.01"
+  ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --components 5 --iterations 30
+       --quiet --out ${cli_dir}/fit_plot.ply --convergence-plot ${cli_dir}/fit_plot_convergence.png)
+morphreg_cli_test(RegisterConvergencePlotWithoutDisplayFailsEarly EXPECT_CODE 1 ERROR "--convergence-plot.*xvfb-run"
+  FIXTURES_REQUIRED "cli_small;cli_model" ABSENT ${cli_dir}/no_plot.ply ${cli_dir}/no_plot.png
+  PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"
+  ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --out ${cli_dir}/no_plot.ply
+       --convergence-plot ${cli_dir}/no_plot.png)
+morphreg_cli_test(DemoWritesScreenshot XVFB FIXTURES_SETUP cli_demo_shot OUTPUT "overlay .*demo_shot/overlay.png"
   REPORT ${cli_dir}/demo_shot/report.json FILES ${cli_dir}/demo_shot/overlay.png ${cli_dir}/demo_shot/fitted.ply
   CHECKS ${cli_scripts}/check_png.cmake DEFINE PNG=${cli_dir}/demo_shot/overlay.png WIDTH=400 HEIGHT=300
   ARGS demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --width 400 --height 300
-       --quiet --out ${cli_dir}/demo_shot)
+       --convergence-plot --quiet --out ${cli_dir}/demo_shot)
+# The demo's overlay: the fit coloured by residual beside its colour bar, filling the picture.
+morphreg_command_test(CliTest.DemoOverlayShowsFitAndColourBar FIXTURES_REQUIRED cli_demo_shot
+  COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/overlay.png 400 300
+          --drawn 0.86 0.1 0.98 0.9 0.05 --drawn 0.1 0.1 0.75 0.9 0.4)
+morphreg_command_test(CliTest.DemoConvergencePlotIsDrawn FIXTURES_REQUIRED cli_demo_shot
+  COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/convergence.png 800 500
+          --drawn 0.15 0.15 0.9 0.85 0.01)
 morphreg_cli_test(RegisterScreenshotWithoutDisplayFails FIXTURES_REQUIRED "cli_small;cli_model" EXPECT_CODE 1
   ERROR "xvfb-run" ABSENT ${cli_dir}/no_display.ply ${cli_dir}/no_display.png REPORT ${cli_dir}/no_display.json
   PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"

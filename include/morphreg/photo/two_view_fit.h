@@ -38,8 +38,10 @@ struct TwoViewIteration
  */
 struct TwoViewFit
 {
-  ComponentSelection selection;                            ///< the components of \a coefficients
-  Eigen::VectorXd coefficients;                            ///< shape coefficients (mm along the orthonormal basis)
+  ComponentSelection selection; ///< the components of \a coefficients
+  /** \brief Shape coefficients in prior standard deviations (statismo's unit; docs/coefficients.md). */
+  Eigen::VectorXd coefficients;
+  Eigen::VectorXd coefficients_mm;                         ///< the same as lengths: mm along the orthonormal basis
   double scale = 1.0;                                      ///< s: normalised units per model millimetre
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity (); ///< R
   Eigen::Vector3d translation = Eigen::Vector3d::Zero ();  ///< t, normalised units
@@ -50,21 +52,20 @@ struct TwoViewFit
   /** \brief What the result is: "profile", "joint" or "tps_icp"; a TPS-ICP fit none of whose rounds lowered the image
    *  error returns its starting profile fit, and says "profile" here. */
   std::string returned;
-  int tps_rounds = 0;                 ///< TPS-ICP rounds whose result was kept (0 for the other fits)
-  Eigen::VectorXd coefficient_sigmas; ///< the coefficients in prior standard deviations (stacked like them)
+  int tps_rounds = 0; ///< TPS-ICP rounds whose result was kept (0 for the other fits)
 
   std::vector<std::string>
       ignored_landmarks; ///< frontal outline landmarks left out (TwoViewFitting::setContourLandmarkWeight)
 
   /** \brief The largest |coefficient| in prior standard deviations (0 without components).
-   *  \return the largest |coefficient_sigmas| entry
+   *  \return the largest |coefficients| entry
    */
   double
   maxCoefficientSigma () const;
 
   /** \brief The shape's Mahalanobis distance from the mean head: the norm of the coefficients in prior standard
    *  deviations.
-   *  \return the norm of coefficient_sigmas
+   *  \return the norm of coefficients
    */
   double
   shapeDistance () const;

@@ -86,7 +86,7 @@ enum class IcpInitialisation
  *  icp.setTargetLandmarks (marked);                        // optional: >= 3 start with Umeyama
  *  pcl::PointCloud<pcl::PointNormal> fitted;
  *  icp.align (fitted);                                     // identity guess: landmarks or coarse start
- *  Eigen::VectorXd m = icp.getShapeCoefficients ();
+ *  Eigen::VectorXd sd = icp.getShapeCoefficients ();       // prior standard deviations (statismo's unit)
  *  pcl::PolygonMesh mesh = icp.getFittedMesh ();
  *  \endcode
  */
@@ -400,11 +400,22 @@ public:
 
   // ---- results --------------------------------------------------------------------------------------------
 
-  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()).
-   *  \return the coefficients (mm along the orthonormal basis)
+  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()) in prior standard
+   *  deviations, as statismo, scalismo, BFM and eos read them (see docs/coefficients.md).
+   *  \return the coefficients: each one's length divided by its component's prior standard deviation
    */
   const Eigen::VectorXd&
   getShapeCoefficients () const
+  {
+    return coefficients_sd_;
+  }
+
+  /** \brief Shape coefficients of the last align() as lengths: mm along the model's orthonormal components, what
+   *  MorphableModel::generate takes (stacked like getComponentSelection()).
+   *  \return the coefficients (mm)
+   */
+  const Eigen::VectorXd&
+  getShapeCoefficientsMm () const
   {
     return coefficients_;
   }
@@ -599,7 +610,8 @@ private:
   std::vector<pcl::registration::CorrespondenceRejector::Ptr> chain_; ///< the rejectors of this align()
   std::vector<PoseShapeRow> landmark_rows_;
 
-  Eigen::VectorXd coefficients_;
+  Eigen::VectorXd coefficients_;    ///< mm along the components
+  Eigen::VectorXd coefficients_sd_; ///< the same in prior standard deviations
   Eigen::Matrix3Xd fitted_vertices_;
   Eigen::VectorXd vertex_residuals_;
   IcpReport report_;

@@ -7,6 +7,7 @@
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/global_alignment.h>
 #include <morphreg/registration/initial_alignment.h>
@@ -712,6 +713,7 @@ void
 MorphableICP<PointTarget, Scalar>::store (const PoseShapeState& state, PointCloudSource& output)
 {
   coefficients_ = detail::restack (state.coefficients, state.selection, selection_);
+  coefficients_sd_ = coefficientsInStandardDeviations (*model_, coefficients_, selection_);
   fitted_vertices_ = state.posed ();
   const Eigen::Matrix3Xd normals = vertexNormals (TriangleMesh{fitted_vertices_, model_->triangles ()});
   output.resize (fitted_vertices_.cols ());
