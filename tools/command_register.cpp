@@ -2,7 +2,6 @@
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
 
@@ -15,6 +14,7 @@
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/registration/iteration_progress.h>
 #include <morphreg/registration/morphable_icp.h>
@@ -164,6 +164,7 @@ loadScan (const std::string& path)
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (pointsOf (*scan), path);
+  requireUnitNormals (normalsOf (*scan), path);
   scan->is_dense = true;
   return scan;
 }
@@ -179,6 +180,15 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
   return unit;
 }
 
+void
+addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan)
+{
+  plan.addInput (options.scan, "--scan");
+  plan.addInput (options.model, "--model");
+  plan.addInput (options.landmarks, "--landmarks");
+  plan.addInput (options.truth, "--truth");
+}
+
 std::string
 reportPath (const RegisterOptions& options)
 {
@@ -190,14 +200,20 @@ nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
   const auto start = Clock::now ();
-  OutputFiles outputs ({options.out, reportPath (options), options.screenshot},
-                       {options.scan, options.model, options.landmarks, options.truth});
+  OutputPlan plan;
+  addRegistrationInputs (options, plan);
+  plan.addOutput (options.out, "--out");
+  plan.addOutput (reportPath (options), options.report.empty () ? "the report, --out with .json" : "--report");
+  if (!options.screenshot.empty ())
+    plan.addOutput (options.screenshot, "--screenshot");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   // Without X the screenshot would fail after the fit: open the offscreen viewer first.
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
   const MorphableModel::Ptr model = loadModel (options.model);
-  return keepOnSuccessOrFitFailure (outputs, [&] {
+  return commitUnlessBadInput (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });
 }
@@ -218,7 +234,7 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                            {"fitted_mesh", nullptr}};
   addProvenance (options, report);
   writeJsonFile (report_path, report);
-  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
+  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")", report);
 }
 
 /** The report's description of the scan and how its unit was found. */
@@ -261,7 +277,7 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
   std::string reasons;
   for (const nlohmann::json& failure : report["checks"]["failures"])
     reasons += (reasons.empty () ? "" : "; ") + failure.get<std::string> ();
-  throw FitCheckFailure (reasons + " (see " + report_path + ")");
+  throw FitCheckFailure (reasons + " (see " + report_path + ")", report);
 }
 
 /** Runs \a icp's fit with progress shown unless quiet; a lost scan is reported and thrown (reportLostFit). */
@@ -359,7 +375,7 @@ addRobustnessOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--reject-trimmed", options.reject_trimmed,
                     "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
-      ->check (CLI::Range (0.01, 1.0));
+      ->check (inRange (0.01, 1.0));
 }
 } // namespace
 
@@ -367,18 +383,18 @@ void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options)
 {
   command->add_option ("--width", options.width, "screenshot width (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--height", options.height, "screenshot height (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--iterations", options.iterations, "ICP iterations, similarity and shape stages together")
-      ->check (CLI::Range (1, 10000))
+      ->check (inRange (1, 10000))
       ->capture_default_str ();
   command
       ->add_option ("--similarity-iterations", options.similarity_iterations,
                     "at most this many iterations fit the similarity alone before the shape joins")
-      ->check (CLI::Range (1, 10000))
+      ->check (inRange (1, 10000))
       ->capture_default_str ();
   command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
       ->check (nonNegative ())
@@ -393,7 +409,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--tangential-weight", options.tangential_weight,
                     "share of the point-to-point term kept along the tangent plane (point-to-plane)")
-      ->check (CLI::Range (0.0, 1.0))
+      ->check (inRange (0.0, 1.0))
       ->capture_default_str ();
   command
       ->add_option ("--shape-prior", options.shape_prior,
