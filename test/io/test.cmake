@@ -1,0 +1,2 @@
+# The photo reader's tests write JPEG files with libjpeg (the library reads them through it).
+target_link_libraries(${target} PRIVATE JPEG::JPEG)
