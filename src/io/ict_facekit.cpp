@@ -56,7 +56,7 @@ join (const std::string& directory, const std::string& name)
 LandmarkVertices
 readLandmarks (const std::string& path, Eigen::Index num_vertices)
 {
-  requireReadableFile (path);
+  requireReadableFile (path, kMaxTextFileBytes);
   std::ifstream stream (path);
   const nlohmann::json json = nlohmann::json::parse (stream, nullptr, false);
   if (json.is_discarded () || !json.is_object ())
