@@ -35,7 +35,8 @@ loadDepthPng (const std::string& path)
   requireReadableFile (path);
   png::File file = png::openFile (path, "rb");
   long size = 0;
-  requireDepthHeader (png::readDeclaredHeader (file.get (), path, size), path, size);
+  const png::Header declared = png::readDeclaredHeader (file.get (), path, size);
+  requireDepthHeader (declared, path, size);
   png::Read read;
   if (!read.info)
     throw IoError (path + ": cannot start the PNG decoder");

@@ -376,9 +376,9 @@ template <int Dim>
 NamedPoints<Dim>
 load (const std::string& path, bool known_ids_only = true)
 {
+  requireReadableFile (path, kMaxTextFileBytes);
   requireExtension (path, Dim == 3 ? ".pp .json .csv .pts" : ".json .csv .pts",
                     Dim == 3 ? "landmark" : "pixel landmark (PickedPoints files are 3D only)");
-  requireReadableFile (path, kMaxTextFileBytes);
   const std::string ext = fileExtension (path);
   if (ext == ".json")
     return collect<Dim> (readJson<Dim> (path), path, known_ids_only);
@@ -553,6 +553,12 @@ void
 saveLandmarks (const std::string& path, const LandmarkPositions& landmarks)
 {
   save<3> (path, landmarks);
+}
+
+nlohmann::json
+landmarkPixelsJson (const LandmarkPixels& pixels, const std::string& path)
+{
+  return nlohmann::json::parse (jsonText<2> (orderedForWriting<2> (pixels, path)));
 }
 
 void

@@ -63,6 +63,7 @@ TEST (OutputChecksTest, AnOutputThatIsAnInputIsRefusedHoweverItIsSpelt)
   TempDirectory dir;
   const std::string scan = dir.file ("scan.ply");
   std::ofstream (scan) << "points";
+  std::filesystem::create_directories (dir.file ("sub"));
   expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput (scan, scan); }, "also an input");
   expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput (dir.file ("sub/../scan.ply"), scan); },
                                                       "would overwrite");
