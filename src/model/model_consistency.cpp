@@ -48,9 +48,12 @@ requireConsistentModel (const MorphableModel& model, const std::string& source)
 {
   Eigen::Index at = 0;
   const double largest = model.mean ().size () ? model.mean ().cwiseAbs ().maxCoeff (&at) : 0.0;
-  if (largest > kMaxModelCoordinate)
-    throw FormatError (source + ": the mean's vertex " + std::to_string (at / 3) + " has the coordinate " +
-                       std::to_string (model.mean ()[at]) + ", beyond +-1e6 in any unit (a corrupt model file)");
+  if (largest > kMaxModelCoordinate) {
+    std::ostringstream text;
+    text << source << ": the mean's vertex " << at / 3 << " has the coordinate " << model.mean ()[at]
+         << ", beyond +-1e6 in any unit (a corrupt model file)";
+    throw FormatError (text.str ());
+  }
   requireSaneTopology (model, source);
   for (int j = 0; j < model.numRegions (); ++j)
     requireOrthonormal (model.region (j).basis, source, "the basis of region '" + model.region (j).name + "'");
@@ -66,10 +69,12 @@ requireSameMean (const Eigen::VectorXd& mean, const Eigen::VectorXd& copy, const
   const Eigen::ArrayXd allowed = (1e-6 * mean.array ().abs ()).max (1e-5);
   Eigen::Index at = 0;
   const double worst = ((mean - copy).array ().abs () / allowed).maxCoeff (&at);
-  if (worst > 1.0)
-    throw FormatError (source + ": " + names + " disagree at vertex " + std::to_string (at / 3) + " (" +
-                       std::to_string (mean[at]) + " and " + std::to_string (copy[at]) +
-                       "): the file is corrupt (a flipped bit?)");
+  if (worst > 1.0) {
+    std::ostringstream text;
+    text << source << ": " << names << " disagree at vertex " << at / 3 << " (" << mean[at] << " and " << copy[at]
+         << "): the file is corrupt (a flipped bit?)";
+    throw FormatError (text.str ());
+  }
 }
 
 } // namespace morphreg

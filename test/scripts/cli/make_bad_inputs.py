@@ -4,7 +4,8 @@
 - corrupt copies of a model file MODEL (h5py): a flipped bit in the mean, a region basis scaled by 1000, every
   triangle (0, 0, 0), a mean coordinate of 1e30 in every copy, landmark vertices that are not whole numbers in range,
   an unknown landmark id, and bytes overwritten inside the HDF5 structure;
-- photos whose headers lie: PNG and JPEG headers declaring 100000 x 100000 pixels in 200 bytes, a JPEG cut before
+- photos whose headers lie: PNG and JPEG headers declaring 100000 x 100000 (JPEG: 60000 x 60000) pixels in 200
+  bytes, a JPEG cut before
   its image data, a JPEG of four (CMYK) components, and a PNG cut after its header.
 
 usage: make_bad_inputs.py MODEL OUT
@@ -113,7 +114,7 @@ def write_photos(out):
         sof = b"\xff\xc0" + struct.pack(">H", 2 + len(frame)) + frame
         return b"\xff\xd8" + b"\xff\xe0" + struct.pack(">H", 16) + b"JFIF\x00\x01\x01\x00\x00\x01\x00\x01\x00\x00" + sof + tail
 
-    big = jpeg(100000, 100000, 3, b"")
+    big = jpeg(60000, 60000, 3, b"")
     open(f"{out}/huge.jpg", "wb").write(big + bytes(max(0, 200 - len(big))))
     open(f"{out}/no_scan.jpg", "wb").write(jpeg(64, 64, 3, b"\xff\xd9"))
     open(f"{out}/cmyk.jpg", "wb").write(jpeg(64, 64, 4, bytes(600) + b"\xff\xd9"))
