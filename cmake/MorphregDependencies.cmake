@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Dependencies, all from Debian's packages (scripts/install-deps.sh installs them).
 # Quirk of Debian's PCL/VTK: MPI must be found before PCL, or VTK's MPI target is missing.
 find_package(MPI QUIET COMPONENTS C)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target model_contents: a sound model file whose datasets' values come from the input, read by loadModel():
 // the layout is always valid, so the fuzzer works on the contents (the mean and its copies, the bases, the
 // triangles, the landmarks and regions), which the consistency checks must refuse or accept, never misread.

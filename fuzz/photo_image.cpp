@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz targets photo_png and photo_jpeg: photos (PNG, JPEG) read as fit-photos --photo reads them: the header
 // checked from the bytes, then decoded by libpng or libjpeg.
 #include "fuzz_target.h"

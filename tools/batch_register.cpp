@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register --scans`: a study's scans registered to one model, loaded once, several at a time;
 // resumable (a scan's report on disk, made from the same scan, landmarks, model, settings and version, means it is
 // done), shardable over a job array (a lock per shard), summarised.
@@ -8,11 +9,11 @@
 #include "output_lock.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/json_file.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/scan_manifest.h>
 
@@ -242,7 +243,7 @@ registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& mo
     }
   } // the scan's outputs rolled back: its report records the failure alone
   const nlohmann::json failure = failureReport (options, why, start);
-  writeJsonFile (reportPath (options), failure);
+  writeReport (reportPath (options), failure);
   return failure;
 }
 
@@ -481,7 +482,7 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
   const Plan plan = planTasks (scans, options, batch, run);
 
   const auto start = Clock::now ();
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   const int cores = usableCores ();
   const int jobs =
       std::max (1, std::min<int> (batch.jobs > 0 ? batch.jobs : cores, static_cast<int> (plan.tasks.size ())));

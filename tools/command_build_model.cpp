@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
 #include "commands.h"
 #include "mesh_annotations.h"
 #include "option_checks.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/common/memory_budget.h>
@@ -219,7 +221,10 @@ buildModelFile (const BuildModelOptions& options)
   const MorphableModel::Ptr model = !options.from_scans.empty ()      ? buildFromScans (options, report_dir, summary)
                                     : !options.ict_directory.empty () ? buildFromIct (options, summary)
                                                                       : buildFromMeshes (options, summary);
-  model->setMetadata ({{"builder", "morphreg build-model"}, {"source", summary["source"].dump ()}});
+  model->setMetadata ({{"builder", "morphreg build-model"},
+                       {"source", summary["source"].dump ()},
+                       {"morphreg_version", MORPHREG_VERSION},
+                       {"command_line", commandLine ()}});
   saveModel (options.out, *model);
   summariseModel (*model, summary);
   summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg merge-summaries`: the summaries of the shards of a batch registration (register --scans --shard I/N,
 // e.g. a Slurm job array) combined into the summary one run over every scan writes.
 #include "batch_provenance.h"

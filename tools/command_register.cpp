@@ -1,15 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/depth_image_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
@@ -25,7 +29,10 @@
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
+#include <pcl/common/io.h>
+
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -156,25 +163,49 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
 } // namespace
 
 /** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path)
+ScanCloud
+loadScan (const RegisterOptions& options)
 {
-  auto scan = loadCloud<pcl::PointNormal> (path);
+  const std::string& path = options.scan;
+  pcl::PointCloud<pcl::PointNormal>::Ptr scan;
+  if (options.intrinsics.empty ())
+    scan = loadCloud<pcl::PointNormal> (path);
+  else { // a depth image: its organised cloud in mm, no normals
+    const DepthImage image = loadDepthPng (path);
+    DepthIntrinsics camera = loadDepthIntrinsics (options.intrinsics);
+    if (camera.width != image.width || camera.height != image.height)
+      throw InvalidInputError (path + ": the depth image is " + std::to_string (image.width) + " x " +
+                               std::to_string (image.height) + " pixels, the camera of " + options.intrinsics + " " +
+                               std::to_string (camera.width) + " x " + std::to_string (camera.height));
+    scan.reset (new pcl::PointCloud<pcl::PointNormal>);
+    pcl::copyPointCloud (*depthImageToCloud (image.depth, camera), *scan);
+    for (auto& point : *scan)
+      point.normal_x = point.normal_y = point.normal_z = std::numeric_limits<float>::quiet_NaN ();
+  }
+  const std::optional<Eigen::Vector3d> viewpoint =
+      scan->isOrganized () ? std::optional<Eigen::Vector3d> (scan->sensor_origin_.head<3> ().cast<double> ())
+                           : std::nullopt;
   dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (pointsOf (*scan), path);
   requireUnitNormals (normalsOf (*scan), path);
   scan->is_dense = true;
-  return scan;
+  return {scan, viewpoint};
 }
 
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out)
+convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out)
 {
-  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
+  if (!options.intrinsics.empty () && options.units != "auto" && options.units != "mm")
+    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
+  const std::string units = options.intrinsics.empty () ? options.units : "mm";
+  const LengthUnitGuess unit =
+      morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
+  if (scan.viewpoint)
+    *scan.viewpoint *= millimetresPer (unit.unit);
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   return unit;
@@ -183,7 +214,8 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const Registe
 void
 addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan)
 {
-  plan.addInput (options.scan, "--scan");
+  plan.addInput (options.scan, options.intrinsics.empty () ? "--scan" : "--depth");
+  plan.addInput (options.intrinsics, "--intrinsics");
   plan.addInput (options.model, "--model");
   plan.addInput (options.landmarks, "--landmarks");
   plan.addInput (options.truth, "--truth");
@@ -194,6 +226,16 @@ reportPath (const RegisterOptions& options)
 {
   return options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string ()
                                  : options.report;
+}
+
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out)
+{
+  MorphableModel::Ptr model = loadModel (path);
+  const auto file_units = model->metadata ().find (kFileUnitsKey);
+  if (file_units != model->metadata ().end () && file_units->second.rfind ("mm ", 0) != 0)
+    out << "units: the model file " << path << " is in " << file_units->second << '\n';
+  return model;
 }
 
 nlohmann::json
@@ -212,7 +254,7 @@ registerScanFile (const RegisterOptions& options)
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   return commitUnlessBadInput (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });
@@ -233,7 +275,7 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                            {"settings", settingsJson (options)},
                            {"fitted_mesh", nullptr}};
   addProvenance (options, report);
-  writeJsonFile (report_path, report);
+  writeReport (report_path, report);
   throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")", report);
 }
 
@@ -267,11 +309,13 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
              double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
 {
   const std::string report_path = reportPath (options);
+  std::ostringstream colours;
+  colours << "residual, 0-" << colour_scale << " mm";
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
-      << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
-      << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << "wrote " << options.out << ' ' << meshContents (options.out, colours.str (), "residual in mm") << ", "
+      << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
@@ -306,10 +350,12 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const auto scan = loadScan (options.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
+  ScanCloud loaded = loadScan (options);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, options, *model, out);
   Icp icp;
   configureRegistration (icp, options, model);
+  icp.setTargetViewpoint (loaded.viewpoint);
   if (!options.landmarks.empty ())
     icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
   icp.setInputTarget (scan);
@@ -323,7 +369,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
-  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
+  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale), residuals);
   savePolygonMesh (options.out, coloured);
   const double write_seconds = secondsSince (write_start);
 
@@ -345,7 +391,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
                          {"screenshot", screenshot_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeJsonFile (reportPath (options), report);
+  writeReport (reportPath (options), report);
   concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
   return report;
 }
@@ -456,8 +502,16 @@ registerRegisterCommand (CLI::App& app)
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
   auto* scan =
       command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
+  auto* depth = command->add_option ("--depth", options->scan,
+                                     "a depth camera's image as the scan: a 16-bit PNG of depths in mm (needs "
+                                     "--intrinsics)");
+  auto* intrinsics =
+      command->add_option ("--intrinsics", options->intrinsics,
+                           "the depth camera of --depth: JSON with width, height, fx, fy, cx, cy (pixels)");
+  depth->excludes (scan)->needs (intrinsics);
+  intrinsics->needs (depth);
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
+  command->add_option ("-o,--out", options->out, meshOutputHelp ("fitted mesh to write", "residual", "residual in mm"))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,
@@ -475,9 +529,9 @@ registerRegisterCommand (CLI::App& app)
                    "report's status \"failed\"; a fit that loses the scan (too few correspondences) exits 4 with "
                    "the report alone.");
   auto batch = std::make_shared<BatchOptions> ();
-  addBatchOptions (command, *options, *batch)->excludes (scan);
-  command->callback ([options, batch, command, scan] () {
-    if (options->scans.empty () && scan->count () == 0)
+  addBatchOptions (command, *options, *batch)->excludes (scan)->excludes (depth);
+  command->callback ([options, batch, command, scan, depth] () {
+    if (options->scans.empty () && scan->count () == 0 && depth->count () == 0)
       throw CLI::RequiredError ("--scan or --scans");
     runRegister (*options, *batch);
   });

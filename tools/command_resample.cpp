@@ -1,17 +1,18 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg resample`: a scan + a model file -> the scan's surface in the model's topology. The scan is registered
 // exactly as `register` does it, then ScanResampler moves the fitted mesh's vertices onto the scan along their normals
 // and fills the holes; writes the resampled mesh (vertex colours: observed / filled), the fitted mesh and one JSON
 // report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
+#include "mesh_output.h"
 #include "pipeline.h"
+#include "provenance.h"
 #include "scan_resampling.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/registration/scan_checks.h>
@@ -47,7 +48,7 @@ resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::Po
     std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
               << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
               << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
-              << options.out << " (vertex colours: grey observed, orange filled)\n";
+              << options.out << ' ' << meshContents (options.out, "grey observed, orange filled", "") << '\n';
 }
 
 /** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
@@ -59,8 +60,9 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
   const RegisterOptions& registration = options.registration;
   if (registration.landmarks.empty ())
     throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
-  const auto scan = loadScan (registration.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, registration, model, std::cout);
+  ScanCloud loaded = loadScan (registration);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, registration, model, std::cout);
   const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);
   requireLandmarksOnScan (landmarks, pointsOf (*scan), registration.landmarks);
   const TriangleMesh reference =
@@ -73,7 +75,7 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
       {"scan", {{"file", registration.scan}, {"points", scan->size ()}, {"units", toString (unit.unit)}}},
       {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
   resampleAndReport (options, *scan, reference, report);
-  writeJsonFile (registration.report, report);
+  writeReport (registration.report, report);
   return report;
 }
 
@@ -92,7 +94,7 @@ runResample (ResampleOptions options)
   plan.addOutput (registration.report, "--report");
   plan.check ();
   OutputTransaction outputs (plan.outputs ());
-  const MorphableModel::Ptr model = loadModel (registration.model);
+  const MorphableModel::Ptr model = loadModelFile (registration.model, std::cout);
   if (options.reference == "landmarks") {
     commitUnlessBadInput (outputs, [&] { return resampleFromLandmarks (options, *model); });
     return;
@@ -125,7 +127,9 @@ registerResampleCommand (CLI::App& app)
                     "by a thin plate spline onto --landmarks, METHOD section 5; no registration)")
       ->check (CLI::IsMember ({"fit", "landmarks"}))
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "resampled mesh to write (PLY; colours: observed / filled)")
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("resampled mesh to write", "grey observed, orange filled", ""))
       ->capture_default_str ();
   command->add_option ("--fit-out", registration.out,
                        "the reference (the fit, or the warped mean) to write (default: the --out path + _fit)");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The resampling step after a registration, shared by `resample` and `build-model --from-scans`: the scan moved into
 // the fitted model's topology by ScanResampler, the mesh written and its statistics added to the scan's report.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Type stubs of morphreg (the pybind11 extension _morphreg re-exported). Points are (N, 3) arrays in mm."""
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg.Model: a multi-region PCA head model (statismo HDF5 files), its mean, regions, components, landmarks,
 // instances and random samples as numpy arrays.
 #include "bindings.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg.register: a MorphableICP fit of a model to points (numpy), configured and checked as `morphreg register`
 // does it, with the GIL released while it runs and an optional per-iteration progress callback.
 #include "bindings.h"

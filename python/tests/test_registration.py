@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.register: accuracy against the truth, equality with `morphreg register`, the GIL, progress, bad input."""
 import json
 import sys

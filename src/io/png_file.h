@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // libpng reading shared by the depth images (depth_image_io.cpp) and the photos (photo_file.cpp): the image header
 // checked from the file's bytes before libpng allocates anything, and libpng's errors (reported through longjmp)

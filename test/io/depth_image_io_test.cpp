@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Depth images (16-bit greyscale PNG, mm) and depth-camera intrinsics (JSON): round trips, and every bad file named
 // with its problem before a pixel is decoded.
 #include <morphreg/common/error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Integers read from JSON are whole numbers in range: never wrapped (4294967301 as 5) or truncated (12.9 as 12).
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>

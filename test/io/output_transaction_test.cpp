@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The outputs of one run are committed together: a run that fails half-way changes no file, removes no old output
 // and leaves no partial file; transactions nest.
 #include <morphreg/common/error.h>

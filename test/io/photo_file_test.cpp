@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Photos (PNG, JPEG) are checked from their header bytes and decoded whole before any work: grey and 16-bit PNGs
 // become 8-bit RGB; corrupt, cut, empty, lying or special files are named with their problem.
 #include <morphreg/common/error.h>

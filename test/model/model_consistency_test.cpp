@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A model read from a file is checked for consistency: a scaled basis, a repeated triangle corner, an absurd
 // coordinate or copies of the mean that disagree are refused naming the part; a sound model passes.
 #include <morphreg/common/error.h>

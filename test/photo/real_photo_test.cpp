@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Photo fitting on photos of real meshes (made at test time): MediaPipe's canonical face (landmarks: its documented
 // ids) and the real head scan (landmark vertices picked on renders: annotations/leeperrysmith_head_landmarks.json),
 // photographed as real_photos.h describes and scored in 3D against the mesh the photos show (the fit aligned

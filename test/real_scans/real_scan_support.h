@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The shared real head-and-shoulders scan (Lee Perry-Smith, ../shared/data/real_head_scans), the ICT-FaceKit
 // 7-region model with 30 components per region, random similarity poses and the scan's evaluation convention:

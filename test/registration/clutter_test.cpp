@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The global start and MorphableICP on scans that hold what real scans carry beyond the head: shoulders and torso,
 // a chair back, hair-like noise on the crown, no normals, any rotation. 20 heads of the built-in population.
 #include "scan_protocol.h"

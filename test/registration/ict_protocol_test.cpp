@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // MorphableICP with the ICT-FaceKit model under the scan protocol of scan_protocol.h: 20 heads with fixed seeds,
 // scans with a random similarity, holes, noise, outliers and noisy landmarks; error = vertex RMS against the posed
 // truth.

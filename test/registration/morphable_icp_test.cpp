@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // MorphableICP on the built-in synthetic population: accuracy against the posed truth under the scan protocol of
 // scan_protocol.h, agreement with pcl::IterativeClosestPoint when the shape is frozen, the PCL settings, and bad
 // input.

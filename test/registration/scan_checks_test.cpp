@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The checks around a registration: scans that cannot be registered, and fits that are not believable.
 #include "../support/synthetic_heads.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The raw-scan protocol: simulated laser scans (sigma 0.2 mm, the scanner's holes, point clouds) of unseen heads
 // (seeds 1001-1020) registered with a model of a disjoint population (seeds 1-200), then resampled into the model's
 // topology; the resampled vertices are measured against the true head surface, and a model built from the resampled

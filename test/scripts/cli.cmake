@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # CliTest: the command line end to end on small synthetic inputs; bad arguments exit 2, bad files exit 1 with a
 # message naming the file. Every test runs through morphreg_cli_test (test/support/command_test.cmake), which checks
 # the exit code, the report's status and the files besides what the test is named for.
@@ -66,6 +67,21 @@ morphreg_cli_test(ModelInfoPrintsJson FIXTURES_REQUIRED cli_model
   OUTPUT "\"components\": 8,.*\"nose_tip\": [0-9]+.*\"vertices\": 3458"
   ARGS model-info --model ${cli_dir}/small_model.h5 --json)
 morphreg_cli_expect_exit(ModelInfoCorruptModelIsNamed 1 "corrupt_model.h5" model-info --model ${cli_dir}/corrupt_model.h5)
+# A model's unit: statismo files (written by the independent h5py writer of the model tests) in m are recognised by
+# their size and converted, in micrometres refused; a built model states mm.
+file(MAKE_DIRECTORY ${cli_dir}/unit_models)
+morphreg_command_test(CliTest.ModelFilesInOtherUnits FIXTURES_SETUP cli_unit_models
+  FILES ${cli_dir}/unit_models/statismo_metres.h5 ${cli_dir}/unit_models/statismo_micrometres.h5
+  COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/model/statismo_fixture.py write ${cli_dir}/unit_models)
+morphreg_cli_test(ModelInfoShowsAModelInMetresConverted FIXTURES_REQUIRED cli_unit_models
+  OUTPUT "units mm\n.*the file's unit: m \\(guessed from its size: the mean's RMS radius is 0\\.173: taken as m \\(x1000 to mm\\), it is 1\\.73 times a head model's 100 mm\\); converted to mm on loading"
+  ARGS model-info --model ${cli_dir}/unit_models/statismo_metres.h5)
+morphreg_cli_expect_exit(ModelInfoRefusesAModelInNoUnit 1
+  "statismo_micrometres.h5: not a head model in any unit: the mean's RMS radius is 1.73e+05"
+  model-info --model ${cli_dir}/unit_models/statismo_micrometres.h5)
+set_tests_properties(CliTest.ModelInfoRefusesAModelInNoUnit PROPERTIES FIXTURES_REQUIRED cli_unit_models)
+morphreg_cli_test(ModelInfoShowsTheStatedUnit FIXTURES_REQUIRED cli_model
+  OUTPUT "the file's unit: mm \\(the file's units\\)" ARGS model-info --model ${cli_dir}/small_model.h5)
 
 # register: the fit of the small scan against its true head, and the report's contents.
 morphreg_cli_test(RegisterSynthScanMatchesTruth FIXTURES_REQUIRED "cli_small;cli_model" FIXTURES_SETUP cli_fit
@@ -76,6 +92,15 @@ morphreg_cli_test(RegisterSynthScanMatchesTruth FIXTURES_REQUIRED "cli_small;cli
   CHECKS ${cli_scripts}/check_register_report.cmake DEFINE MAX_TRUTH_RMS=1.0
   ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
        --truth ${cli_dir}/small/scan_0_truth.ply --out ${cli_dir}/fit.ply --report ${cli_dir}/fit.json)
+# The fitted mesh in each format other tools open: the "wrote" line says what the format carries, and the file,
+# read back by an independent reader, carries it (PLY: colours and the residual as vertex quality; OBJ: v x y z r g b;
+# VTK: colours).
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+foreach(format ply obj vtk)
+  morphreg_command_test(CliTest.RegisterOutputCarriesWhatItSays.${format} FIXTURES_REQUIRED "cli_small;cli_model"
+    COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_mesh_output.py $<TARGET_FILE:morphreg_cli>
+            ${cli_dir}/fit_format.${format} --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5)
+endforeach()
 # The synthetic scan's landmarks are exact: weighted 10 (the default 1 suits landmarks placed with a few mm of error).
 morphreg_cli_test(RegisterWithRejectorChainAndLandmarks FIXTURES_REQUIRED "cli_small;cli_model"
   MAXIMA "vertices the scan covers: RMS ([0-9.]+) mm=>1.0"
@@ -172,7 +197,7 @@ morphreg_cli_expect_exit(RegisterBadUnitExits2 2 "--units" register --scan a.pcd
 # resample: the small scan registered and resampled into the model's topology; a scan refused by the resampler (its
 # largest hole over the allowed share) exits 1 and leaves no output.
 set(resample_small resample --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --quiet)
-morphreg_cli_test(ResampleSynthScan FIXTURES_REQUIRED "cli_small;cli_model"
+morphreg_cli_test(ResampleSynthScan FIXTURES_REQUIRED "cli_small;cli_model" FIXTURES_SETUP cli_resampled
   REPORT ${cli_dir}/resampled.json FILES ${cli_dir}/resampled.ply ${cli_dir}/resampled_fit.ply
   CHECKS ${cli_scripts}/check_resample.cmake DEFINE MIN_COVERAGE=0.5
   ARGS ${resample_small} --out ${cli_dir}/resampled.ply)
@@ -246,6 +271,7 @@ morphreg_command_test(SlurmTest.ClusterDocShowsTheSbatchScript
           -DFILE=${PROJECT_SOURCE_DIR}/docs/register_study.sbatch -P ${cli_scripts}/doc_shows_file.cmake)
 # Failing scans are recorded in the summary, naming the problem, and the others registered; exit 4 at the end.
 morphreg_cli_test(BatchFailingScanIsNamedInTheSummary FIXTURES_REQUIRED "cli_model;cli_batch_scans" EXPECT_CODE 4
+  FIXTURES_SETUP cli_batch_failing
   ERROR "2 of 4 scans failed" CLEAN ${cli_dir}/batch_failing REPORT ${cli_dir}/batch_failing/summary.json STATUS none
   FILES ${cli_dir}/batch_failing/summary.csv ${cli_dir}/batch_failing/scan_0.ply ${cli_dir}/batch_failing/scan_1.ply
   CHECKS ${cli_scripts}/check_batch_failures.cmake DEFINE SUMMARY=${cli_dir}/batch_failing/summary.csv
@@ -379,7 +405,7 @@ morphreg_cli_test(DemoScreenshotWithoutDisplayFailsEarly EXPECT_CODE 1 ERROR "--
 # fit-photos: the small model fitted to the annotated photos of the first head (measured: vertex RMS 1.07 mm against
 # the truth with the joint fit, width RMS 0.20 mm).
 set(small_photos fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json)
-morphreg_cli_test(FitPhotosAgainstTheTruth FIXTURES_REQUIRED "cli_small;cli_model"
+morphreg_cli_test(FitPhotosAgainstTheTruth FIXTURES_REQUIRED "cli_small;cli_model" FIXTURES_SETUP cli_photos
   MAXIMA "vertex RMS against the truth .*photo_0_truth.json: ([0-9.]+) mm=>1.4"
   OUTPUT "wrote .*photos.ply" FILES ${cli_dir}/photos.ply
   REPORT ${cli_dir}/photos.json REPORT_MATCH "\"truth_error_mm\": *{[^}]*\"rms\": [01]\\."
@@ -475,7 +501,7 @@ morphreg_cli_test(SegmentedWarpTakesAnOverlapPerSegment FIXTURES_REQUIRED cli_sm
   FILES ${cli_dir}/warped_segmented.ply
   ARGS ${small_warp} --truth ${cli_dir}/small/head_001.ply --labels ${cli_dir}/small/regions.json
        --overlap 30,30,30,30,30,30,inf --report ${cli_dir}/warp_segmented.json --out ${cli_dir}/warped_segmented.ply)
-morphreg_cli_test(SegmentedWarpTakesABlendWidthPerSegment FIXTURES_REQUIRED cli_small OUTPUT "wrote .*warped_blend.ply"
+morphreg_cli_test(SegmentedWarpTakesABlendWidthPerSegment FIXTURES_REQUIRED cli_small FIXTURES_SETUP cli_warp_blend OUTPUT "wrote .*warped_blend.ply"
   REPORT ${cli_dir}/warp_blend.json REPORT_MATCH "\"blend_width_mm\": *.[^a-z]*0\\.0,[^a-z]*40\\.0"
   FILES ${cli_dir}/warped_blend.ply
   ARGS ${small_warp} --labels ${cli_dir}/small/regions.json --blend 0,0,0,0,0,0,40 --report ${cli_dir}/warp_blend.json
@@ -562,3 +588,25 @@ morphreg_cli_test(WarpMlsBetweenSubjects FIXTURES_REQUIRED cli_mh_joints REQUIRE
   ARGS warp --method mls --mesh ${bodies}/mh_base.ply --units dm --source ${mh_dir}/standing.csv
        --target ${mh_dir}/male.csv --truth ${bodies}/mh_caucasian-male-young.ply --report ${mh_dir}/male.json
        --out ${mh_dir}/male.ply)
+
+# Provenance: every report names the version that wrote it and the command line that made it; a model names them in
+# its metadata.
+function(morphreg_cli_provenance name command fixture)
+  morphreg_command_test(CliTest.ReportHasVersionAndCommandLine.${name} FIXTURES_REQUIRED "${fixture}"
+    COMMAND ${CMAKE_COMMAND} -DCOMMAND=${command} -DVERSION=${PROJECT_VERSION} ${ARGN}
+            -P ${cli_scripts}/check_provenance.cmake)
+endfunction()
+morphreg_cli_provenance(register register cli_fit -DREPORT=${cli_dir}/fit.json)
+morphreg_cli_provenance(synth synth cli_small -DREPORT=${cli_dir}/small/population.json)
+morphreg_cli_provenance(batch_summary register cli_batch_failing -DREPORT=${cli_dir}/batch_failing/summary.json)
+morphreg_cli_provenance(build_model_from_scans build-model cli_from_scans
+  -DREPORT=${cli_dir}/from_scans_scans/summary.json)
+morphreg_cli_provenance(fit_photos fit-photos cli_photos -DREPORT=${cli_dir}/photos.json)
+morphreg_cli_provenance(warp warp cli_warp_blend -DREPORT=${cli_dir}/warp_blend.json)
+morphreg_cli_provenance(resample resample cli_resampled -DREPORT=${cli_dir}/resampled.json)
+morphreg_cli_provenance(evaluate_model evaluate-model "cli_small;cli_model"
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|evaluate-model|--model|${cli_dir}/small_model.h5|--meshes|${cli_dir}/small/head_010.ply|${cli_dir}/small/head_011.ply|--samples|10|--json|--quiet")
+morphreg_cli_provenance(model_info model-info cli_model
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|model-info|--model|${cli_dir}/small_model.h5|--json")
+morphreg_cli_provenance(model_metadata build-model cli_model -DKEY=metadata
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|model-info|--model|${cli_dir}/small_model.h5|--json")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The bad-input catalogue (CliTest.BadInput.*): files and arguments a hostile or careless user gives each subcommand.
 # Every case runs in its own folder with copies of its inputs (CASE_DIR of test/support/command_test.cmake) and asserts
 # the exit code, that stderr names the file or option and the problem, that the inputs are unchanged and that no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file memory_budget.h
  *  \brief Memory before allocation: a request whose size comes from an option or a file header (samples, an image

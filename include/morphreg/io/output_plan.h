@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file output_plan.h
  *  \brief Every file one run reads and writes, checked together before any work, so that no output can destroy an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file output_transaction.h
  *  \brief The outputs of one run committed together: whole, or not at all, with the old ones kept on failure.

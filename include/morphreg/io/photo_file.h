@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_file.h
  *  \brief Photos (PNG, JPEG) read safely: the header checked from the file's bytes (signature, size 1 to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file model_consistency.h
  *  \brief What a model read from a file must satisfy beyond its shapes, checked before it is used: a corrupt model

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file rgb_image.h
  *  \brief An 8-bit RGB photo in memory, read from PNG or JPEG (checked and decoded by loadPhotoFile(), photo_file.h)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_result_json.h
  *  \brief A finished MorphableICP fit as JSON: its verdict, similarity, coefficients per region, residuals,

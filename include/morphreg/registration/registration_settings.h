@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_settings.h
  *  \brief The settings of a scan registration by their command-line names (`morphreg register --iterations ...`),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # A check of run_command.cmake (CHECKS) for `morphreg register --truth` with -DMAX_TRUTH_RMS=mm: the report holds the
 # similarity, coefficients per region, residual statistics, the iteration history (one entry per iteration), the
 # termination reason, timings and the error against the truth, within MAX_TRUTH_RMS.

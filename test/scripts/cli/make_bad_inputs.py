@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the bad-input catalogue's crafted binary files (test/scripts/cli_catalogue.cmake) into OUT:
 
 - corrupt copies of a model file MODEL (h5py): a flipped bit in the mean, a region basis scaled by 1000, every

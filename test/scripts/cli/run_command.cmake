@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The one runner of every command-line and sample test (test/support/command_test.cmake declares them):
 #   cmake -DCOMMAND=<program;args...> [checks...] -P run_command.cmake
 # Lists arrive ";"-separated. The run passes only when every check below holds:
