@@ -69,7 +69,8 @@ registerAndResample (const BuildModelOptions& options, const ScanEntry& entry, c
             resampleFit (options.resampling, entry.scan, resampled, scan, fitted, report);
         if (result)
           mesh = std::move (result->mesh);
-      });
+      },
+      {resampled});
 }
 
 /** The summary row of one scan: status, why it failed, fit RMS, coverage and holes. */
@@ -123,10 +124,6 @@ MorphableModel::Ptr
 buildFromScans (const BuildModelOptions& options, const std::string& report_dir, nlohmann::json& summary)
 {
   const ScanManifest scans = loadScanList (options.from_scans);
-  std::error_code ec;
-  fs::create_directories (report_dir, ec);
-  if (!fs::is_directory (report_dir, ec))
-    throw IoError (report_dir + ": cannot create the report folder");
   const MorphableModel::Ptr registering = loadModelFile (options.registration.model, std::cout);
   nlohmann::json rows = nlohmann::json::array ();
   const std::vector<TriangleMesh> meshes = resampleScans (options, scans, report_dir, registering, rows);

@@ -4,7 +4,6 @@
 // writes the fitted mesh, the JSON report and a PNG overlay, with the fit's error against the true head.
 #include "commands.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
@@ -60,11 +59,14 @@ runDemo (DemoOptions options)
   if ((options.screenshot || options.convergence_plot) && !std::getenv ("DISPLAY"))
     throw InvalidInputError ("demo: the overlay screenshot and the convergence plot render through X and $DISPLAY is "
                              "unset; run under `xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
-  OutputFolder output (options.out, {});
+  // Each step's outputs are committed when the step is complete (each later step reads them); report.json, written
+  // last, marks a complete demo.
   const synthetic::HeadGenerator generator (options.resolution);
   const std::string population = options.out + "/population";
+  OutputTransaction population_output ({}, {population});
   writePopulation (population, generator, generator.population (options.count, options.seed), options.seed,
                    options.quiet);
+  population_output.commit (population + "/population.json");
 
   BuildModelOptions model;
   model.directory = population;
@@ -77,7 +79,9 @@ runDemo (DemoOptions options)
 
   // The scanned subject is not in the population: head seed + count, the next one drawn.
   const std::uint64_t subject_seed = options.seed + static_cast<std::uint64_t> (options.count);
+  OutputTransaction scan_output ({}, {options.out + "/scan"});
   writeSubjectScan (options, generator, subject_seed);
+  scan_output.commit ();
 
   RegisterOptions& fit = options.registration;
   fit.scan = options.out + "/scan/scan.pcd";
@@ -89,7 +93,7 @@ runDemo (DemoOptions options)
   fit.screenshot = options.screenshot ? options.out + "/overlay.png" : "";
   fit.convergence_plot = options.convergence_plot ? options.out + "/convergence.png" : "";
   fit.quiet = options.quiet;
-  const nlohmann::json report = keepOnSuccessOrFitFailure (output, [&] { return registerScanFile (fit); });
+  const nlohmann::json report = registerScanFile (fit);
 
   const nlohmann::json& truth = report["truth_vertex_error_mm"];
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
@@ -111,11 +115,11 @@ registerDemoCommand (CLI::App& app)
       app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out");
   command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
   command->add_option ("-n,--count", options->count, "population size")
-      ->check (CLI::Range (2, 5000))
+      ->check (inRange (2, 5000))
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "population seed")->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
-      ->check (CLI::Range (20, 44))
+      ->check (inRange (20, 44))
       ->capture_default_str ();
   command->add_option ("--model-components", options->model_components, "components per region kept in the model")
       ->check (positive ())

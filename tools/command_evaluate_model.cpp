@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `morphreg evaluate-model`: a model's compactness, generalisation (on held-out meshes) and specificity (against its
 // training meshes), per number of components, as text or JSON.
+#include "option_checks.h"
 #include "commands.h"
 #include "pipeline.h"
 #include "progress.h"
@@ -155,7 +156,7 @@ registerEvaluateModelCommand (CLI::App& app)
   command->add_option ("--training", options->training,
                        "the model's training meshes, folders or files (for specificity; without it none)");
   command->add_option ("--samples", options->samples, "random model shapes for specificity")
-      ->check (CLI::Range (1, 10000000))
+      ->check (inRange (1, 10000000))
       ->capture_default_str ();
   command->add_option ("--seed", options->seed, "seed of the random shapes")->capture_default_str ();
   command

@@ -5,7 +5,6 @@
 #include "commands.h"
 #include "mesh_output.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "provenance.h"
 
@@ -14,6 +13,8 @@
 #include <morphreg/photo/two_view_settings.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/frontal_texture.h>
 #include <morphreg/photo/photo_view_io.h>
@@ -159,16 +160,15 @@ printFitSummary (const FitPhotosOptions& options, const TwoViewFit& fit, bool wi
  */
 std::string
 writeFittedMesh (const FitPhotosOptions& options, const TwoViewFit& fit, const std::optional<FrontalView>& frontal,
-                 nlohmann::json& report)
+                 const std::optional<RgbImage>& photo, nlohmann::json& report)
 {
   if (!options.truth.empty ()) {
     const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
     savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max), errors));
     return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
   }
-  if (!options.photo.empty ()) {
-    const VertexTexture texture =
-        frontalTexture (fit.image_mesh, frontal->normalisation (), loadRgbImage (options.photo));
+  if (photo) {
+    const VertexTexture texture = frontalTexture (fit.image_mesh, frontal->normalisation (), *photo);
     report["texture"] = {{"photo", options.photo}, {"visible_vertices", texture.visibleCount ()}};
     savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture.colours));
     return "frontal photo (grey where unseen)";
@@ -181,8 +181,15 @@ void
 runFitPhotos (const FitPhotosOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
-  OutputFiles outputs ({options.out, options.report},
-                       {options.model, options.profile, options.frontal, options.photo, options.truth});
+  OutputPlan plan;
+  for (const auto& [input, role] : {std::pair (options.model, "--model"), std::pair (options.profile, "--profile"),
+                                    std::pair (options.frontal, "--frontal"), std::pair (options.photo, "--photo"),
+                                    std::pair (options.truth, "--truth")})
+    plan.addInput (input, role);
+  plan.addOutput (options.out, "--out");
+  plan.addOptionalOutput (options.report, "--report");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   const MorphableModel::ConstPtr model = loadModelFile (options.model, std::cout);
   const ProfileView profile = loadProfileView (options.profile);
   if (options.frontal.empty () && options.approach != "profile")
@@ -192,6 +199,9 @@ runFitPhotos (const FitPhotosOptions& options)
       options.frontal.empty () ? std::nullopt : std::optional<FrontalView> (loadFrontalView (options.frontal));
   if (!options.photo.empty () && !frontal)
     throw InvalidInputError ("fit-photos --photo needs --frontal: the frontal annotation places the photo");
+  // Decoded before the fit: a corrupt photo fails at once, not after the work.
+  const std::optional<RgbImage> photo =
+      options.photo.empty () ? std::nullopt : std::optional<RgbImage> (loadRgbImage (options.photo));
   const TwoViewFit fit = fitViews (options, model, profile, frontal);
 
   nlohmann::json report = twoViewFitJson (fit);
@@ -202,12 +212,12 @@ runFitPhotos (const FitPhotosOptions& options)
   report["warnings"] = fitWarnings (options, fit);
   report["settings"] = toJson (static_cast<const TwoViewSettings&> (options));
   printFitSummary (options, fit, frontal.has_value ());
-  const std::string colouring = writeFittedMesh (options, fit, frontal, report);
+  const std::string colouring = writeFittedMesh (options, fit, frontal, photo, report);
   report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
   report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
     writeReport (options.report, report);
-  outputs.keep ();
+  outputs.commit ();
   std::cout << "wrote " << options.out << " (model frame, mm) "
             << (colouring == "none" ? "(no colours)"
                                     : meshContents (options.out, colouring,
@@ -252,7 +262,7 @@ registerFitPhotosCommand (CLI::App& app)
   command
       ->add_option ("--coefficient-limit", options->coefficient_limit,
                     "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
-      ->check (positive ())
+      ->check (positiveOrInfinite ())
       ->capture_default_str ();
   command->add_option ("--frontal-weight", options->frontal_weight, "weight of each frontal landmark's rows (> 0)")
       ->check (positive ())

@@ -4,7 +4,6 @@
 #include "commands.h"
 #include "mesh_output.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
 #include "display_inputs.h"
@@ -20,6 +19,7 @@
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/registration/iteration_progress.h>
 #include <morphreg/registration/morphable_icp.h>
@@ -206,6 +206,7 @@ loadScan (const RegisterOptions& options)
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (pointsOf (*scan), path);
+  requireUnitNormals (normalsOf (*scan), path);
   scan->is_dense = true;
   return {scan, viewpoint};
 }
@@ -225,6 +226,16 @@ convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   return unit;
+}
+
+void
+addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan)
+{
+  plan.addInput (options.scan, options.intrinsics.empty () ? "--scan" : "--depth");
+  plan.addInput (options.intrinsics, "--intrinsics");
+  plan.addInput (options.model, "--model");
+  plan.addInput (options.landmarks, "--landmarks");
+  plan.addInput (options.truth, "--truth");
 }
 
 std::string
@@ -248,8 +259,16 @@ nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
   const auto start = Clock::now ();
-  OutputFiles outputs ({options.out, reportPath (options), options.screenshot, options.convergence_plot},
-                       {options.scan, options.model, options.landmarks, options.truth});
+  OutputPlan plan;
+  addRegistrationInputs (options, plan);
+  plan.addOutput (options.out, "--out");
+  plan.addOutput (reportPath (options), options.report.empty () ? "the report, --out with .json" : "--report");
+  if (!options.screenshot.empty ())
+    plan.addOutput (options.screenshot, "--screenshot");
+  if (!options.convergence_plot.empty ())
+    plan.addOutput (options.convergence_plot, "--convergence-plot");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   // Without X the screenshot would fail after the fit: open the offscreen viewer first.
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
@@ -259,7 +278,7 @@ registerScanFile (const RegisterOptions& options)
     throw InvalidInputError ("register --convergence-plot " + options.convergence_plot +
                              ": the plot renders through X and $DISPLAY is unset; run under `xvfb-run -a`");
   const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
-  return keepOnSuccessOrFitFailure (outputs, [&] {
+  return commitUnlessBadInput (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });
 }
@@ -280,7 +299,7 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                            {"fitted_mesh", nullptr}};
   addProvenance (options, report);
   writeReport (report_path, report);
-  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
+  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")", report);
 }
 
 /** The report's description of the scan and how its unit was found. */
@@ -326,7 +345,7 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
   std::string reasons;
   for (const nlohmann::json& failure : report["checks"]["failures"])
     reasons += (reasons.empty () ? "" : "; ") + failure.get<std::string> ();
-  throw FitCheckFailure (reasons + " (see " + report_path + ")");
+  throw FitCheckFailure (reasons + " (see " + report_path + ")", report);
 }
 
 /** Runs \a icp's fit with progress shown unless quiet; a lost scan is reported and thrown (reportLostFit). */
@@ -420,7 +439,7 @@ addRobustnessOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--reject-trimmed", options.reject_trimmed,
                     "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
-      ->check (CLI::Range (0.01, 1.0));
+      ->check (inRange (0.01, 1.0));
 }
 } // namespace
 
@@ -428,18 +447,18 @@ void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options)
 {
   command->add_option ("--width", options.width, "screenshot width (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--height", options.height, "screenshot height (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--iterations", options.iterations, "ICP iterations, similarity and shape stages together")
-      ->check (CLI::Range (1, 10000))
+      ->check (inRange (1, 10000))
       ->capture_default_str ();
   command
       ->add_option ("--similarity-iterations", options.similarity_iterations,
                     "at most this many iterations fit the similarity alone before the shape joins")
-      ->check (CLI::Range (1, 10000))
+      ->check (inRange (1, 10000))
       ->capture_default_str ();
   command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
       ->check (nonNegative ())
@@ -454,7 +473,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--tangential-weight", options.tangential_weight,
                     "share of the point-to-point term kept along the tangent plane (point-to-plane)")
-      ->check (CLI::Range (0.0, 1.0))
+      ->check (inRange (0.0, 1.0))
       ->capture_default_str ();
   command
       ->add_option ("--shape-prior", options.shape_prior,

@@ -2,13 +2,15 @@
 // `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a). A
 // mesh with a per-vertex "quality" (register's fitted meshes: the residual in mm) is coloured by it, with a colour bar.
 #include "commands.h"
-#include "output_files.h"
+#include "option_checks.h"
 #include "display_inputs.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include <iostream>
@@ -78,10 +80,16 @@ runRender (const RenderOptions& options)
       (options.meshes.size () != 2 || !options.clouds.empty () || !options.landmarks.empty ()))
     throw InvalidInputError ("render --side-by-side shows two --mesh files, the first on the left, and nothing else (" +
                              std::to_string (options.meshes.size ()) + " meshes given)");
-  std::vector<std::string> inputs = options.meshes;
-  inputs.insert (inputs.end (), options.clouds.begin (), options.clouds.end ());
-  inputs.insert (inputs.end (), options.landmarks.begin (), options.landmarks.end ());
-  OutputFiles outputs ({options.out}, inputs);
+  OutputPlan plan;
+  for (const std::string& mesh : options.meshes)
+    plan.addInput (mesh, "--mesh");
+  for (const std::string& cloud : options.clouds)
+    plan.addInput (cloud, "--cloud");
+  for (const std::string& landmarks : options.landmarks)
+    plan.addInput (landmarks, "--landmarks");
+  plan.addOutput (options.out, "--out");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
   std::vector<int> viewports (options.meshes.size (), 0);
   if (!options.side_by_side.empty ())
@@ -98,7 +106,7 @@ runRender (const RenderOptions& options)
                          2.5, true, "landmarks_" + std::to_string (i) + "_");
   viewer.resetCamera (viewDirection (options.view));
   viewer.saveScreenshot (options.out, options.width, options.height);
-  outputs.keep ();
+  outputs.commit ();
   std::cout << "wrote " << options.out << " (" << options.width << "x" << options.height << ")\n";
 }
 } // namespace
@@ -119,22 +127,22 @@ registerRenderCommand (CLI::App& app)
       ->check (CLI::ExistingFile);
   command->add_option ("-o,--out", options->out, "PNG to write")->capture_default_str ();
   command->add_option ("--width", options->width, "image width (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--height", options->height, "image height (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--view", options->view, "camera: front, back, left, right, oblique")
       ->check (CLI::IsMember ({"front", "back", "left", "right", "oblique"}))
       ->capture_default_str ();
   command->add_option ("--opacity", options->opacity, "mesh opacity (meshes without residuals)")
-      ->check (CLI::Range (0.0, 1.0))
+      ->check (inRange (0.0, 1.0))
       ->capture_default_str ();
   command
       ->add_option ("--colour-max", options->colour_max,
                     "top of the residual colour bar (mm) for meshes with a per-vertex quality (register's fits); 0: "
                     "the 95th percentile")
-      ->check (CLI::NonNegativeNumber);
+      ->check (nonNegative ());
   command
       ->add_option ("--side-by-side", options->side_by_side,
                     "two captions: the two --mesh files side by side (left, right) under one camera")

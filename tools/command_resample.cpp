@@ -5,7 +5,6 @@
 // report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
 #include "mesh_output.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "provenance.h"
 #include "scan_resampling.h"
@@ -14,6 +13,8 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/resampling/landmark_reference.h>
 
@@ -86,14 +87,19 @@ runResample (ResampleOptions options)
     registration.out = std::filesystem::path (options.out).replace_extension ().string () + "_fit.ply";
   if (registration.report.empty ())
     registration.report = std::filesystem::path (options.out).replace_extension (".json").string ();
-  OutputFiles outputs ({options.out, registration.out, registration.report},
-                       {registration.scan, registration.model, registration.landmarks});
+  OutputPlan plan;
+  addRegistrationInputs (registration, plan);
+  plan.addOutput (options.out, "--out");
+  plan.addOutput (registration.out, "--fit-out");
+  plan.addOutput (registration.report, "--report");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   const MorphableModel::Ptr model = loadModelFile (registration.model, std::cout);
   if (options.reference == "landmarks") {
-    keepOnSuccessOrFitFailure (outputs, [&] { return resampleFromLandmarks (options, *model); });
+    commitUnlessBadInput (outputs, [&] { return resampleFromLandmarks (options, *model); });
     return;
   }
-  keepOnSuccessOrFitFailure (outputs, [&] {
+  commitUnlessBadInput (outputs, [&] {
     return registerScan (registration, model, nullptr, 0.0, std::cout, std::cerr,
                          [&] (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
                               nlohmann::json& report) { resampleAndReport (options, scan, fitted, report); });

@@ -3,13 +3,14 @@
 // landmarks and the fit's correspondences to the scan, each a layer its key shows or hides; --screenshot writes a PNG
 // instead of opening the window (headless: xvfb-run -a).
 #include "commands.h"
-#include "output_files.h"
 #include "display_inputs.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/visualization/layer_toggles.h>
 #include <morphreg/visualization/registration_visualizer.h>
@@ -107,9 +108,15 @@ runView (const ViewOptions& options)
 {
   if (options.scan.empty () && options.fit.empty ())
     throw InvalidInputError ("view: nothing to show; give --scan, --fit or both");
-  std::vector<std::string> inputs{options.scan, options.fit};
-  inputs.insert (inputs.end (), options.landmarks.begin (), options.landmarks.end ());
-  OutputFiles outputs ({options.screenshot}, inputs);
+  OutputPlan plan;
+  plan.addInput (options.scan, "--scan");
+  plan.addInput (options.fit, "--fit");
+  for (const std::string& landmarks : options.landmarks)
+    plan.addInput (landmarks, "--landmarks");
+  if (!options.screenshot.empty ())
+    plan.addOutput (options.screenshot, "--screenshot");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   const bool headless = !options.screenshot.empty ();
   RegistrationVisualizer viewer (
       headless ? RegistrationVisualizer::Display::Offscreen : RegistrationVisualizer::Display::Window, "morphreg view");
@@ -118,7 +125,7 @@ runView (const ViewOptions& options)
   viewer.resetCamera ();
   if (headless) {
     viewer.saveScreenshot (options.screenshot, options.width, options.height);
-    outputs.keep ();
+    outputs.commit ();
     std::cout << "wrote " << options.screenshot << " (" << options.width << "x" << options.height << ")\n";
     return;
   }

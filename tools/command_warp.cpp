@@ -6,13 +6,14 @@
 #include "mesh_annotations.h"
 #include "mesh_output.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "progress.h"
 #include "provenance.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
@@ -293,8 +294,15 @@ evaluateAgainstTruth (const WarpOptions& options, const WarpInputs& inputs, cons
 void
 runWarp (const WarpOptions& options)
 {
-  OutputFiles outputs ({options.out, options.report},
-                       {options.mesh, options.source, options.target, options.labels, options.truth, options.skeleton});
+  OutputPlan plan;
+  for (const auto& [input, role] : {std::pair (options.mesh, "--mesh"), std::pair (options.source, "--source"),
+                                    std::pair (options.target, "--target"), std::pair (options.labels, "--labels"),
+                                    std::pair (options.truth, "--truth"), std::pair (options.skeleton, "--skeleton")})
+    plan.addInput (input, role);
+  plan.addOutput (options.out, "--out");
+  plan.addOptionalOutput (options.report, "--report");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   const double millimetres_per_unit = millimetresPer (parseLengthUnit (options.units));
   WarpInputs inputs{loadMeshInMillimetres (options.mesh, millimetres_per_unit), {}, {}};
   std::tie (inputs.source, inputs.target) = namedLandmarkPairs (options.source, options.target, millimetres_per_unit);
@@ -313,8 +321,30 @@ runWarp (const WarpOptions& options)
     contents = ' ' + evaluateAgainstTruth (options, inputs, warped, report);
   if (!options.report.empty ())
     writeReport (options.report, report);
-  outputs.keep ();
+  outputs.commit ();
   std::cout << "wrote " << options.out << contents << '\n';
+}
+
+/** The articulated and moving least squares warps' settings, each in the range where its result means something. */
+void
+addArticulatedOptions (CLI::App* command, WarpOptions& options)
+{
+  command
+      ->add_option ("--rigidity", options.rigidity,
+                    "articulated: weight of the as-rigid-as-possible refinement (0 to 1000; beyond, the bones no "
+                    "longer follow the landmarks)")
+      ->check (inRange (0.0, 1000.0))
+      ->capture_default_str ();
+  command
+      ->add_option ("--skinning-width", options.skinning_width,
+                    "articulated: how fast a bone's weight falls along the mesh (mm, 0.1 to 10000)")
+      ->check (inRange (0.1, 10000.0))
+      ->capture_default_str ();
+  command
+      ->add_option ("--mls-falloff", options.mls_falloff,
+                    "mls: landmark weights fall as 1 / distance^(2 a); larger a is more local (0.1 to 10)")
+      ->check (inRange (0.1, 10.0))
+      ->capture_default_str ();
 }
 } // namespace
 
@@ -362,19 +392,7 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("--skeleton", options->skeleton,
                        "articulated: skeleton JSON {\"bones\": [{\"name\", \"head\", \"tail\", \"segment\", "
                        "\"twist\": [from, to]}]} (default: MakeHuman's 51 major joints)");
-  command->add_option ("--rigidity", options->rigidity, "articulated: weight of the as-rigid-as-possible refinement")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--skinning-width", options->skinning_width,
-                    "articulated: how fast a bone's weight falls along the mesh (mm)")
-      ->check (positive ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--mls-falloff", options->mls_falloff,
-                    "mls: landmark weights fall as 1 / distance^(2 a); larger a is more local")
-      ->check (positive ())
-      ->capture_default_str ();
+  addArticulatedOptions (command, *options);
   command
       ->add_option ("--units", options->units,
                     "unit of the mesh, landmark and truth files (mm, cm, dm, m, in); converted to mm, and the "

@@ -8,6 +8,8 @@
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/registration/registration_settings.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -22,6 +24,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace morphreg
@@ -68,12 +71,42 @@ fromScansRegistration ()
   return options;
 }
 
-/** Thrown when a registration finished but failed its plausibility checks (exit code 4); the outputs are written. */
+/** Thrown when a registration finished but failed its plausibility checks (exit code 4); the outputs are written
+ *  (committed by the caller's OutputTransaction: commitUnlessBadInput). */
 class FitCheckFailure : public std::runtime_error
 {
 public:
-  using std::runtime_error::runtime_error;
+  /** \a report: the report written, marked failed (null where none is). */
+  FitCheckFailure (const std::string& message, nlohmann::json report = nullptr)
+    : std::runtime_error (message), report_ (std::move (report))
+  {}
+
+  const nlohmann::json&
+  report () const
+  {
+    return report_;
+  }
+
+private:
+  nlohmann::json report_;
 };
+
+/** Runs \a run and commits \a outputs when it succeeds or throws FitCheckFailure (a fit that failed its checks has
+ *  its outputs written on purpose: the report says why it failed); on any other failure the outputs roll back. */
+template <typename Run>
+auto
+commitUnlessBadInput (OutputTransaction& outputs, Run run) -> decltype (run ())
+{
+  try {
+    auto result = run ();
+    outputs.commit ();
+    return result;
+  }
+  catch (const FitCheckFailure&) {
+    outputs.commit ();
+    throw;
+  }
+}
 
 /** A scan as loaded: its points and, for one sensor's organised view (a depth camera's frame), where the sensor
  *  stood (the cloud's origin), which the fit turns estimated normals towards. */
@@ -119,17 +152,23 @@ nlohmann::json
 registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up = {});
 
+/** Adds the files a registration reads (--scan, --model, --landmarks, --truth) to \a plan. */
+void
+addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan);
+
 /** The report file of a registration: --report, else the --out path with .json. */
 std::string
 reportPath (const RegisterOptions& options);
 
 /** registerScan() for one scan of a study: its progress kept off the console (several scans run at once), a fit
  *  that failed its checks returned as its written report, and any other failure (a bad file, a scan the follow-up
- *  refuses) recorded as a report {"status": "failed", "failure": why} written in the registration's place.
+ *  refuses) recorded as a report {"status": "failed", "failure": why} written in the registration's place. The
+ *  scan's outputs (with \a follow_up_outputs, the files \a follow_up writes) are committed together.
  *  \return the scan's report
  */
 nlohmann::json
-registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up = {});
+registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up = {},
+                   const std::vector<std::string>& follow_up_outputs = {});
 
 /** Settings of `register --scans` beyond the single-scan ones. */
 struct BatchOptions

@@ -62,15 +62,15 @@ addResamplingOptions (CLI::App* command, ResamplingOptions& options)
   command
       ->add_option ("--normal-agreement", options.normal_agreement,
                     "largest angle between a vertex normal and the scan's at the hit (degrees)")
-      ->check (CLI::Range (1.0, 180.0))
+      ->check (inRange (1.0, 180.0))
       ->capture_default_str ();
   command->add_option ("--ring-width", options.ring_width, "rings of observed vertices around a hole that fill it")
-      ->check (CLI::Range (1, 20))
+      ->check (inRange (1, 20))
       ->capture_default_str ();
   command
       ->add_option ("--max-hole-fraction", options.max_hole_fraction,
                     "largest share of the model's surface one hole may cover (else the scan is refused)")
-      ->check (CLI::Range (0.01, 1.0))
+      ->check (inRange (0.01, 1.0))
       ->capture_default_str ();
   command->add_option ("--fill-smoothing", options.fill_smoothing, "thin plate spline smoothing of the fills (mm)")
       ->check (nonNegative ())
@@ -78,7 +78,7 @@ addResamplingOptions (CLI::App* command, ResamplingOptions& options)
   command
       ->add_option ("--passes", options.passes,
                     "resampling passes; each after the first casts again from the previous one's fills")
-      ->check (CLI::Range (1, 10))
+      ->check (inRange (1, 10))
       ->capture_default_str ();
 }
 

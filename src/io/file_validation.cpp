@@ -51,7 +51,10 @@ validateForLibraryReader (const std::string& path, FileFormat format)
     validation::validateAsciiStlFile (path);
     break;
   case FileFormat::StlBinary: // recognised by its size being exactly what its triangle count needs
-  case FileFormat::Pcd:       // read by morphreg's own readers, which check as they read
+    if (std::filesystem::file_size (path) == 84)
+      throw FormatError (path + ": the STL file has no triangles (its triangle count is 0)");
+    break;
+  case FileFormat::Pcd: // read by morphreg's own readers, which check as they read
   case FileFormat::VtkLegacy:
   case FileFormat::Off:
   case FileFormat::Unknown:

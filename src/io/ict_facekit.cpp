@@ -81,7 +81,7 @@ landmarksFromIbug (const std::vector<int>& ibug)
 nlohmann::json
 readJsonObject (const std::string& path)
 {
-  requireReadableFile (path);
+  requireReadableFile (path, kMaxTextFileBytes);
   std::ifstream stream (path);
   const nlohmann::json json = nlohmann::json::parse (stream, nullptr, false);
   if (json.is_discarded () || !json.is_object ())

@@ -19,7 +19,7 @@
 namespace morphreg
 {
 pcl::PolygonMesh
-loadPolygonMesh (const std::string& path)
+loadMeshFile (const std::string& path)
 {
   const FileFormat format = checkGeometryFile (path, ".ply .obj .vtk .stl .off", "mesh");
   const std::string ext = fileExtension (path);
@@ -46,6 +46,13 @@ loadPolygonMesh (const std::string& path)
   narrowDoubleFields (mesh.cloud, path); // "property double x" would otherwise load as zeros
   if (mesh.cloud.width * mesh.cloud.height == 0)
     throw FormatError (path + ": mesh has no vertices");
+  return mesh;
+}
+
+pcl::PolygonMesh
+loadPolygonMesh (const std::string& path)
+{
+  pcl::PolygonMesh mesh = loadMeshFile (path);
   if (mesh.polygons.empty ())
     throw FormatError (path + ": mesh has no polygons (is it a point cloud?)");
   return mesh;

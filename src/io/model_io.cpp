@@ -2,8 +2,10 @@
 #include "hdf5_file.h"
 
 #include <morphreg/common/length_unit.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/model/model_consistency.h>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +23,7 @@ struct StatismoPart
 {
   TriangleMesh::Triangles triangles;
   Eigen::VectorXd mean;
+  Eigen::VectorXd reference; ///< representer/points, interleaved like the mean
   Eigen::MatrixXd basis;
   Eigen::VectorXd variances;
   double noise_variance = 0.0;
@@ -96,6 +99,9 @@ readStatismo (const hdf5::Reader& file, const std::string& prefix)
   if (points.dims[0] != 3 || points.dims[1] == 0)
     requireDims (file, points_name, points.dims, {3, std::max<hsize_t> (points.dims[1], 1)}, "[3, N] with N > 0");
   const hsize_t n = points.dims[1];
+  part.reference = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> (
+                       points.values.data (), 3, static_cast<Eigen::Index> (n))
+                       .reshaped (); // column-major: x, y, z of each point in turn
 
   const std::string cells_name = joinPath (prefix, "representer/cells");
   const auto cells = file.readIntegers (cells_name, 2);
@@ -233,14 +239,17 @@ MorphableModel::Ptr
 readMorphreg (const hdf5::Reader& file)
 {
   StatismoPart part = readStatismo (file, "");
-  const UnitConversion unit = statedUnit (file);
-  scaleToMillimetres (part, unit.to_mm);
   const Eigen::Index n = part.mean.size () / 3;
   const double version = file.readScalar ("morphreg/formatVersion");
   if (version != 1.0)
     file.fail ("morphreg/formatVersion", "unsupported morphreg format version " + std::to_string (version));
   const auto mean = file.readFloats ("morphreg/mean", 1);
   requireDims (file, "morphreg/mean", mean.dims, {static_cast<hsize_t> (3 * n)}, "[3N] like model/mean");
+  // the copies compared as the file writes them, before the conversion to mm
+  requireSameMean (toVector (mean), part.mean, file.path (), "the datasets morphreg/mean and model/mean");
+  requireSameMean (toVector (mean), part.reference, file.path (), "the datasets morphreg/mean and representer/points");
+  const UnitConversion unit = statedUnit (file);
+  scaleToMillimetres (part, unit.to_mm);
   const double num_regions = file.readScalar ("morphreg/numRegions");
   if (num_regions < 1 || num_regions > 10000 || num_regions != std::floor (num_regions))
     file.fail ("morphreg/numRegions", "invalid region count " + std::to_string (num_regions));
@@ -259,9 +268,9 @@ readMorphreg (const hdf5::Reader& file)
     LandmarkVertices landmarks;
     const nlohmann::json landmark_json = readJson (file, "morphreg/landmarks");
     for (const auto& [name, index] : landmark_json.items ()) {
-      if (!index.is_number_integer ())
-        file.fail ("morphreg/landmarks", "landmark '" + name + "' has no integer vertex index");
-      landmarks[name] = index.get<int> ();
+      requireKnownLandmarkId (name, file.path () + ": dataset 'morphreg/landmarks'");
+      landmarks[name] = static_cast<int> (jsonWholeNumber (
+          index, 0, n - 1, file.path () + ": dataset 'morphreg/landmarks': the vertex of landmark '" + name + "'"));
     }
     model->setLandmarks (landmarks);
     std::map<std::string, std::string> metadata;
@@ -273,6 +282,7 @@ readMorphreg (const hdf5::Reader& file)
     }
     metadata[kFileUnitsKey] = unit.description;
     model->setMetadata (metadata);
+    requireConsistentModel (*model, file.path ());
     return model;
   }
   catch (const InvalidInputError& e) {
@@ -403,6 +413,7 @@ loadStatismoModel (const std::string& path, const std::string& prefix)
     model->setNoiseVariance (part.noise_variance);
     model->setLandmarks (landmarks);
     model->setMetadata ({{"source", path}, {"format", "statismo"}, {kFileUnitsKey, unit.description}});
+    requireConsistentModel (*model, path);
     return model;
   }
   catch (const InvalidInputError& e) {

@@ -63,7 +63,7 @@ requireUniqueIds (const ScanManifest& manifest)
 ScanManifest
 loadScanManifest (const std::string& path)
 {
-  requireReadableFile (path);
+  requireReadableFile (path, kMaxTextFileBytes);
   std::ifstream stream (path);
   const fs::path base = fs::path (path).parent_path ();
   ScanManifest manifest;

@@ -88,7 +88,7 @@ TEST (DepthImageIoTest, HeadersAreCheckedBeforeDecoding)
   writeHeaderOnlyPng (dir.file ("colour.png"), 64, 64, 8, 2);
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadDepthPng (dir.file ("huge.png")); }, "huge.png");
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadDepthPng (dir.file ("claims_more.png")); },
-                                                "bytes cannot hold a 4000 x 4000 16-bit image");
+                                                "bytes cannot hold the 4000 x 4000 image its header declares");
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadDepthPng (dir.file ("colour.png")); },
                                                 "must be a 16-bit greyscale PNG");
 }

@@ -22,6 +22,14 @@ namespace morphreg
 pcl::PolygonMesh
 loadPolygonMesh (const std::string& path);
 
+/** \brief loadPolygonMesh() without requiring polygons: the vertices of a mesh file and its faces, if any (an OFF or
+ *  PLY file of points alone, read as a point cloud).
+ *  \param[in] path the mesh file
+ *  \return the mesh as read
+ */
+pcl::PolygonMesh
+loadMeshFile (const std::string& path);
+
 /** \brief Reads an OBJ file with morphreg's own reader (PCL's crashes or hangs on some malformed files): its vertices
  *  (with an rgb colour when every vertex has one, with normals when there are as many vn as v lines) and its
  *  polygons, if any (texture coordinates and materials are ignored). FormatError naming the file and line of a

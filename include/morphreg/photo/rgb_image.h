@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file rgb_image.h
- *  \brief An 8-bit RGB photo in memory, read from and written to PNG or JPEG with VTK's image readers.
+ *  \brief An 8-bit RGB photo in memory, read from PNG or JPEG (checked and decoded by loadPhotoFile(), photo_file.h)
+ *  and written to PNG with VTK.
  */
 #include <morphreg/common/colour_map.h>
 
@@ -30,8 +31,9 @@ struct RgbImage
   }
 };
 
-/** \brief Reads a PNG or JPEG photo (grey and RGBA images become RGB). Throws IoError if the file is missing,
- *  FormatError naming it if it is not a readable 8-bit PNG or JPEG.
+/** \brief Reads a PNG or JPEG photo (grey and RGBA images become RGB) with loadPhotoFile(): IoError if the file is
+ *  missing or not a regular file, FormatError naming it if it is not a complete, valid PNG or JPEG of a plausible
+ *  size, InvalidInputError if it would not fit in memory.
  *  \param[in] path the image file
  *  \return the image as RGB
  */

@@ -28,8 +28,8 @@ loadCloud (const std::string& path)
     return cloud;
   }
   if (format == FileFormat::StlAscii || format == FileFormat::StlBinary || format == FileFormat::Off) {
-    // mesh-only formats: the mesh's vertices are the cloud
-    pcl::fromPCLPointCloud2 (loadPolygonMesh (path).cloud, *cloud);
+    // mesh formats: the mesh's vertices are the cloud (an OFF file of points alone too)
+    pcl::fromPCLPointCloud2 (loadMeshFile (path).cloud, *cloud);
     return cloud;
   }
   if (format == FileFormat::Pcd) { // morphreg's own reader: PCL's crashes on some malformed files
