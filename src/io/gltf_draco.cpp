@@ -110,15 +110,10 @@ decodeDracoPrimitive (const GltfFile& file, const tinygltf::Model& model, const 
   const auto read = [&] (const std::string& name, bool required) -> Eigen::MatrixXd {
     if (!ids.Has (name) && !required)
       return {};
+    // The decoded points count, whatever the accessors declare: Edgebreaker splits non-manifold vertices.
     const AccessorUse use = attributeUse (what, name);
-    const Eigen::MatrixXd values = attributeValues (file, *cloud, ids.Has (name) ? wholeNumber (ids.Get (name)) : -1,
-                                                    use, use.normalized_integers);
-    const auto declared = primitive.attributes.find (name);
-    if (declared != primitive.attributes.end () &&
-        accessorCount (file, model, declared->second, use.what) != std::size_t (values.cols ()))
-      file.fail (use.what + ": the Draco payload decodes " + std::to_string (values.cols ()) +
-                 " points, the accessor declares " + std::to_string (model.accessors[declared->second].count));
-    return values;
+    return attributeValues (file, *cloud, ids.Has (name) ? wholeNumber (ids.Get (name)) : -1, use,
+                            use.normalized_integers);
   };
   PrimitiveData data;
   data.positions = read ("POSITION", true);

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 
 namespace morphreg
 {
@@ -100,6 +101,10 @@ private:
   void
   addFaces (const std::vector<Eigen::Vector3i>& triangles, int first, bool flip, const PrimitiveData& data,
             int texture);
+  /** Merges vertices at the same position (glTF repeats a vertex for each texture coordinate, normal or primitive it
+   *  has, Draco for each non-manifold fan): one vertex per point of the surface, in order of first appearance. */
+  void
+  weldIdenticalPositions ();
 
   const GltfFile& file_;
   const tinygltf::Model& model_;
@@ -201,11 +206,41 @@ SceneBuilder::addFaces (const std::vector<Eigen::Vector3i>& triangles, int first
   any_texture_ = any_texture_ || (textured && !triangles.empty ());
 }
 
+void
+SceneBuilder::weldIdenticalPositions ()
+{
+  std::vector<int> order (points_.size ());
+  std::iota (order.begin (), order.end (), 0);
+  const auto less = [this] (int a, int b) {
+    return std::lexicographical_compare (points_[a].data (), points_[a].data () + 3, points_[b].data (),
+                                         points_[b].data () + 3);
+  };
+  std::stable_sort (order.begin (), order.end (), less);
+  std::vector<int> first (points_.size ()); // the first vertex at each vertex's position
+  for (std::size_t i = 0; i < order.size (); ++i)
+    first[order[i]] = i > 0 && points_[order[i]] == points_[order[i - 1]] ? first[order[i - 1]] : order[i];
+  std::vector<int> index (points_.size ());
+  std::size_t kept = 0;
+  for (std::size_t v = 0; v < points_.size (); ++v) {
+    index[v] = first[v] == static_cast<int> (v) ? static_cast<int> (kept) : index[first[v]];
+    if (first[v] != static_cast<int> (v))
+      continue;
+    points_[kept] = points_[v], colours_[kept] = colours_[v];
+    if (all_normals_)
+      normals_[kept] = normals_[v];
+    ++kept;
+  }
+  points_.resize (kept), colours_.resize (kept), normals_.resize (all_normals_ ? kept : 0);
+  for (Eigen::Vector3i& t : triangles_)
+    t = Eigen::Vector3i (index[t[0]], index[t[1]], index[t[2]]);
+}
+
 GltfContent
 SceneBuilder::finish ()
 {
   if (points_.empty ())
     file_.fail ("the scene holds neither triangles nor points");
+  weldIdenticalPositions ();
   GltfContent content;
   ColouredSurface& surface = content.surface;
   const auto n = static_cast<Eigen::Index> (points_.size ()), m = static_cast<Eigen::Index> (triangles_.size ());

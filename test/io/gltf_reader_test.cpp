@@ -141,12 +141,13 @@ TEST (GltfReaderTest, PrimitivesAndMeshesAreMerged)
   document.nodes.resize (2);
   document.nodes[0].mesh = 0;
   document.nodes[1].mesh = 1;
+  document.nodes[1].translation = {0.1, 0.0, 0.0};
   document.scene = {0, 1};
   const auto content = morphreg::readGltfFile (writeGlb (dir, "merged.glb", document));
-  // mesh 0: its two primitives share their vertices, read once; mesh 1: another copy of the vertices
+  // mesh 0: its two primitives share their vertices, read once; mesh 1: a copy of the vertices 100 mm along x
   ASSERT_EQ (content.surface.points.cols (), 12);
   expectPointsNear (content.surface.points.leftCols (6), mesh.vertices);
-  expectPointsNear (content.surface.points.rightCols (6), mesh.vertices);
+  expectPointsNear (content.surface.points.rightCols (6), mesh.vertices.colwise () + Eigen::Vector3d (100, 0, 0));
   ASSERT_EQ (content.surface.triangles.cols (), 12);
   EXPECT_EQ (content.surface.triangles.leftCols (8), mesh.triangles);
   EXPECT_EQ (content.surface.triangles.rightCols (4), (mesh.triangles.rightCols (4).array () + 6).matrix ());
@@ -261,4 +262,24 @@ TEST (GltfReaderTest, LoadersReadGltfAndGlb)
     EXPECT_NO_THROW (morphreg::validateGeometryFile (dir.file (name)));
     EXPECT_EQ (morphreg::loadColouredSurface (dir.file (name)).colours, rainbow (6));
   }
+}
+
+TEST (GltfReaderTest, VerticesRepeatedAtOnePositionAreMerged)
+{
+  TempDirectory dir;
+  const TriangleMesh mesh = octahedron ();
+  gltf::Primitive split = gltf::meshPrimitive (mesh); // a vertex per triangle corner, as texture seams make them
+  split.positions.resize (3, 24);
+  for (int c = 0; c < 24; ++c)
+    split.positions.col (c) = (mesh.vertices.col (mesh.triangles.data ()[c]) / 1000.0).cast<float> ();
+  for (std::uint32_t c = 0; c < 24; ++c)
+    split.indices[c] = c;
+  const auto content = morphreg::readGltfFile (writeGlb (dir, "split.glb", gltf::singleNode (split)));
+  ASSERT_EQ (content.surface.points.cols (), 6);
+  for (Eigen::Index t = 0; t < 8; ++t)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LT (
+          (content.surface.points.col (content.surface.triangles (k, t)) - mesh.vertices.col (mesh.triangles (k, t)))
+              .norm (),
+          1e-4);
 }

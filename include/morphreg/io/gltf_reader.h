@@ -5,7 +5,10 @@
  *
  *  The default scene (else the first, else every root node) is read whole: each node's mesh placed by the node's
  *  global transform (its matrix, or translation, rotation and scale, composed down the hierarchy), the triangles,
- *  triangle strips and fans and the points of every primitive merged into one surface. glTF's unit is the metre by
+ *  triangle strips and fans and the points of every primitive merged into one surface, vertices at the same position
+ *  merged (glTF repeats a vertex for each texture coordinate or normal it has there, Draco for non-manifold fans; the
+ *  texture coordinates stay with the triangle corners), Draco's decoded points used whatever count the accessors
+ *  declare (Edgebreaker splits non-manifold vertices). glTF's unit is the metre by
  *  specification: positions are converted to millimetres (x 1000). The colours come with it: COLOR_0 (linear,
  *  converted to 8-bit sRGB) and the material's base-colour texture at its TEXCOORD set, both times the base-colour
  *  factor.
