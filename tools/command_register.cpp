@@ -1,16 +1,19 @@
-// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
+// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours: the scan's or the residual), a JSON
+// report and
 // optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
 #include "commands.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "scan_colours.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/file_format.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
@@ -173,6 +176,11 @@ LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
                           const MorphableModel& model, std::ostream& out)
 {
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    out << "units: " << options.scan << " is " << fileFormatName (format) << ", whose unit is the "
+        << toString (*file_unit) << " by specification: converted to mm on reading (x" << millimetresPer (*file_unit)
+        << ")\n";
   const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
@@ -224,9 +232,17 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
 nlohmann::json
 scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
 {
-  return {{"file", options.scan},          {"points", scan_points},
-          {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
-          {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  nlohmann::json scan = {
+      {"file", options.scan},          {"points", scan_points},
+      {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
+      {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    scan["file_unit"] = {{"unit", toString (*file_unit)},
+                         {"scale_to_mm", millimetresPer (*file_unit)},
+                         {"reason", fileFormatName (format) + "'s unit by specification, converted on reading; units "
+                                                              "and scale_to_mm apply after it"}};
+  return scan;
 }
 
 /** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
@@ -252,8 +268,12 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
-      << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
-      << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << "wrote " << options.out << " (vertex colours: ";
+  if (report["fitted_mesh_colours"] == "scan")
+    out << kScanColoursText;
+  else
+    out << "residual, 0-" << colour_scale << " mm";
+  out << "), " << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
@@ -305,11 +325,14 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
-  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
-  savePolygonMesh (options.out, coloured);
+  const auto scan_colours =
+      scanColoursAt (options.scan, millimetresPer (unit.unit), options.colours, fitted.vertices, warnings);
+  savePolygonMesh (options.out,
+                   toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale)));
   const double write_seconds = secondsSince (write_start);
 
   nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
+  report["fitted_mesh_colours"] = scan_colours ? "scan" : "residual";
   if (!options.truth.empty ())
     report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
   double screenshot_seconds = 0.0;
@@ -415,7 +438,10 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command->add_flag ("--target-smoothing,!--no-target-smoothing", options.target_smoothing,
                      "fit to each scan point projected onto its neighbours' plane (default; off for sparse or curved "
                      "real scans)");
-  command->add_option ("--units", options.units, "the scan's length unit: auto (from its size), mm, cm, m or in")
+  command
+      ->add_option ("--units", options.units,
+                    "the scan's length unit: auto (from its size), mm, cm, m or in (glTF/GLB scans: the unit after "
+                    "reading, which converts glTF's metres to mm)")
       ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
       ->capture_default_str ();
   command->add_flag ("--area-weighting", options.area_weighting,
@@ -429,9 +455,17 @@ registerRegisterCommand (CLI::App& app)
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
   auto* scan =
-      command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
+      command->add_option ("-s,--scan", options->scan,
+                           "scan (.pcd .ply .obj .stl .off .gltf .glb); its unit: see --units; its colours: --colours");
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
+  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours: see --colours)")
+      ->capture_default_str ();
+  command
+      ->add_option ("--colours", options->colours,
+                    "the fitted mesh's vertex colours: auto (the scan's when it has any, else residual), scan (the "
+                    "colour of the nearest scan surface point: vertex colours, or the texture of a textured OBJ or "
+                    "glTF), residual (the residual map, as --screenshot shows it)")
+      ->check (CLI::IsMember ({"auto", "scan", "residual"}))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,

@@ -37,7 +37,8 @@ struct RegisterOptions : RegistrationSettings
   std::string screenshot; ///< empty: none
   int width = 1280, height = 960;
   std::string landmarks, truth;
-  double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
+  double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
+  std::string colours = "auto"; ///< the fitted mesh's vertex colours: auto (the scan's if it has any), scan, residual
   bool quiet = false;
 };
 
@@ -49,6 +50,7 @@ fromScansRegistration ()
   RegisterOptions options;
   options.components = {60};
   options.refinement_prior = 0.2;
+  options.colours = "residual"; // the fits are a step towards the model: no time spent on the scans' colours
   return options;
 }
 
