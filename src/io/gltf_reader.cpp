@@ -9,8 +9,8 @@
 #include "tiny_gltf_hidden.h"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
-#include <numeric>
 
 namespace morphreg
 {
@@ -64,6 +64,32 @@ cornerList (const GltfFile& file, const PrimitiveData& data, const std::string& 
   return data.indices;
 }
 
+/** A hash of a position's bits (-0 taken as 0, which compares equal to it), each coordinate's bits mixed by
+ *  splitmix64's finaliser: the low bits of a double converted from a float are all zero. */
+struct PositionHash
+{
+  static std::uint64_t
+  mix (std::uint64_t x)
+  {
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+
+  std::size_t
+  operator() (const Eigen::Vector3d& p) const
+  {
+    std::uint64_t hash = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double value = p[k] == 0.0 ? 0.0 : p[k];
+      std::uint64_t bits;
+      std::memcpy (&bits, &value, sizeof (bits));
+      hash = mix (hash ^ bits);
+    }
+    return static_cast<std::size_t> (hash);
+  }
+};
+
 /** The vertices a points primitive's indices name, in their order. */
 PrimitiveData
 indexedPoints (const PrimitiveData& data, const std::vector<std::uint32_t>& corners)
@@ -116,7 +142,7 @@ private:
   std::vector<Eigen::Vector2f> corner_uv_;
   std::vector<int> triangle_texture_;
   std::map<std::pair<int, std::map<std::string, int>>, int> shared_vertices_; ///< of the current mesh instance
-  bool all_normals_ = true, any_colour_ = false, any_texture_ = false;
+  bool all_normals_ = true, any_colour_ = false, any_texture_ = false;        ///< any_texture_: corner_uv_ is kept
 };
 
 void
@@ -175,18 +201,23 @@ SceneBuilder::addVertices (const PrimitiveData& data, const Eigen::Matrix4d& tra
   const double mm = millimetresPer (LengthUnit::metre);
   const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3> ();
   const Eigen::Matrix3d normal_map = linear.inverse ().transpose ();
-  all_normals_ = all_normals_ && data.normals.cols () == data.positions.cols ();
-  const bool coloured = data.colours.cols () == data.positions.cols ();
+  const Eigen::Index n = data.positions.cols ();
+  all_normals_ = all_normals_ && data.normals.cols () == n;
+  const bool coloured = data.colours.cols () == n;
   any_colour_ = any_colour_ || coloured || look.texture >= 0;
-  for (Eigen::Index v = 0; v < data.positions.cols (); ++v) {
+  const Eigen::Vector3d factor =
+      look.texture >= 0 ? Eigen::Vector3d::Ones () : Eigen::Vector3d (look.factor.head<3> ());
+  const auto srgb = [] (const Eigen::Vector3d& linear_colour) {
+    return Rgb8 (gltf::linearToSrgb8 (linear_colour[0]), gltf::linearToSrgb8 (linear_colour[1]),
+                 gltf::linearToSrgb8 (linear_colour[2]));
+  };
+  const Rgb8 constant = srgb (factor);
+  points_.reserve (points_.size () + n), colours_.reserve (colours_.size () + n);
+  for (Eigen::Index v = 0; v < n; ++v) {
     points_.push_back (mm * (linear * data.positions.col (v) + transform.block<3, 1> (0, 3)));
     if (all_normals_)
       normals_.push_back ((normal_map * data.normals.col (v)).normalized ().cast<float> ());
-    Eigen::Vector3d colour = look.texture >= 0 ? Eigen::Vector3d::Ones () : Eigen::Vector3d (look.factor.head<3> ());
-    if (coloured)
-      colour = colour.cwiseProduct (data.colours.col (v).head<3> ());
-    colours_.emplace_back (gltf::linearToSrgb8 (colour[0]), gltf::linearToSrgb8 (colour[1]),
-                           gltf::linearToSrgb8 (colour[2]));
+    colours_.push_back (coloured ? srgb (factor.cwiseProduct (data.colours.col (v).head<3> ())) : constant);
   }
 }
 
@@ -194,41 +225,45 @@ void
 SceneBuilder::addFaces (const std::vector<Eigen::Vector3i>& triangles, int first, bool flip, const PrimitiveData& data,
                         int texture)
 {
-  const bool textured = texture >= 0 && data.uv.cols () == data.positions.cols ();
+  const bool textured = texture >= 0 && data.uv.cols () == data.positions.cols () && !triangles.empty ();
+  if (textured && !any_texture_) { // the triangles before the first textured ones have no texture
+    corner_uv_.assign (3 * triangles_.size (), Eigen::Vector2f::Zero ());
+    triangle_texture_.assign (triangles_.size (), -1);
+    any_texture_ = true;
+  }
+  triangles_.reserve (triangles_.size () + triangles.size ());
   for (Eigen::Vector3i t : triangles) {
     if (flip) // a mirroring transform turns the winding: keep it counter-clockwise
       std::swap (t[1], t[2]);
     triangles_.push_back (t.array () + first);
+    if (!any_texture_)
+      continue;
     triangle_texture_.push_back (textured ? texture : -1);
     for (int k = 0; k < 3; ++k)
       corner_uv_.push_back (textured ? Eigen::Vector2f (data.uv.col (t[k]).cast<float> ()) : Eigen::Vector2f::Zero ());
   }
-  any_texture_ = any_texture_ || (textured && !triangles.empty ());
 }
 
 void
 SceneBuilder::weldIdenticalPositions ()
 {
-  std::vector<int> order (points_.size ());
-  std::iota (order.begin (), order.end (), 0);
-  const auto less = [this] (int a, int b) {
-    return std::lexicographical_compare (points_[a].data (), points_[a].data () + 3, points_[b].data (),
-                                         points_[b].data () + 3);
-  };
-  std::stable_sort (order.begin (), order.end (), less);
-  std::vector<int> first (points_.size ()); // the first vertex at each vertex's position
-  for (std::size_t i = 0; i < order.size (); ++i)
-    first[order[i]] = i > 0 && points_[order[i]] == points_[order[i - 1]] ? first[order[i - 1]] : order[i];
+  std::size_t slots = 2;
+  while (slots < 2 * points_.size ())
+    slots *= 2;
+  std::vector<int> table (slots, -1); // open addressing: the kept vertex at each position
   std::vector<int> index (points_.size ());
   std::size_t kept = 0;
   for (std::size_t v = 0; v < points_.size (); ++v) {
-    index[v] = first[v] == static_cast<int> (v) ? static_cast<int> (kept) : index[first[v]];
-    if (first[v] != static_cast<int> (v))
-      continue;
-    points_[kept] = points_[v], colours_[kept] = colours_[v];
-    if (all_normals_)
-      normals_[kept] = normals_[v];
-    ++kept;
+    std::size_t slot = PositionHash () (points_[v]) & (slots - 1);
+    while (table[slot] >= 0 && points_[table[slot]] != points_[v])
+      slot = (slot + 1) & (slots - 1);
+    if (table[slot] < 0) {
+      points_[kept] = points_[v], colours_[kept] = colours_[v];
+      if (all_normals_)
+        normals_[kept] = normals_[v];
+      table[slot] = static_cast<int> (kept++);
+    }
+    index[v] = table[slot];
   }
   points_.resize (kept), colours_.resize (kept), normals_.resize (all_normals_ ? kept : 0);
   for (Eigen::Vector3i& t : triangles_)
