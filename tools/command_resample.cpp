@@ -1,7 +1,7 @@
 // `morphreg resample`: a scan + a model file -> the scan's surface in the model's topology. The scan is registered
 // exactly as `register` does it, then ScanResampler moves the fitted mesh's vertices onto the scan along their normals
-// and fills the holes; writes the resampled mesh (vertex colours: observed / filled), the fitted mesh and one JSON
-// report (the registration's, with the resampling's coverage and holes).
+// and fills the holes; writes the resampled mesh (vertex colours: the scan's, or observed / filled), the fitted mesh
+// and one JSON report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
 #include "output_files.h"
 #include "pipeline.h"
