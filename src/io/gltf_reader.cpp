@@ -1,12 +1,13 @@
 #include "gltf_accessor.h"
 #include "gltf_file.h"
 #include "gltf_scene.h"
+#include "tiny_gltf_hidden.h"
 #include "vertex_cloud.h"
 
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/gltf_reader.h>
 
-#include "tiny_gltf_hidden.h"
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cstring>
