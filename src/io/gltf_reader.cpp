@@ -168,8 +168,8 @@ SceneBuilder::addPrimitive (const tinygltf::Primitive& primitive, const Eigen::M
     file_.fail (what + ": unknown primitive mode " + std::to_string (mode));
   const PrimitiveLook look = textures_.look (file_, model_, primitive.material, what);
   const int texcoord = look.texture >= 0 ? look.texcoord : -1;
-  PrimitiveData data = draco ? gltf::decodeDracoPrimitive (file_, model_, primitive, what, texcoord)
-                             : gltf::readPrimitiveAccessors (file_, model_, primitive, what, texcoord);
+  const PrimitiveData data = draco ? gltf::decodeDracoPrimitive (file_, model_, primitive, what, texcoord)
+                                   : gltf::readPrimitiveAccessors (file_, model_, primitive, what, texcoord);
   if (draco && mode != TINYGLTF_MODE_POINTS)
     mode = TINYGLTF_MODE_TRIANGLES; // Draco stores triangle lists
   if (points_.size () + std::size_t (data.positions.cols ()) > kMaxVertices)
