@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Reading glTF (issue 39): morphreg's reader (readGltfFile, and loadPolygonMesh, which adds the PCL mesh) on GLB files
 // of a synthetic head (HeadGenerator resolution 44: 11,618 vertices) and of the same head subdivided twice (185,858
 // vertices, the size of a phone capture), plain and Draco-compressed (lossless Edgebreaker), against the baselines

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Landmark-free registration of the real head-and-shoulders scan (../shared/data/real_head_scans, 82,360 points with
 // normals) from an arbitrary similarity pose, against PCL's IterativeClosestPoint (default settings) aligning the
 // same posed cloud back onto the original, started from the true pose: the global start alone (alignHeadGlobally)

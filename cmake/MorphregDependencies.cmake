@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Dependencies, all from Debian's packages (scripts/install-deps.sh installs them).
 # Quirk of Debian's PCL/VTK: MPI must be found before PCL, or VTK's MPI target is missing.
 find_package(MPI QUIET COMPONENTS C)
@@ -27,7 +28,7 @@ else()
   set(MORPHREG_HDF5_TARGETS morphreg_hdf5)
 endif()
 
-find_package(PNG REQUIRED)  # images (photos, scan textures): libpng-dev
+find_package(PNG REQUIRED)  # images (photos, scan textures, 16-bit depth images): libpng-dev
 find_package(JPEG REQUIRED) # and libjpeg-dev
 
 # The file readers' libraries beyond PCL (core's io folder; the fuzz build links them too).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz targets mesh_glb and mesh_gltf: binary and JSON glTF through the mesh loader, the cloud loader and the
 // coloured surface loader (the textures decoded, their colours sampled).
 #include "fuzz_target.h"

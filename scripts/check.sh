@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Slow checks that run outside CI (docs/FUZZING.md says when):
 #   scripts/check.sh sanitize                        GCC build with -fsanitize=address,undefined into build-asan/,
 #                                                    then the whole test suite under the sanitizers

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The raw-scan model protocol of README.md ("A model from raw scans"), through the command line: a model of 200
 # synthetic heads (seeds 1-200) registers simulated laser scans of 100 unseen heads (seeds 1001-1100; point clouds,
 # sigma 0.2 mm, the scanner's holes and random pose, true size), `build-model --from-scans` builds a model from them,

@@ -1,13 +1,18 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register --scans`: a study's scans registered to one model, loaded once, several at a time;
-// resumable (a scan's report on disk means it is done), shardable over a job array, summarised.
+// resumable (a scan's report on disk, made from the same scan, landmarks, model, settings and version, means it is
+// done), shardable over a job array (a lock per shard), summarised.
+#include "batch_provenance.h"
 #include "batch_summary.h"
+#include "batch_test_hold.h"
+#include "output_lock.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/json_file.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/io/scan_manifest.h>
 
 #include <omp.h>
@@ -23,6 +28,7 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <sched.h>
 #include <unistd.h>
 
 namespace morphreg
@@ -40,8 +46,19 @@ std::atomic<int> interrupts{0};
 extern "C" void
 onInterrupt (int)
 {
-  if (interrupts.fetch_add (1) >= 1)
+  if (interrupts.fetch_add (1) >= 1) {
+    releaseOutputLockNow ();
     _exit (130); // partial outputs keep their temporary names; a rerun redoes those scans
+  }
+}
+
+/** SIGTERM (scancel, a Slurm time limit): stop at once, releasing the lock so that a resubmission elsewhere is not
+ *  refused; the scans in progress are redone by the next run. */
+extern "C" void
+onTerminate (int)
+{
+  releaseOutputLockNow ();
+  _exit (143);
 }
 
 struct Shard
@@ -52,6 +69,13 @@ struct Shard
   text () const
   {
     return std::to_string (index) + "/" + std::to_string (count);
+  }
+
+  /** "shard-I-of-N", or "all" for the whole study: names the share's files. */
+  std::string
+  tag () const
+  {
+    return count > 1 ? "shard-" + std::to_string (index) + "-of-" + std::to_string (count) : std::string ("all");
   }
 };
 
@@ -152,7 +176,8 @@ private:
  *  Returns each task's report (null for one not started).
  */
 std::vector<nlohmann::json>
-runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int jobs, int threads_per_fit, bool quiet)
+runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int jobs, int threads_per_fit, bool quiet,
+          const BatchTestHold& hold)
 {
   std::vector<nlohmann::json> reports (tasks.size ());
   std::atomic<std::size_t> next{0};
@@ -162,6 +187,7 @@ runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int 
     workers.emplace_back ([&] {
       omp_set_num_threads (threads_per_fit);
       for (std::size_t k; interrupts.load () == 0 && (k = next.fetch_add (1)) < tasks.size ();) {
+        hold.atScan (k, interrupts);
         reports[k] = registerStudyScan (tasks[k].options, model);
         progress.done (reports[k].value ("status", "") == "ok");
       }
@@ -187,13 +213,14 @@ registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& mo
     return readJsonFile (reportPath (options)); // written, and marked failed
   }
   catch (const std::exception& e) {
-    const nlohmann::json failure = {
+    nlohmann::json failure = {
         {"status", "failed"},
         {"failure", e.what ()},
         {"scan", {{"file", options.scan}, {"landmarks", options.landmarks}}},
         {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
+    addProvenance (options, failure);
     const std::string path = reportPath (options);
-    writeJsonFile (path, failure);
+    writeReport (path, failure);
     return failure;
   }
 }
@@ -212,8 +239,8 @@ addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batc
       ->needs (scans);
   command
       ->add_option ("--jobs", batch.jobs,
-                    "batch mode: scans registered at once (0: one per core; each fit "
-                    "gets cores/jobs threads)")
+                    "batch mode: scans registered at once (0: one per core this process may run on, its CPU "
+                    "affinity; each fit gets cores/jobs threads)")
       ->check (CLI::Range (0, 4096))
       ->needs (scans)
       ->capture_default_str ();
@@ -245,38 +272,58 @@ requireBatchOptions (const RegisterOptions& options, const BatchOptions& batch)
     throw IoError (batch.out_dir + ": cannot create the output folder");
 }
 
-/** The scans still to register (no finished report, or a failed one with --retry-failed); the summary rows of the
- *  others go to \a done.
- */
-std::vector<Task>
-pendingTasks (const ScanManifest& scans, const RegisterOptions& options, const BatchOptions& batch,
-              std::vector<ScanSummary>& done)
+/** What a run does with the scans of its share: those to register, the summary rows of those done, and why some
+ *  done before are registered again. */
+struct Plan
 {
   std::vector<Task> tasks;
+  std::vector<ScanSummary> done;
+  std::vector<std::string> redone; ///< "id again: why" for each scan whose report's record does not match this run
+};
+
+/** The task of \a entry: its outputs in the output folder, and the record of what produces them. */
+Task
+scanTask (const ScanEntry& entry, const RegisterOptions& options, const BatchOptions& batch, const RunRecord& run)
+{
+  Task task{entry, options};
+  task.options.scan = entry.scan;
+  task.options.landmarks = entry.landmarks;
+  task.options.out = (fs::path (batch.out_dir) / (entry.id + ".ply")).string ();
+  task.options.quiet = true;
+  task.options.provenance = scanRecord (run, entry);
+  return task;
+}
+
+/** The scans still to register: no finished report, a report whose record of what produced it does not match
+ *  this run (said in plan.redone), or a failed one with --retry-failed. */
+Plan
+planTasks (const ScanManifest& scans, const RegisterOptions& options, const BatchOptions& batch, const RunRecord& run)
+{
+  Plan plan;
   for (const ScanEntry& entry : scans) {
-    Task task{entry, options};
-    task.options.scan = entry.scan;
-    task.options.landmarks = entry.landmarks;
-    task.options.out = (fs::path (batch.out_dir) / (entry.id + ".ply")).string ();
-    task.options.quiet = true;
+    const Task task = scanTask (entry, options, batch, run);
     const nlohmann::json report = finishedReport (reportPath (task.options));
-    const bool failed = !report.is_null () && report.value ("status", "") != "ok";
-    if (report.is_null () || (failed && batch.retry_failed))
-      tasks.push_back (task);
+    if (!report.is_object ()) {
+      plan.tasks.push_back (task);
+      continue;
+    }
+    const std::string mismatch =
+        recordMismatch (task.options.provenance, report.value ("provenance", nlohmann::json ()));
+    if (!mismatch.empty ())
+      plan.redone.push_back (entry.id + " again: " + mismatch);
+    if (!mismatch.empty () || (report.value ("status", "") != "ok" && batch.retry_failed))
+      plan.tasks.push_back (task);
     else
-      done.push_back (summaryFromReport (entry.id, entry.scan, report));
+      plan.done.push_back (summaryFromReport (entry.id, entry.scan, report));
   }
-  return tasks;
+  return plan;
 }
 
 /** The summary files' path without extension: summary, or summary.shard-I-of-N for one shard. */
 std::string
 summaryBase (const BatchOptions& batch, const Shard& shard)
 {
-  const std::string name = shard.count > 1
-                               ? "summary.shard-" + std::to_string (shard.index) + "-of-" + std::to_string (shard.count)
-                               : std::string ("summary");
-  return (fs::path (batch.out_dir) / name).string ();
+  return (fs::path (batch.out_dir) / (shard.count > 1 ? "summary." + shard.tag () : std::string ("summary"))).string ();
 }
 
 /** The closing line of a batch run; exits 130 after an interrupt, throws FitCheckFailure if a scan failed. */
@@ -290,6 +337,7 @@ concludeBatch (const std::vector<ScanSummary>& rows, std::size_t registered, dou
             << seconds << " s; " << count ("ok") << " ok, " << count ("failed") << " failed, " << count ("pending")
             << " pending; wrote " << base << ".csv and " << base << ".json" << std::defaultfloat << std::endl;
   if (interrupts.load () > 0) {
+    releaseOutputLockNow (); // std::exit skips the lock's destructor
     std::cerr << "morphreg: interrupted; the finished scans' outputs are complete, rerun the command to resume\n";
     std::exit (130);
   }
@@ -299,37 +347,75 @@ concludeBatch (const std::vector<ScanSummary>& rows, std::size_t registered, dou
 }
 } // namespace
 
+namespace
+{
+/** The cores this process may run on: its CPU affinity (what a Slurm task bound to its CPUs, or taskset, allows),
+ *  not every core of the node, so that jobs x threads never oversubscribe a task's share of a node. */
+int
+usableCores ()
+{
+  cpu_set_t cpus;
+  CPU_ZERO (&cpus);
+  if (sched_getaffinity (0, sizeof (cpus), &cpus) == 0 && CPU_COUNT (&cpus) > 0)
+    return CPU_COUNT (&cpus);
+  return std::max (1, static_cast<int> (std::thread::hardware_concurrency ()));
+}
+
+/** The run's opening lines: the scans registered again and why, then the counts and the jobs. */
+void
+announcePlan (const Plan& plan, std::size_t scans, const Shard& shard, int jobs, int threads_per_fit)
+{
+  for (const std::string& redo : plan.redone)
+    std::cout << "register: registering " << redo << std::endl;
+  std::cout << "register: " << scans << " scans" << (shard.count > 1 ? " in shard " + shard.text () : "") << ", "
+            << plan.done.size () << " already done (skipped), " << plan.tasks.size () << " to register";
+  if (!plan.redone.empty ())
+    std::cout << " (" << plan.redone.size () << " again: their records do not match this run)";
+  std::cout << " with " << jobs << " jobs of " << threads_per_fit << " threads" << std::endl;
+}
+
+/** Registers the planned tasks with Ctrl-C handled; returns the summary rows of all the share's scans. */
+std::vector<ScanSummary>
+runPlan (Plan plan, const MorphableModel::Ptr& model, int jobs, int threads_per_fit, bool quiet, const Shard& shard)
+{
+  const BatchTestHold hold (shard.tag ());
+  const auto previous_interrupt = std::signal (SIGINT, onInterrupt);
+  const std::vector<nlohmann::json> reports = runTasks (plan.tasks, model, jobs, threads_per_fit, quiet, hold);
+  std::signal (SIGINT, previous_interrupt);
+  std::vector<ScanSummary> rows = std::move (plan.done);
+  for (std::size_t k = 0; k < plan.tasks.size (); ++k) {
+    ScanSummary row = summaryFromReport (plan.tasks[k].entry.id, plan.tasks[k].entry.scan, reports[k]);
+    if (reports[k].is_null ())
+      row.status = "pending";
+    rows.push_back (row);
+  }
+  return rows;
+}
+} // namespace
+
 void
 registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
 {
   requireBatchOptions (options, batch);
   const Shard shard = parseShard (batch.shard);
-  const ScanManifest scans = manifestShard (loadScanList (options.scans), shard.index, shard.count);
-  std::vector<ScanSummary> rows;
-  const std::vector<Task> tasks = pendingTasks (scans, options, batch, rows);
-  const std::size_t skipped = rows.size ();
+  const ScanManifest study = loadScanList (options.scans);
+  const ScanManifest scans = manifestShard (study, shard.index, shard.count);
+  const RunRecord run = runRecord (options, study);
+  const OutputLock lock (batch.out_dir, shard.index, shard.count, run.fingerprint, std::cout);
+  std::signal (SIGTERM, onTerminate); // from here on, a cancelled run releases its lock
+  const Plan plan = planTasks (scans, options, batch, run);
 
   const auto start = Clock::now ();
-  const MorphableModel::Ptr model = loadModel (options.model);
-  const int cores = std::max (1, static_cast<int> (std::thread::hardware_concurrency ()));
-  const int jobs = std::max (1, std::min<int> (batch.jobs > 0 ? batch.jobs : cores, static_cast<int> (tasks.size ())));
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
+  const int cores = usableCores ();
+  const int jobs =
+      std::max (1, std::min<int> (batch.jobs > 0 ? batch.jobs : cores, static_cast<int> (plan.tasks.size ())));
   const int threads_per_fit = std::max (1, cores / jobs);
-  std::cout << "register: " << scans.size () << " scans" << (shard.count > 1 ? " in shard " + shard.text () : "")
-            << ", " << skipped << " already done (skipped), " << tasks.size () << " to register with " << jobs
-            << " jobs of " << threads_per_fit << " threads" << std::endl;
-
-  const auto previous = std::signal (SIGINT, onInterrupt);
-  const std::vector<nlohmann::json> reports = runTasks (tasks, model, jobs, threads_per_fit, options.quiet);
-  std::signal (SIGINT, previous);
-  for (std::size_t k = 0; k < tasks.size (); ++k) {
-    ScanSummary row = summaryFromReport (tasks[k].entry.id, tasks[k].entry.scan, reports[k]);
-    if (reports[k].is_null ())
-      row.status = "pending";
-    rows.push_back (row);
-  }
+  announcePlan (plan, scans.size (), shard, jobs, threads_per_fit);
+  const std::vector<ScanSummary> rows = runPlan (plan, model, jobs, threads_per_fit, options.quiet, shard);
   const std::string base = summaryBase (batch, shard);
-  writeSummary (base, rows, shard.count > 1 ? shard.text () : "all");
-  concludeBatch (rows, tasks.size (), std::chrono::duration<double> (Clock::now () - start).count (), base);
+  writeSummary (base, rows, shard.count > 1 ? shard.text () : "all", run.summary ());
+  concludeBatch (rows, plan.tasks.size (), std::chrono::duration<double> (Clock::now () - start).count (), base);
 }
 
 } // namespace tools

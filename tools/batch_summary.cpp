@@ -1,4 +1,6 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "batch_summary.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -98,7 +100,7 @@ csvText (const std::vector<ScanSummary>& rows)
 }
 
 nlohmann::json
-summaryJson (const std::vector<ScanSummary>& rows, const std::string& shard)
+summaryJson (const std::vector<ScanSummary>& rows, const std::string& shard, const nlohmann::json& run)
 {
   nlohmann::json scans = nlohmann::json::array ();
   std::map<std::string, int> counts{{"ok", 0}, {"failed", 0}, {"pending", 0}};
@@ -113,7 +115,7 @@ summaryJson (const std::vector<ScanSummary>& rows, const std::string& shard)
                       {"fit_seconds", known (row.fit_seconds)},
                       {"reason", row.reason}});
   }
-  return {{"shard", shard}, {"total", rows.size ()}, {"counts", counts}, {"scans", scans}};
+  return {{"shard", shard}, {"run", run}, {"total", rows.size ()}, {"counts", counts}, {"scans", scans}};
 }
 } // namespace
 
@@ -130,21 +132,24 @@ summaryFromReport (const std::string& id, const std::string& scan, const nlohman
 }
 
 void
-writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard)
+writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard,
+              const nlohmann::json& run)
 {
   std::sort (rows.begin (), rows.end (), [] (const ScanSummary& a, const ScanSummary& b) { return a.id < b.id; });
-  writeJsonFile (base + ".json", summaryJson (rows, shard));
+  writeReport (base + ".json", summaryJson (rows, shard, run));
   writeFileAtomically (base + ".csv", csvText (rows));
 }
 
 std::vector<ScanSummary>
-readSummary (const std::string& path, std::string* shard)
+readSummary (const std::string& path, std::string* shard, nlohmann::json* run)
 {
   const nlohmann::json document = readJsonFile (path);
   if (!document.is_object () || !document.contains ("scans") || !document["scans"].is_array ())
     throw FormatError (path + ": not a batch summary (no \"scans\" array; written by register --scans)");
   if (shard != nullptr)
     *shard = valueAt<std::string> (document, "/shard", "");
+  if (run != nullptr)
+    *run = document.value ("run", nlohmann::json ());
   std::vector<ScanSummary> rows;
   for (const nlohmann::json& item : document["scans"]) {
     if (!item.is_object () || !item.contains ("id") || !item["id"].is_string ())

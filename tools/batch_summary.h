@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The summary of a batch registration (one row per scan, from its report) and the merging of shard summaries.
 #include <nlohmann/json.hpp>
@@ -26,12 +27,15 @@ struct ScanSummary
 ScanSummary
 summaryFromReport (const std::string& id, const std::string& scan, const nlohmann::json& report);
 
-/** Writes \a rows (sorted by id) as <base>.csv and <base>.json, each atomically; \a shard is "I/N" or "all". */
+/** Writes \a rows (sorted by id) as <base>.csv and <base>.json, each atomically; \a shard is "I/N" or "all", \a run
+ *  the record of the run that made them (RunRecord::summary(); JSON only). */
 void
-writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard);
+writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard,
+              const nlohmann::json& run);
 
-/** The rows of a summary JSON file written by writeSummary(); FormatError naming the file otherwise. */
+/** The rows of a summary JSON file written by writeSummary(), with its shard and run record if asked;
+ *  FormatError naming the file otherwise. */
 std::vector<ScanSummary>
-readSummary (const std::string& path, std::string* shard = nullptr);
+readSummary (const std::string& path, std::string* shard = nullptr, nlohmann::json* run = nullptr);
 } // namespace tools
 } // namespace morphreg

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
 #include "commands.h"
 #include "mesh_annotations.h"
@@ -5,6 +6,7 @@
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
@@ -176,7 +178,10 @@ buildModelFile (const BuildModelOptions& options)
   const MorphableModel::Ptr model = !options.from_scans.empty ()      ? buildFromScans (options, report_dir, summary)
                                     : !options.ict_directory.empty () ? buildFromIct (options, summary)
                                                                       : buildFromMeshes (options, summary);
-  model->setMetadata ({{"builder", "morphreg build-model"}, {"source", summary["source"].dump ()}});
+  model->setMetadata ({{"builder", "morphreg build-model"},
+                       {"source", summary["source"].dump ()},
+                       {"morphreg_version", MORPHREG_VERSION},
+                       {"command_line", commandLine ()}});
   saveModel (options.out, *model);
   std::vector<int> components;
   for (const ModelRegion& region : model->regions ()) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg demo`: the main job end to end on the built-in data. Generates the synthetic population, builds a
 // 7-region model from it, simulates a scan of a head not in the population, registers the model to the scan and
 // writes the fitted mesh, the JSON report and a PNG overlay, with the fit's error against the true head.

@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg evaluate-model`: a model's compactness, generalisation (on held-out meshes) and specificity (against its
 // training meshes), per number of components, as text or JSON.
 #include "commands.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/model/model_quality.h>
 
 #include <nlohmann/json.hpp>
@@ -166,10 +167,10 @@ registerEvaluateModelCommand (CLI::App& app)
   command->footer ("Distances are mean vertex distances in correspondence (mm), each mesh moved rigidly onto the "
                    "model's mean first; the measures use the model's global PCA (its statismo part).");
   command->callback ([options] () {
-    const MorphableModel::Ptr model = loadModel (options->model);
+    const MorphableModel::Ptr model = loadModelFile (options->model, std::cerr);
     const nlohmann::json result = evaluate (*options, *model);
     if (options->json)
-      std::cout << result.dump (2) << '\n';
+      std::cout << stamped (result).dump (2) << '\n';
     else
       printTable (result);
   });

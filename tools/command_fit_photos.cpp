@@ -1,16 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg fit-photos`: a head model fitted to an annotated profile photo and frontal photo (docs/method.md,
 // "Fitting to two orthogonal photographs"),
 // written as PLY (coloured by the frontal photo, or by the error against a known truth) with a JSON report.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
+#include "pipeline.h"
+#include "provenance.h"
 
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/photo/two_view_settings.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/frontal_texture.h>
 #include <morphreg/photo/photo_view_io.h>
@@ -151,8 +154,8 @@ printFitSummary (const FitPhotosOptions& options, const TwoViewFit& fit, bool wi
               << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
 }
 
-/** Writes the fitted mesh coloured by its error against --truth, by the frontal --photo, or plain; returns what
- *  the colours show.
+/** Writes the fitted mesh coloured by its error against --truth (with the error as its quality), by the frontal
+ *  --photo, or plain; returns what the colours show.
  */
 std::string
 writeFittedMesh (const FitPhotosOptions& options, const TwoViewFit& fit, const std::optional<FrontalView>& frontal,
@@ -160,7 +163,7 @@ writeFittedMesh (const FitPhotosOptions& options, const TwoViewFit& fit, const s
 {
   if (!options.truth.empty ()) {
     const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
-    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max)));
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max), errors));
     return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
   }
   if (!options.photo.empty ()) {
@@ -180,7 +183,7 @@ runFitPhotos (const FitPhotosOptions& options)
   const auto start = std::chrono::steady_clock::now ();
   OutputFiles outputs ({options.out, options.report},
                        {options.model, options.profile, options.frontal, options.photo, options.truth});
-  const MorphableModel::ConstPtr model = loadModel (options.model);
+  const MorphableModel::ConstPtr model = loadModelFile (options.model, std::cout);
   const ProfileView profile = loadProfileView (options.profile);
   if (options.frontal.empty () && options.approach != "profile")
     throw InvalidInputError ("fit-photos --approach " + options.approach +
@@ -192,6 +195,7 @@ runFitPhotos (const FitPhotosOptions& options)
   const TwoViewFit fit = fitViews (options, model, profile, frontal);
 
   nlohmann::json report = twoViewFitJson (fit);
+  report["status"] = "ok";
   report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the normalised photo frame";
   report["inputs"] = {{"model", options.model}, {"profile", options.profile}, {"frontal", options.frontal}};
   report["warnings"] = fitWarnings (options, fit);
@@ -201,9 +205,13 @@ runFitPhotos (const FitPhotosOptions& options)
   report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
   report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
-    writeJsonFile (options.report, report);
+    writeReport (options.report, report);
   outputs.keep ();
-  std::cout << "wrote " << options.out << " (model frame, mm; colours: " << colouring << ")\n";
+  std::cout << "wrote " << options.out << " (model frame, mm) "
+            << (colouring == "none" ? "(no colours)"
+                                    : meshContents (options.out, colouring,
+                                                    options.truth.empty () ? "" : "error against the truth in mm"))
+            << '\n';
 }
 } // namespace
 
@@ -261,7 +269,11 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--colour-max", options->colour_max, "error (mm) at the top of the colour scale with --truth")
       ->check (positive ())
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "fitted head to write (PLY, model frame, mm)")->capture_default_str ();
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("fitted head to write (model frame, mm); with --truth or --photo",
+                                    "error against the truth, or the frontal photo", "with --truth, the error in mm"))
+      ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write");
   command->add_flag ("-q,--quiet", options->quiet, "less output");
   command->callback ([options] () { runFitPhotos (*options); });

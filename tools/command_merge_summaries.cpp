@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg merge-summaries`: the summaries of the shards of a batch registration (register --scans --shard I/N,
 // e.g. a Slurm job array) combined into the summary one run over every scan writes.
+#include "batch_provenance.h"
 #include "batch_summary.h"
 #include "commands.h"
 
@@ -44,37 +46,61 @@ shardSummariesIn (const std::string& directory)
   return files;
 }
 
-/** Every shard I of N exactly once, and no scan in two of them; errors name the files. */
-std::vector<ScanSummary>
-mergeShards (const std::vector<std::string>& files)
+/** The shards read so far: the index -> file of each, their count, and the run they come from. */
+struct ShardSet
 {
-  std::map<int, std::string> shards;
+  std::map<int, std::string> files;
   int count = 0;
+  nlohmann::json run; ///< the first shard's record of its run (RunRecord::summary())
+};
+
+/** Adds \a file's shard \a shard (its text "I/N") made by \a run to \a set; errors name the files: a shard that is
+ *  not I/N, of another count, given twice, or made by another run (another model, settings, version or study). */
+void
+addShard (ShardSet& set, const std::string& file, const std::string& shard, const nlohmann::json& run)
+{
+  int index = -1, of = 0;
+  if (std::sscanf (shard.c_str (), "%d/%d", &index, &of) != 2 || index < 0 || index >= of)
+    throw FormatError (file + ": \"shard\" is '" + shard + "', not a shard I/N of register --shard");
+  const std::string first = set.files.empty () ? std::string () : set.files.begin ()->second;
+  if (set.count != 0 && of != set.count)
+    throw InvalidInputError (file + ": shard " + shard + " of " + std::to_string (of) + ", but " + first +
+                             " is one of " + std::to_string (set.count));
+  if (set.count != 0 && run != set.run) {
+    const std::string why = recordMismatch (set.run, run, "in " + first, "in " + file);
+    throw InvalidInputError (file + ": made by another run than " + first + ": " +
+                             (why.empty () ? "another list of scans (manifest)" : why));
+  }
+  set.count = of;
+  set.run = run;
+  if (const auto [it, inserted] = set.files.emplace (index, file); !inserted)
+    throw InvalidInputError (file + ": shard " + shard + " given twice (also " + it->second + ")");
+}
+
+/** Every shard I of N exactly once, all of one run, and no scan in two of them; errors name the files. */
+std::vector<ScanSummary>
+mergeShards (const std::vector<std::string>& files, nlohmann::json& run)
+{
+  ShardSet shards;
   std::map<std::string, std::string> owner; // scan id -> file
   std::vector<ScanSummary> rows;
   for (const std::string& file : files) {
     std::string shard;
-    const std::vector<ScanSummary> part = readSummary (file, &shard);
-    int index = -1, of = 0;
-    if (std::sscanf (shard.c_str (), "%d/%d", &index, &of) != 2 || index < 0 || index >= of)
-      throw FormatError (file + ": \"shard\" is '" + shard + "', not a shard I/N of register --shard");
-    if (count != 0 && of != count)
-      throw InvalidInputError (file + ": shard " + shard + " of " + std::to_string (of) + ", but " +
-                               shards.begin ()->second + " is one of " + std::to_string (count));
-    count = of;
-    if (const auto [it, inserted] = shards.emplace (index, file); !inserted)
-      throw InvalidInputError (file + ": shard " + shard + " given twice (also " + it->second + ")");
+    nlohmann::json shard_run;
+    const std::vector<ScanSummary> part = readSummary (file, &shard, &shard_run);
+    addShard (shards, file, shard, shard_run);
     for (const ScanSummary& row : part) {
       if (const auto [it, inserted] = owner.emplace (row.id, file); !inserted)
         throw InvalidInputError (file + ": scan '" + row.id + "' is also in " + it->second);
       rows.push_back (row);
     }
   }
-  for (int index = 0; index < count; ++index)
-    if (!shards.count (index))
-      throw InvalidInputError ("merge-summaries: shard " + std::to_string (index) + "/" + std::to_string (count) +
-                               " is missing (its summary.shard-" + std::to_string (index) + "-of-" +
-                               std::to_string (count) + ".json)");
+  for (int index = 0; index < shards.count; ++index)
+    if (!shards.files.count (index))
+      throw InvalidInputError ("merge-summaries: shard " + std::to_string (index) + "/" +
+                               std::to_string (shards.count) + " is missing (its summary.shard-" +
+                               std::to_string (index) + "-of-" + std::to_string (shards.count) + ".json)");
+  run = shards.run;
   return rows;
 }
 
@@ -83,9 +109,10 @@ runMerge (const MergeOptions& options)
 {
   const std::vector<std::string> files =
       options.summaries.empty () ? shardSummariesIn (options.out_dir) : options.summaries;
-  const std::vector<ScanSummary> rows = mergeShards (files);
+  nlohmann::json run;
+  const std::vector<ScanSummary> rows = mergeShards (files, run);
   const std::string base = (fs::path (options.out_dir) / "summary").string ();
-  writeSummary (base, rows, "all");
+  writeSummary (base, rows, "all", run);
   const auto failed =
       std::count_if (rows.begin (), rows.end (), [] (const ScanSummary& r) { return r.status != "ok"; });
   std::cout << "merged " << files.size () << " shard summaries: " << rows.size () << " scans, " << failed

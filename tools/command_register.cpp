@@ -1,11 +1,14 @@
-// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours: the scan's or the residual), a JSON
-// report and
-// optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
+// SPDX-License-Identifier: BSD-3-Clause
+// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours: the scan's or the residual; vertex
+// quality: the residual), a JSON report and optionally a screenshot of the fit; with --truth, the fit's vertex error
+// against the true mesh.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 #include "scan_colours.h"
 
 #include <morphreg/common/cloud_matrix.h>
@@ -13,6 +16,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/depth_image_io.h>
 #include <morphreg/io/file_format.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
@@ -28,7 +32,10 @@
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
+#include <pcl/common/io.h>
+
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -159,29 +166,55 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
 } // namespace
 
 /** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path)
+ScanCloud
+loadScan (const RegisterOptions& options)
 {
-  auto scan = loadCloud<pcl::PointNormal> (path);
+  const std::string& path = options.scan;
+  pcl::PointCloud<pcl::PointNormal>::Ptr scan;
+  if (options.intrinsics.empty ())
+    scan = loadCloud<pcl::PointNormal> (path);
+  else { // a depth image: its organised cloud in mm, no normals, no colours
+    if (options.colours == "scan")
+      throw InvalidInputError ("--colours scan with --depth " + path + ": a depth image has no colours");
+    const DepthImage image = loadDepthPng (path);
+    DepthIntrinsics camera = loadDepthIntrinsics (options.intrinsics);
+    if (camera.width != image.width || camera.height != image.height)
+      throw InvalidInputError (path + ": the depth image is " + std::to_string (image.width) + " x " +
+                               std::to_string (image.height) + " pixels, the camera of " + options.intrinsics + " " +
+                               std::to_string (camera.width) + " x " + std::to_string (camera.height));
+    scan.reset (new pcl::PointCloud<pcl::PointNormal>);
+    pcl::copyPointCloud (*depthImageToCloud (image.depth, camera), *scan);
+    for (auto& point : *scan)
+      point.normal_x = point.normal_y = point.normal_z = std::numeric_limits<float>::quiet_NaN ();
+  }
+  const std::optional<Eigen::Vector3d> viewpoint =
+      scan->isOrganized () ? std::optional<Eigen::Vector3d> (scan->sensor_origin_.head<3> ().cast<double> ())
+                           : std::nullopt;
   dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (pointsOf (*scan), path);
   scan->is_dense = true;
-  return scan;
+  return {scan, viewpoint};
 }
 
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out)
+convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out)
 {
+  if (!options.intrinsics.empty () && options.units != "auto" && options.units != "mm")
+    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
   const FileFormat format = sniffFileFormat (options.scan);
   if (const auto file_unit = specifiedLengthUnit (format))
     out << "units: " << options.scan << " is " << fileFormatName (format) << ", whose unit is the "
         << toString (*file_unit) << " by specification: converted to mm on reading (x" << millimetresPer (*file_unit)
         << ")\n";
-  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
+  const std::string units = options.intrinsics.empty () ? options.units : "mm";
+  const LengthUnitGuess unit =
+      morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
+  if (scan.viewpoint)
+    *scan.viewpoint *= millimetresPer (unit.unit);
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   return unit;
@@ -194,6 +227,16 @@ reportPath (const RegisterOptions& options)
                                  : options.report;
 }
 
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out)
+{
+  MorphableModel::Ptr model = loadModel (path);
+  const auto file_units = model->metadata ().find (kFileUnitsKey);
+  if (file_units != model->metadata ().end () && file_units->second.rfind ("mm ", 0) != 0)
+    out << "units: the model file " << path << " is in " << file_units->second << '\n';
+  return model;
+}
+
 nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
@@ -204,7 +247,7 @@ registerScanFile (const RegisterOptions& options)
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   return keepOnSuccessOrFitFailure (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });
@@ -219,12 +262,13 @@ namespace
 reportLostFit (const RegisterOptions& options, std::size_t scan_points, const TooFewCorrespondencesError& error)
 {
   const std::string report_path = reportPath (options);
-  const nlohmann::json report = {{"status", "failed"},
-                                 {"checks", {{"passed", false}, {"failures", {error.what ()}}}},
-                                 {"scan", {{"file", options.scan}, {"points", scan_points}}},
-                                 {"settings", settingsJson (options)},
-                                 {"fitted_mesh", nullptr}};
-  writeJsonFile (report_path, report);
+  nlohmann::json report = {{"status", "failed"},
+                           {"checks", {{"passed", false}, {"failures", {error.what ()}}}},
+                           {"scan", {{"file", options.scan}, {"points", scan_points}}},
+                           {"settings", settingsJson (options)},
+                           {"fitted_mesh", nullptr}};
+  addProvenance (options, report);
+  writeReport (report_path, report);
   throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
 }
 
@@ -245,6 +289,17 @@ scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthU
   return scan;
 }
 
+/** The scan's colours at the fitted \a vertices as options.colours asks (scanColoursAt); none for a depth image,
+ *  which has no colours (loadScan refuses --colours scan with it). */
+std::optional<VertexColours>
+fittedScanColours (const RegisterOptions& options, const LengthUnitGuess& unit, const Eigen::Matrix3Xd& vertices,
+                   std::ostream& warnings)
+{
+  if (!options.intrinsics.empty ())
+    return std::nullopt;
+  return scanColoursAt (options.scan, millimetresPer (unit.unit), options.colours, vertices, warnings);
+}
+
 /** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
 nlohmann::json
 fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model, const nlohmann::json& scan,
@@ -256,6 +311,7 @@ fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model
   report["settings"] = settingsJson (options);
   report["residuals_mm"]["colour_scale_max"] = colour_scale;
   report["fitted_mesh"] = options.out;
+  addProvenance (options, report);
   return report;
 }
 
@@ -265,15 +321,16 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
              double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
 {
   const std::string report_path = reportPath (options);
+  std::ostringstream colours;
+  if (report["fitted_mesh_colours"] == "scan")
+    colours << kScanColoursText;
+  else
+    colours << "residual, 0-" << colour_scale << " mm";
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
-      << "wrote " << options.out << " (vertex colours: ";
-  if (report["fitted_mesh_colours"] == "scan")
-    out << kScanColoursText;
-  else
-    out << "residual, 0-" << colour_scale << " mm";
-  out << "), " << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << "wrote " << options.out << ' ' << meshContents (options.out, colours.str (), "residual in mm") << ", "
+      << report_path << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
@@ -308,10 +365,12 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const auto scan = loadScan (options.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
+  ScanCloud loaded = loadScan (options);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, options, *model, out);
   Icp icp;
   configureRegistration (icp, options, model);
+  icp.setTargetViewpoint (loaded.viewpoint);
   if (!options.landmarks.empty ())
     icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
   icp.setInputTarget (scan);
@@ -325,10 +384,10 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = colourScale (residuals, options.colour_max);
-  const auto scan_colours =
-      scanColoursAt (options.scan, millimetresPer (unit.unit), options.colours, fitted.vertices, warnings);
-  savePolygonMesh (options.out,
-                   toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale)));
+  const auto scan_colours = fittedScanColours (options, unit, fitted.vertices, warnings);
+  savePolygonMesh (
+      options.out,
+      toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale), residuals));
   const double write_seconds = secondsSince (write_start);
 
   nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
@@ -350,7 +409,7 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
                          {"screenshot", screenshot_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeJsonFile (reportPath (options), report);
+  writeReport (reportPath (options), report);
   concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
   return report;
 }
@@ -382,6 +441,26 @@ addRobustnessOptions (CLI::App* command, RegisterOptions& options)
                     "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
       ->check (CLI::Range (0.01, 1.0));
 }
+
+/** The scan's unit and smoothing (--units, --target-smoothing) of addRegistrationOptions. */
+void
+addScanTreatmentOptions (CLI::App* command, RegisterOptions& options)
+{
+  command
+      ->add_option ("--target-smoothing", options.target_smoothing,
+                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
+                    "such as depth-camera frames; the report's target_surface says what was done)")
+      ->check (CLI::IsMember ({"auto", "on", "off"}))
+      ->capture_default_str ();
+  command->add_flag_callback (
+      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
+  command
+      ->add_option ("--units", options.units,
+                    "the scan's length unit: auto (from its size), mm, cm, m or in (glTF/GLB scans: the unit after "
+                    "reading, which converts glTF's metres to mm)")
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
+      ->capture_default_str ();
+}
 } // namespace
 
 void
@@ -406,9 +485,9 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->capture_default_str ();
   command
       ->add_option ("--components", options.components,
-                    "shape components per region: one count for all, or one per region")
-      ->check (nonNegative ())
-      ->capture_default_str ();
+                    "shape components per region: one count for all, or one per region (default: every component "
+                    "the model has, at most 60 per region)")
+      ->check (nonNegative ());
   command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
                      "point-to-plane residuals along the scan normals (default) or point-to-point");
   command
@@ -432,18 +511,13 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
                     "the scan, e.g. 0.1 with ICT-FaceKit)")
       ->check (nonNegative ())
       ->capture_default_str ();
-  command->add_option ("--landmark-weight", options.landmark_weight, "one landmark counts as this many correspondences")
+  command
+      ->add_option ("--landmark-weight", options.landmark_weight,
+                    "one landmark counts as this many correspondences in the fit (0: the landmarks only place the "
+                    "start)")
       ->check (nonNegative ())
       ->capture_default_str ();
-  command->add_flag ("--target-smoothing,!--no-target-smoothing", options.target_smoothing,
-                     "fit to each scan point projected onto its neighbours' plane (default; off for sparse or curved "
-                     "real scans)");
-  command
-      ->add_option ("--units", options.units,
-                    "the scan's length unit: auto (from its size), mm, cm, m or in (glTF/GLB scans: the unit after "
-                    "reading, which converts glTF's metres to mm)")
-      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
-      ->capture_default_str ();
+  addScanTreatmentOptions (command, options);
   command->add_flag ("--area-weighting", options.area_weighting,
                      "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
   addRobustnessOptions (command, options);
@@ -457,14 +531,24 @@ registerRegisterCommand (CLI::App& app)
   auto* scan =
       command->add_option ("-s,--scan", options->scan,
                            "scan (.pcd .ply .obj .stl .off .gltf .glb); its unit: see --units; its colours: --colours");
+  auto* depth = command->add_option ("--depth", options->scan,
+                                     "a depth camera's image as the scan: a 16-bit PNG of depths in mm (needs "
+                                     "--intrinsics)");
+  auto* intrinsics =
+      command->add_option ("--intrinsics", options->intrinsics,
+                           "the depth camera of --depth: JSON with width, height, fx, fy, cx, cy (pixels)");
+  depth->excludes (scan)->needs (intrinsics);
+  intrinsics->needs (depth);
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours: see --colours)")
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("fitted mesh to write", "see --colours", "residual in mm"))
       ->capture_default_str ();
   command
       ->add_option ("--colours", options->colours,
                     "the fitted mesh's vertex colours: auto (the scan's when it has any, else residual), scan (the "
                     "colour of the nearest scan surface point: vertex colours, or the texture of a textured OBJ or "
-                    "glTF), residual (the residual map, as --screenshot shows it)")
+                    "glTF; not with --depth), residual (the residual map, as --screenshot shows it)")
       ->check (CLI::IsMember ({"auto", "scan", "residual"}))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
@@ -483,9 +567,9 @@ registerRegisterCommand (CLI::App& app)
                    "report's status \"failed\"; a fit that loses the scan (too few correspondences) exits 4 with "
                    "the report alone.");
   auto batch = std::make_shared<BatchOptions> ();
-  addBatchOptions (command, *options, *batch)->excludes (scan);
-  command->callback ([options, batch, command, scan] () {
-    if (options->scans.empty () && scan->count () == 0)
+  addBatchOptions (command, *options, *batch)->excludes (scan)->excludes (depth);
+  command->callback ([options, batch, command, scan, depth] () {
+    if (options->scans.empty () && scan->count () == 0 && depth->count () == 0)
       throw CLI::RequiredError ("--scan or --scans");
     runRegister (*options, *batch);
   });

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a).
 #include "commands.h"
 #include "output_files.h"

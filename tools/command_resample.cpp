@@ -1,19 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg resample`: a scan + a model file -> the scan's surface in the model's topology. The scan is registered
 // exactly as `register` does it, then ScanResampler moves the fitted mesh's vertices onto the scan along their normals
 // and fills the holes; writes the resampled mesh (vertex colours: the scan's, or observed / filled), the fitted mesh
 // and one JSON report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
+#include "mesh_output.h"
 #include "output_files.h"
 #include "pipeline.h"
+#include "provenance.h"
 #include "scan_colours.h"
 #include "scan_resampling.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/resampling/landmark_reference.h>
 
@@ -47,9 +48,11 @@ resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::Po
     std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
               << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
               << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
-              << options.out << " (vertex colours: "
-              << (report["resampled_mesh_colours"] == "scan" ? kScanColoursText : "grey observed, orange filled")
-              << ")\n";
+              << options.out << ' '
+              << meshContents (
+                     options.out,
+                     report["resampled_mesh_colours"] == "scan" ? kScanColoursText : "grey observed, orange filled", "")
+              << '\n';
 }
 
 /** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
@@ -61,8 +64,9 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
   const RegisterOptions& registration = options.registration;
   if (registration.landmarks.empty ())
     throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
-  const auto scan = loadScan (registration.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, registration, model, std::cout);
+  ScanCloud loaded = loadScan (registration);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, registration, model, std::cout);
   const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);
   requireLandmarksOnScan (landmarks, pointsOf (*scan), registration.landmarks);
   const TriangleMesh reference =
@@ -79,7 +83,7 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
         {"scale_to_mm", millimetresPer (unit.unit)}}},
       {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
   resampleAndReport (options, *scan, reference, report);
-  writeJsonFile (registration.report, report);
+  writeReport (registration.report, report);
   return report;
 }
 
@@ -94,7 +98,7 @@ runResample (ResampleOptions options)
     registration.report = std::filesystem::path (options.out).replace_extension (".json").string ();
   OutputFiles outputs ({options.out, registration.out, registration.report},
                        {registration.scan, registration.model, registration.landmarks});
-  const MorphableModel::Ptr model = loadModel (registration.model);
+  const MorphableModel::Ptr model = loadModelFile (registration.model, std::cout);
   if (options.reference == "landmarks") {
     keepOnSuccessOrFitFailure (outputs, [&] { return resampleFromLandmarks (options, *model); });
     return;
@@ -129,7 +133,7 @@ registerResampleCommand (CLI::App& app)
                     "by a thin plate spline onto --landmarks, METHOD section 5; no registration)")
       ->check (CLI::IsMember ({"fit", "landmarks"}))
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "resampled mesh to write (PLY; vertex colours: see --colours)")
+  command->add_option ("-o,--out", options->out, meshOutputHelp ("resampled mesh to write", "see --colours", ""))
       ->capture_default_str ();
   options->resampling.colours = "auto";
   command

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg synth`: the built-in synthetic head population and simulated scans of it, written to disk.
 #include "commands.h"
 #include "option_checks.h"

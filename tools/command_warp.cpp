@@ -1,16 +1,18 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg warp`: a mesh warped from source to target landmarks by a thin plate spline, globally or by segments
 // with blended seams, by moving least squares (--method mls), or re-postured with rigid bones (--method
 // articulated); with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
 #include "mesh_annotations.h"
+#include "mesh_output.h"
 #include "option_checks.h"
 #include "output_files.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
@@ -27,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <tuple>
 
@@ -255,16 +258,17 @@ loadMeshInMillimetres (const std::string& path, double millimetres_per_unit)
   return mesh;
 }
 
-/** The error against the truth: vertex colours, the report's figures (with the limb parts for the articulated
- *  method) and a line on stdout. */
-void
+/** The error against the truth: vertex colours and quality, the report's figures (with the limb parts for the
+ *  articulated method) and a line on stdout; returns what the written mesh carries (meshContents). */
+std::string
 evaluateAgainstTruth (const WarpOptions& options, const WarpInputs& inputs, const TriangleMesh& warped,
                       nlohmann::json& report)
 {
   const TriangleMesh truth = loadMeshInMillimetres (options.truth, millimetresPer (parseLengthUnit (options.units)));
   requireSameTopology (inputs.mesh, truth, options.truth);
   const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
-  savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
+  const double colour_max = std::max (errors.maxCoeff (), 1e-9);
+  savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, colour_max), errors));
   std::vector<int> labels (static_cast<std::size_t> (inputs.mesh.numVertices ()), 0);
   if (!options.labels.empty ())
     labels = loadRegionLabels (options.labels, inputs.mesh.numVertices ()).labels;
@@ -280,7 +284,10 @@ evaluateAgainstTruth (const WarpOptions& options, const WarpInputs& inputs, cons
           {"bones", part.bones + "*"}, {"vertices", part.vertices}, {"max_error_mm", part.max_error}};
   if (!options.quiet)
     std::cout << "error against " << options.truth << ": mean " << quality.mean_error << " mm, max "
-              << quality.max_error << " mm (vertex colours of " << options.out << ")\n";
+              << quality.max_error << " mm\n";
+  std::ostringstream colours;
+  colours << "error against the truth, 0-" << colour_max << " mm";
+  return meshContents (options.out, colours.str (), "error against the truth in mm");
 }
 
 void
@@ -293,17 +300,21 @@ runWarp (const WarpOptions& options)
   std::tie (inputs.source, inputs.target) = namedLandmarkPairs (options.source, options.target, millimetres_per_unit);
   if (millimetres_per_unit != 1.0 && !options.quiet)
     std::cout << "units: the inputs are in " << options.units << ", converted to mm (the output is in mm)\n";
-  nlohmann::json report = {
-      {"units", "mm"}, {"input_units", options.units}, {"mesh", options.mesh}, {"output", options.out}};
+  nlohmann::json report = {{"status", "ok"},
+                           {"units", "mm"},
+                           {"input_units", options.units},
+                           {"mesh", options.mesh},
+                           {"output", options.out}};
   const TriangleMesh warped = warpMesh (options, inputs, report);
+  std::string contents;
   if (options.truth.empty ())
     saveTriangleMesh (options.out, warped);
   else
-    evaluateAgainstTruth (options, inputs, warped, report);
+    contents = ' ' + evaluateAgainstTruth (options, inputs, warped, report);
   if (!options.report.empty ())
-    writeJsonFile (options.report, report);
+    writeReport (options.report, report);
   outputs.keep ();
-  std::cout << "wrote " << options.out << '\n';
+  std::cout << "wrote " << options.out << contents << '\n';
 }
 } // namespace
 
@@ -316,7 +327,11 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("-m,--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl .off .gltf .glb)")->required ();
   command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
-  command->add_option ("-o,--out", options->out, "warped mesh to write")->capture_default_str ();
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("warped mesh to write; with --truth", "error against the truth",
+                                    "error against the truth in mm"))
+      ->capture_default_str ();
   command->add_option ("--labels", options->labels,
                        "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
   command

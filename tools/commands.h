@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Registration of the CLI's subcommands; each lives in its own tools/command_<name>.cpp.
 #include <CLI/CLI.hpp>

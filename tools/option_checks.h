@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Validators of numeric options whose messages state the rule, not a limit: CLI11's NonNegativeNumber and
 // PositiveNumber print the largest double, a 309-digit number.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The files a subcommand writes, checked before any work and removed again if the run fails.
 #include "pipeline.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
 #include "scan_resampling.h"
@@ -17,6 +18,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -37,10 +39,23 @@ struct RegisterOptions : RegistrationSettings
   std::string screenshot; ///< empty: none
   int width = 1280, height = 960;
   std::string landmarks, truth;
+  /** With a depth image as the scan (a 16-bit PNG in mm): its camera's intrinsics (JSON; depth_image_io.h). */
+  std::string intrinsics;
   double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
   std::string colours = "auto"; ///< the fitted mesh's vertex colours: auto (the scan's if it has any), scan, residual
   bool quiet = false;
+  /** Batch mode: what produces the outputs (inputs' content hashes, settings, version; batch_provenance.h),
+   *  recorded in every report the registration writes as "provenance". Null: none recorded. */
+  nlohmann::json provenance;
 };
+
+/** Copies options.provenance, if any, into \a report as "provenance". */
+inline void
+addProvenance (const RegisterOptions& options, nlohmann::json& report)
+{
+  if (!options.provenance.is_null ())
+    report["provenance"] = options.provenance;
+}
 
 /** The registration of `build-model --from-scans`: register's, but up to 60 components per region refined at a weak
  *  prior (0.2), so that each fit follows its scan and the model is built from close correspondences. */
@@ -61,16 +76,30 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/** The scan file as points with normals, without missing (NaN) points, checked to be registrable
- *  (requireRegistrableScan); in the file's unit. */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path);
+/** A scan as loaded: its points and, for one sensor's organised view (a depth camera's frame), where the sensor
+ *  stood (the cloud's origin), which the fit turns estimated normals towards. */
+struct ScanCloud
+{
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud;
+  std::optional<Eigen::Vector3d> viewpoint;
+};
 
-/** Converts \a scan to mm, its unit given by options.units or guessed against \a model (see scan_units.h), and says
- *  so on \a out when it was not in mm; returns the unit and why. */
+/** options.scan as points with normals, without missing (NaN) points, checked to be registrable
+ *  (requireRegistrableScan); in the file's unit. With options.intrinsics, options.scan is a depth image (16-bit PNG,
+ *  mm): its points in the camera frame (mm), the camera the viewpoint. */
+ScanCloud
+loadScan (const RegisterOptions& options);
+
+/** Converts \a scan (its points and viewpoint) to mm, its unit given by options.units or guessed against \a model
+ *  (see scan_units.h), and says so on \a out when it was not in mm; returns the unit and why. */
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out);
+convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out);
+
+/** Loads a model file (loadModel: in mm whatever the file's unit) and says on \a out when the file was in another
+ *  unit and converted. */
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out);
 
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */
 nlohmann::json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scan's colours on the meshes register and resample write: sampled at the nearest scan surface point, or left
 // to the command's own colouring (residuals, observed / filled) as --colours says.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "scan_resampling.h"
 
 #include "option_checks.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scanner settings shared by every command that simulates scans.
 #include <morphreg/synthetic/scan_simulator.h>

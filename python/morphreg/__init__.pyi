@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Type stubs of morphreg (the pybind11 extension _morphreg re-exported). Points are (N, 3) arrays in mm."""
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
@@ -81,12 +82,12 @@ def register(model: Model, points: ArrayLike, normals: Optional[ArrayLike] = Non
              landmarks: Optional[Dict[str, ArrayLike]] = None, *,
              progress: Optional[Callable[[int, int, float], None]] = None, units: str = "auto",
              iterations: int = 100, similarity_iterations: int = 60, max_distance: float = 0.0,
-             components: Union[int, Sequence[int]] = 10, point_to_plane: bool = True,
+             components: Union[None, int, Sequence[int]] = None, point_to_plane: bool = True,
              tangential_weight: float = 0.02, shape_prior: float = 3.0,
-             refinement_prior: Optional[float] = None, refinement_smoothness: float = 1.0, landmark_weight: float = 1.0,
+             refinement_prior: Optional[float] = None, refinement_smoothness: float = 1.0, landmark_weight: float = 0.0,
              area_weighting: bool = False, loss: str = "tukey", loss_scale: float = 0.0,
              reject_distance: float = 0.0, reject_median: float = 0.0, reject_one_to_one: bool = False,
-             reject_trimmed: float = 0.0, target_smoothing: bool = True) -> RegistrationResult: ...
+             reject_trimmed: float = 0.0, target_smoothing: Union[str, bool] = "auto") -> RegistrationResult: ...
 
 class ThinPlateSpline:
     def __init__(self, regularization: float = 0.0) -> None: ...

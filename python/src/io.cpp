@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesh, cloud and landmark files as numpy arrays, read and written by the library (format sniffed from the content,
 // validated before PCL or VTK see it, written atomically).
 #include "bindings.h"

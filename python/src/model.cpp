@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg.Model: a multi-region PCA head model (statismo HDF5 files), its mean, regions, components, landmarks,
 // instances and random samples as numpy arrays.
 #include "bindings.h"
@@ -104,6 +105,8 @@ regionComponentCounts (const MorphableModel& model)
 std::vector<int>
 componentCounts (const py::handle& components)
 {
+  if (components.is_none ())
+    return {};
   if (py::isinstance<py::int_> (components))
     return {components.cast<int> ()};
   if (py::isinstance<py::sequence> (components) && !py::isinstance<py::str> (components)) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fitting the model to two photographs: morphreg.ProfileView and morphreg.FrontalView (pixels, or the annotation
 // files of `morphreg fit-photos`), morphreg.fit_photos, and morphreg.PhotoSimulator for annotated synthetic photos.
 #include "bindings.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Model arguments shared by the parts of the module.
 #include <morphreg/model/morphable_model.h>
@@ -17,7 +18,8 @@ namespace py = pybind11;
 RegionLabels
 regionLabels (const py::handle& regions);
 
-/** Component counts given as an int (the same for every region) or a list of ints (one per region). */
+/** Component counts given as an int (the same for every region) or a list of ints (one per region); None: none
+ *  given (empty: the callee's default). */
 std::vector<int>
 componentCounts (const py::handle& components);
 

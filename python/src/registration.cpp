@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg.register: a MorphableICP fit of a model to points (numpy), configured and checked as `morphreg register`
 // does it, with the GIL released while it runs and an optional per-iteration progress callback.
 #include "bindings.h"
@@ -115,6 +116,18 @@ registerPoints (const MorphableModel::Ptr& model, const py::handle& points, cons
   return result;
 }
 
+/** target_smoothing as given: "auto", "on" or "off", or a bool (True: "on"). */
+std::string
+smoothingName (const py::handle& smoothing)
+{
+  if (py::isinstance<py::bool_> (smoothing))
+    return smoothing.cast<bool> () ? "on" : "off";
+  if (py::isinstance<py::str> (smoothing))
+    return smoothing.cast<std::string> ();
+  throw InvalidInputError ("target_smoothing: expected \"auto\", \"on\", \"off\" or a bool, got " +
+                           std::string (py::repr (smoothing)));
+}
+
 /** register's keyword arguments (the command line's option names) as RegistrationSettings, and the fit. */
 py::object
 registerFunction (const MorphableModel::Ptr& model, const py::handle& points, const py::handle& normals,
@@ -123,7 +136,7 @@ registerFunction (const MorphableModel::Ptr& model, const py::handle& points, co
                   double tangential_weight, double shape_prior, std::optional<double> refinement_prior,
                   double refinement_smoothness, double landmark_weight, bool area_weighting, const std::string& loss,
                   double loss_scale, double reject_distance, double reject_median, bool reject_one_to_one,
-                  double reject_trimmed, bool target_smoothing)
+                  double reject_trimmed, const py::handle& target_smoothing)
 {
   RegistrationSettings settings;
   settings.units = units;
@@ -144,7 +157,7 @@ registerFunction (const MorphableModel::Ptr& model, const py::handle& points, co
   settings.reject_median = reject_median;
   settings.reject_one_to_one = reject_one_to_one;
   settings.reject_trimmed = reject_trimmed;
-  settings.target_smoothing = target_smoothing;
+  settings.target_smoothing = smoothingName (target_smoothing);
   return py::cast (registerPoints (model, points, normals, landmarks, settings, std::move (progress)));
 }
 
@@ -198,7 +211,7 @@ bindRegistration (py::module_& m)
          py::arg ("landmarks") = py::none (), py::kw_only (), py::arg ("progress") = py::none (),
          py::arg ("units") = d.units, py::arg ("iterations") = d.iterations,
          py::arg ("similarity_iterations") = d.similarity_iterations, py::arg ("max_distance") = d.max_distance,
-         py::arg ("components") = d.components.front (), py::arg ("point_to_plane") = d.point_to_plane,
+         py::arg ("components") = py::none (), py::arg ("point_to_plane") = d.point_to_plane,
          py::arg ("tangential_weight") = d.tangential_weight, py::arg ("shape_prior") = d.shape_prior,
          py::arg ("refinement_prior") = d.refinement_prior, py::arg ("refinement_smoothness") = d.refinement_smoothness,
          py::arg ("landmark_weight") = d.landmark_weight, py::arg ("area_weighting") = d.area_weighting,

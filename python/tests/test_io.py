@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Mesh, cloud and landmark files through the library's readers and writers."""
 import base64
 import json

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.Model: files, mean, regions, components, instances, samples and projections; equal to the C++ API."""
 import numpy as np
 import pytest

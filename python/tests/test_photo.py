@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.fit_photos on simulated photos: accuracy, equality with `morphreg fit-photos`, bad input."""
 import json
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.register: accuracy against the truth, equality with `morphreg register`, the GIL, progress, bad input."""
 import json
 import sys
@@ -98,24 +99,30 @@ def test_an_exception_in_progress_stops_the_fit(model, scan):
 
 
 def test_the_gil_is_released_while_fitting(model, scan):
-    """Another Python thread runs between the fit's iterations only if the fit releases the GIL: with it held,
-    the counting thread below would stay blocked until the fit ended."""
-    counter, snapshots, started = [0], [], threading.Event()
+    """The main thread runs while the fit computes only if the fit releases the GIL. The switch interval is raised so
+    that Python never hands the GIL over on its own: the main thread, woken after the first iteration, can then set
+    its event before the sixth iteration only through the fit's release. No timing is involved."""
+    started, main_ran, seen = threading.Event(), threading.Event(), []
 
     def progress(iteration, kept, rms):
         if iteration == 1:
             started.set()
         if iteration == 6:
-            snapshots.append(counter[0])
+            seen.append(main_ran.is_set())
 
-    fit = threading.Thread(target=morphreg.register, args=(model, scan.points, scan.normals),
-                           kwargs={"progress": progress, "components": 5})
-    fit.start()
-    started.wait()
-    while fit.is_alive():
-        counter[0] += 1
-    fit.join()
-    assert snapshots and snapshots[0] > 1000
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    try:
+        fit = threading.Thread(target=morphreg.register, args=(model, scan.points, scan.normals),
+                               kwargs={"progress": progress, "components": 5})
+        fit.start()
+        assert started.wait(timeout=120), "the fit never reached its first iteration"
+        main_ran.set()
+        fit.join(timeout=300)
+        assert not fit.is_alive(), "the fit did not end within 300 s"
+    finally:
+        sys.setswitchinterval(interval)
+    assert seen == [True], "the main thread could not run during the fit: the GIL is held while fitting"
 
 
 def test_landmarks_in_the_scan_frame(model, scan, truth, generator):

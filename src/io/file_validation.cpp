@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry_validators.h"
 #include "off_reader.h"
 #include "vtk_reader.h"

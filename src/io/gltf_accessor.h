@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the glTF reader: the values of accessors, every read checked against the accessor's buffer view, and
 // the primitives' vertex data in one form whether it came from accessors or from a Draco payload.

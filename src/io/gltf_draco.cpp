@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "gltf_accessor.h"
 
 #include <draco/compression/decode.h>

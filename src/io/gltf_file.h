@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the glTF reader (gltf_reader.cpp): the file read whole, its GLB container checked, and the JSON checked
 // for what tinygltf would otherwise trust (buffer sizes, buffer view extents, nesting), all before tinygltf sees it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the glTF reader: where the scene places its meshes (the node hierarchy walked, transforms composed) and
 // how a primitive's material colours it (base-colour factor and texture, the textures decoded once each).

@@ -1,4 +1,6 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "off_reader.h"
+#include "ply_writer.h"
 #include "polygon_file.h"
 #include "vtk_reader.h"
 
@@ -54,6 +56,13 @@ loadPolygonMesh (const std::string& path)
   return mesh;
 }
 
+SavedVertexData
+savedVertexData (const std::string& path)
+{
+  requireExtension (path, ".ply .obj .vtk", "mesh");
+  return {true, fileExtension (path) == ".ply"};
+}
+
 void
 savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh)
 {
@@ -61,12 +70,10 @@ savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh)
   const std::string ext = fileExtension (path);
   if (ext == ".obj")
     return saveObjFile (path, mesh);
+  if (ext == ".ply")
+    return writeFileAtomically (path, plyMeshBytes (path, mesh));
   writeAtomically (path, [&] (const std::string& partial) {
-    const int status = callPclIo (path, [&] {
-      if (ext == ".ply")
-        return pcl::io::savePLYFileBinary (partial, mesh);
-      return pcl::io::saveVTKFile (partial, mesh);
-    });
+    const int status = callPclIo (path, [&] { return pcl::io::saveVTKFile (partial, mesh); });
     if (status < 0)
       throw IoError (path + ": cannot write the mesh");
     requireCompletelyWritten (partial, path);

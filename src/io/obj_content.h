@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the OBJ readers: what an OBJ file holds, parsed and checked once for the mesh reader (readObjFile) and
 // the coloured surface reader (its texture coordinates and materials).

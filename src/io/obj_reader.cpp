@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
 #include "obj_content.h"
@@ -6,11 +7,13 @@
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/mesh_io.h>
 
+#include <pcl/common/io.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <sstream>
 
 namespace morphreg
@@ -246,22 +249,52 @@ readObjFile (const std::string& path)
   return toPolygonMesh (parseObjFile (path));
 }
 
+namespace
+{
+/** The 4 bytes of field \a field of point \a i (a float, or PCL's packed rgb / rgba). */
+template <typename T>
+T
+fieldValue (const pcl::PCLPointCloud2& cloud, int field, std::size_t i)
+{
+  static_assert (sizeof (T) == 4, "float and packed colour fields are 4 bytes");
+  T value;
+  std::memcpy (&value, cloud.data.data () + i * cloud.point_step + cloud.fields[field].offset, sizeof (T));
+  return value;
+}
+
+/** " r g b" in [0, 1] of PCL's packed colour (0x00RRGGBB in the low bytes). */
+std::string
+colourText (std::uint32_t packed)
+{
+  std::ostringstream text;
+  text.precision (6);
+  for (int shift : {16, 8, 0})
+    text << ' ' << ((packed >> shift) & 0xffu) / 255.0;
+  return text.str ();
+}
+} // namespace
+
 void
 saveObjFile (const std::string& path, const pcl::PolygonMesh& mesh)
 {
-  pcl::PointCloud<pcl::PointNormal> points;
+  pcl::PointCloud<pcl::PointXYZ> points;
   pcl::fromPCLPointCloud2 (mesh.cloud, points);
-  bool normals = false;
-  for (const auto& field : mesh.cloud.fields)
-    normals = normals || field.name == "normal_x";
+  const int normal[3] = {pcl::getFieldIndex (mesh.cloud, "normal_x"), pcl::getFieldIndex (mesh.cloud, "normal_y"),
+                         pcl::getFieldIndex (mesh.cloud, "normal_z")};
+  const bool normals = std::min ({normal[0], normal[1], normal[2]}) >= 0;
+  const int colour = std::max (pcl::getFieldIndex (mesh.cloud, "rgb"), pcl::getFieldIndex (mesh.cloud, "rgba"));
   std::ostringstream text;
   text.precision (9);
-  text << "# " << points.size () << " vertices, " << mesh.polygons.size () << " faces\n";
-  for (const auto& p : points)
-    text << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  text << "# " << points.size () << " vertices, " << mesh.polygons.size () << " faces"
+       << (colour >= 0 ? "; vertex colours as v x y z r g b, r g b in [0, 1]" : "") << '\n';
+  for (std::size_t i = 0; i < points.size (); ++i)
+    text << "v " << points[i].x << ' ' << points[i].y << ' ' << points[i].z
+         << (colour >= 0 ? colourText (fieldValue<std::uint32_t> (mesh.cloud, colour, i)) : std::string ()) << '\n';
   if (normals)
-    for (const auto& p : points)
-      text << "vn " << p.normal_x << ' ' << p.normal_y << ' ' << p.normal_z << '\n';
+    for (std::size_t i = 0; i < points.size (); ++i)
+      text << "vn " << fieldValue<float> (mesh.cloud, normal[0], i) << ' '
+           << fieldValue<float> (mesh.cloud, normal[1], i) << ' ' << fieldValue<float> (mesh.cloud, normal[2], i)
+           << '\n';
   for (const auto& polygon : mesh.polygons) {
     text << 'f';
     for (const auto corner : polygon.vertices)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the mesh and coloured surface loaders: a mesh file read by the reader of its (already checked) format.
 #include <morphreg/io/file_format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the glTF reader: tinygltf's API from Debian's tiny_gltf.h, its symbols hidden in libmorphreg_core, where
 // tiny_gltf_implementation.cpp compiles its implementation (without stb_image: VTK's readers decode the textures).

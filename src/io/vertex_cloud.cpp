@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vertex_cloud.h"
 
 #include <pcl/conversions.h>

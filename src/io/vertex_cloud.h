@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the mesh readers: the vertex cloud of a mesh file with the fields it has.
 #include <morphreg/common/colour_map.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/registration/morphable_convergence.h>
 
 #include <cmath>

@@ -1,4 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
+#include <morphreg/common/length_unit.h>
 #include <morphreg/registration/registration_result_json.h>
 
 #include <nlohmann/json.hpp>
@@ -50,15 +53,24 @@ residualsJson (const IcpReport& report, const Eigen::VectorXd& vertex_residuals)
 }
 } // namespace
 
+FitMeasures
+measureRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
+{
+  const IcpReport& report = icp.getRegistrationReport ();
+  const double to_mm = millimetresPer (parseLengthUnit (report.target_unit));
+  Eigen::Matrix4d similarity = icp.getFinalTransformation ().cast<double> ();
+  similarity.topRows<3> () *= to_mm;
+  const Eigen::Matrix3Xd scan =
+      icp.getInputTarget () ? Eigen::Matrix3Xd (to_mm * pointsOf (*icp.getInputTarget ())) : Eigen::Matrix3Xd ();
+  return measureFit (model, icp.getComponentSelection (), icp.getShapeCoefficients (), similarity,
+                     to_mm * icp.getFittedVertices (), icp.getVertexResiduals (), scan, report,
+                     FitPlausibilitySettings ().leading_components);
+}
+
 FitPlausibility
 checkRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
 {
-  const FitPlausibilitySettings settings;
-  const Eigen::VectorXd leading = leadingCoefficientsInSigma (model, icp.getComponentSelection (),
-                                                              icp.getShapeCoefficients (), settings.leading_components);
-  const Eigen::Matrix3d linear = icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ();
-  return checkFitPlausibility (std::cbrt (linear.determinant ()), icp.getFittedVertices (), icp.getVertexResiduals (),
-                               leading, icp.getRegistrationReport (), settings);
+  return checkFitPlausibility (measureRegistration (icp, model));
 }
 
 nlohmann::json
@@ -74,13 +86,32 @@ similarityJson (const Eigen::Matrix4d& transform)
           {"translation", {transform (0, 3), transform (1, 3), transform (2, 3)}}};
 }
 
+/** The measures as the report's "checks" object holds them, with the verdict. */
+nlohmann::json
+checksJson (const FitMeasures& measures, const FitPlausibility& checks)
+{
+  return {{"passed", checks.plausible},
+          {"failures", checks.failures},
+          {"measures",
+           {{"scale", measures.scale},
+            {"correspondence_share", measures.correspondence_share},
+            {"largest_leading_sigma", measures.largest_sigma},
+            {"thickness_ratio", measures.thickness_ratio},
+            {"median_residual_mm", measures.median_residual},
+            {"explained_share", measures.explained_share},
+            {"explained_within_mm", kExplainedDistance},
+            {"scored_scan_points", measures.scored_points},
+            {"folded_share", measures.folded_share}}}};
+}
+
 nlohmann::json
 registrationResultJson (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
 {
   const IcpReport& report = icp.getRegistrationReport ();
-  const FitPlausibility checks = checkRegistration (icp, model);
+  const FitMeasures measures = measureRegistration (icp, model);
+  const FitPlausibility checks = checkFitPlausibility (measures);
   return {{"status", checks.plausible ? "ok" : "failed"},
-          {"checks", {{"passed", checks.plausible}, {"failures", checks.failures}}},
+          {"checks", checksJson (measures, checks)},
           {"units", "mm"},
           {"initialisation",
            {{"method", report.initialisation},
@@ -92,7 +123,11 @@ registrationResultJson (MorphableICP<pcl::PointNormal>& icp, const MorphableMode
           {"coefficients", coefficientsJson (model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
           {"residuals_mm", residualsJson (report, icp.getVertexResiduals ())},
           {"iterations", iterationsJson (report)},
-          {"termination", {{"reason", toString (report.termination)}, {"message", report.message}}}};
+          {"termination", {{"reason", toString (report.termination)}, {"message", report.message}}},
+          {"target_surface",
+           {{"smoothing", report.target_smoothing},
+            {"noise_ratio", std::isfinite (report.target_noise_ratio) ? nlohmann::json (report.target_noise_ratio)
+                                                                      : nlohmann::json (nullptr)}}}};
 }
 
 } // namespace morphreg

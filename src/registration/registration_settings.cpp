@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "../common/number_text.h"
 
 #include <morphreg/common/error.h>
@@ -46,12 +47,21 @@ parseRobustLoss (const std::string& name)
   throw InvalidInputError ("registration setting loss = \"" + name + "\" is none of none, huber, tukey");
 }
 
+TargetSmoothing
+parseTargetSmoothing (const std::string& name)
+{
+  if (name == "auto")
+    return TargetSmoothing::automatic;
+  if (name == "on")
+    return TargetSmoothing::on;
+  if (name == "off")
+    return TargetSmoothing::off;
+  throw InvalidInputError ("registration setting target_smoothing = \"" + name + "\" is none of auto, on, off");
+}
+
 void
 requireValidComponents (const std::vector<int>& components)
 {
-  if (components.empty ())
-    throw InvalidInputError ("registration setting components is empty: give one count for all regions, or one per "
-                             "region");
   for (int count : components)
     if (count < 0)
       throw InvalidInputError ("registration setting components has a negative count (" + std::to_string (count) + ")");
@@ -70,12 +80,13 @@ coarseToFine (const MorphableICP<pcl::PointNormal>& icp, const MorphableModel& m
           {model.firstComponents (counts), settings.refinement_smoothness, settings.refinement_prior}};
 }
 
-/** The rejectors \a settings turn on, after the target-boundary rejector (a chain replaces MorphableICP's default
- *  one, which is that rejector alone, so it stays first). */
+/** The rejectors \a settings turn on, after the target-boundary and normal-compatibility rejectors (a chain replaces
+ *  MorphableICP's default one, which is those two, so they stay first). */
 void
 addRejectors (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings)
 {
   icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
+  icp.addCorrespondenceRejector (icp.getNormalCompatibilityRejector ());
   if (settings.reject_distance > 0.0) {
     auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
     rejector->setMaximumDistance (static_cast<float> (settings.reject_distance));
@@ -114,6 +125,7 @@ requireValidSettings (const RegistrationSettings& settings)
   requireInRange (settings.reject_distance, 0.0, HUGE_VAL, "reject_distance");
   requireInRange (settings.reject_median, 0.0, HUGE_VAL, "reject_median");
   requireInRange (settings.reject_trimmed, 0.0, 1.0, "reject_trimmed");
+  parseTargetSmoothing (settings.target_smoothing);
   if (settings.units != "auto")
     parseLengthUnit (settings.units);
 }
@@ -124,13 +136,7 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
 {
   requireValidSettings (settings);
   icp.setModel (model);
-  const std::vector<int>& counts = settings.components;
-  if (counts.size () > 1 && counts.size () != static_cast<std::size_t> (model->numRegions ()))
-    throw InvalidInputError ("registration setting components has " + std::to_string (counts.size ()) +
-                             " counts for a model with " + std::to_string (model->numRegions ()) +
-                             " regions: give one count for all regions, or one per region");
-  const std::vector<int> per_region =
-      counts.size () == 1 ? std::vector<int> (model->numRegions (), counts.front ()) : counts;
+  const std::vector<int> per_region = componentsPerRegion (settings, *model);
   icp.setComponentSelection (model->firstComponents (per_region));
   if (settings.refinement_prior)
     icp.setShapeSchedule (coarseToFine (icp, *model, per_region, settings));
@@ -142,9 +148,27 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
   icp.setShapePriorWeight (settings.shape_prior);
   icp.setAreaWeighting (settings.area_weighting);
   icp.setRobustLoss (parseRobustLoss (settings.loss), settings.loss_scale);
-  icp.setTargetSmoothing (settings.target_smoothing);
+  icp.setTargetSmoothing (parseTargetSmoothing (settings.target_smoothing));
   icp.setTargetUnit (LengthUnit::millimetre);
   addRejectors (icp, settings);
+}
+
+std::vector<int>
+componentsPerRegion (const RegistrationSettings& settings, const MorphableModel& model)
+{
+  const std::vector<int>& counts = settings.components;
+  const auto regions = static_cast<std::size_t> (model.numRegions ());
+  if (counts.size () > 1 && counts.size () != regions)
+    throw InvalidInputError ("registration setting components has " + std::to_string (counts.size ()) +
+                             " counts for a model with " + std::to_string (regions) +
+                             " regions: give one count for all regions, or one per region");
+  std::vector<int> per_region (regions);
+  for (std::size_t j = 0; j < regions; ++j) {
+    const auto available = static_cast<int> (model.region (static_cast<int> (j)).variances.size ());
+    per_region[j] = counts.empty () ? std::min (available, kMaxDefaultComponents)
+                                    : std::min (available, counts.size () == 1 ? counts.front () : counts[j]);
+  }
+  return per_region;
 }
 
 nlohmann::json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/surface_sampling.h>
@@ -32,24 +33,32 @@ surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted, const s
 {
   const SurfaceSamples samples =
       sampleSurfaceUniformly (target, settings.area_per_sample, settings.seed, excluded_target);
+  SurfaceDistance result = pointDistances (samples.points, fitted, settings.drop_boundary);
+  if (result.distances.empty ())
+    throw InvalidInputError ("surfaceDistance: every target sample reaches the fitted surface only at its boundary");
+  return result;
+}
+
+SurfaceDistance
+pointDistances (const Eigen::Matrix3Xd& points, const TriangleMesh& fitted, bool drop_boundary)
+{
   const TriangleLocator locator (fitted);
   SurfaceDistance result;
-  result.samples = static_cast<int> (samples.points.cols ());
-  std::vector<TriangleLocator::Hit> hits (samples.points.cols ());
+  result.samples = static_cast<int> (points.cols ());
+  std::vector<TriangleLocator::Hit> hits (points.cols ());
 #pragma omp parallel for schedule(static)
-  for (Eigen::Index i = 0; i < samples.points.cols (); ++i)
-    hits[static_cast<size_t> (i)] = locator.closestPoint (samples.points.col (i));
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    hits[static_cast<size_t> (i)] = locator.closestPoint (points.col (i));
   for (const auto& hit : hits) {
-    if (settings.drop_boundary && hit.on_boundary)
+    if (drop_boundary && hit.on_boundary)
       ++result.dropped_on_boundary;
     else {
       result.distances.push_back (hit.distance);
       result.fitted_triangles.push_back (hit.triangle);
     }
   }
-  if (result.distances.empty ())
-    throw InvalidInputError ("surfaceDistance: every target sample reaches the fitted surface only at its boundary");
-  summarise (result);
+  if (!result.distances.empty ())
+    summarise (result);
   return result;
 }
 

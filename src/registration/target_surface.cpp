@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/registration/target_surface.h>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace morphreg
 {
@@ -30,6 +32,42 @@ isBoundaryPoint (const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, c
     gap = std::max (gap, angles[k] - angles[k - 1]);
   return gap > 0.5 * M_PI;
 }
+
+double
+median (std::vector<double> values)
+{
+  std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
+  return values[values.size () / 2];
+}
+
+/** The noise of \a points over their neighbourhoods' radius (see kNoisyTargetRatio): the median over up to 500
+ *  points, spread evenly through the target's order, of each one's plane residual over its neighbourhood's radius. */
+double
+measureNoiseRatio (const Eigen::Matrix3Xd& points, const TargetSurface::NeighbourSearch& search, int neighbours)
+{
+  const Eigen::Index n = points.cols ();
+  const int k = std::min<int> (neighbours, static_cast<int> (n));
+  if (n < 4)
+    return 0.0;
+  const Eigen::Index step = std::max<Eigen::Index> (1, n / 500);
+  std::vector<double> ratios;
+  pcl::Indices indices;
+  std::vector<float> squared;
+  for (Eigen::Index i = 0; i < n; i += step) {
+    search (static_cast<pcl::index_t> (i), k, indices, squared);
+    Eigen::Matrix3Xd neighbourhood (3, indices.size ());
+    for (size_t j = 0; j < indices.size (); ++j)
+      neighbourhood.col (static_cast<Eigen::Index> (j)) = points.col (indices[j]);
+    const PointPlane plane = fitPlane (neighbourhood);
+    const double radius = squared.empty () ? 0.0 : std::sqrt (squared.back ());
+    if (!plane.normal.allFinite () || !(radius > 0.0))
+      continue;
+    const double residual = std::sqrt (
+        (plane.normal.transpose () * (neighbourhood.colwise () - plane.centroid)).squaredNorm () / indices.size ());
+    ratios.push_back (residual / radius);
+  }
+  return ratios.empty () ? 0.0 : median (ratios);
+}
 } // namespace
 
 void
@@ -41,7 +79,29 @@ TargetSurface::setInputTarget (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals
   raw_points_ = std::move (points);
   given_normals_ = std::move (normals);
   search_ = std::move (search);
+  centroid_ = raw_points_.cols () ? Eigen::Vector3d (raw_points_.rowwise ().mean ()) : Eigen::Vector3d::Zero ();
+  turnGivenNormalsOutwards ();
   reset ();
+}
+
+void
+TargetSurface::setViewpoint (std::optional<Eigen::Vector3d> viewpoint)
+{
+  viewpoint_ = viewpoint;
+  reset ();
+}
+
+void
+TargetSurface::turnGivenNormalsOutwards ()
+{
+  Eigen::Index inwards = 0, outwards = 0;
+  for (Eigen::Index i = 0; i < given_normals_.cols (); ++i) {
+    const double side = given_normals_.col (i).dot (raw_points_.col (i) - centroid_);
+    inwards += side < 0.0 ? 1 : 0;
+    outwards += side > 0.0 ? 1 : 0;
+  }
+  if (inwards > outwards)
+    given_normals_ = -given_normals_;
 }
 
 void
@@ -56,16 +116,37 @@ TargetSurface::setNeighbours (int k)
 }
 
 void
-TargetSurface::setSmoothing (bool enabled)
+TargetSurface::setSmoothing (TargetSmoothing smoothing)
 {
-  if (enabled != smoothing_)
+  if (smoothing != mode_)
     reset ();
-  smoothing_ = enabled;
+  mode_ = smoothing;
+}
+
+bool
+TargetSurface::getSmoothing ()
+{
+  decideSmoothing ();
+  return smoothing_;
+}
+
+void
+TargetSurface::decideSmoothing ()
+{
+  if (decided_)
+    return;
+  decided_ = true;
+  smoothing_ = mode_ == TargetSmoothing::on;
+  if (mode_ != TargetSmoothing::automatic || !search_)
+    return;
+  noise_ratio_ = measureNoiseRatio (raw_points_, search_, neighbours_);
+  smoothing_ = noise_ratio_ > kNoisyTargetRatio;
 }
 
 void
 TargetSurface::reset ()
 {
+  decided_ = false;
   const Eigen::Index n = raw_points_.cols ();
   points_.resize (3, n);
   normals_.setZero (3, n);
@@ -79,6 +160,7 @@ TargetSurface::compute (const pcl::Correspondences& correspondences)
 {
   if (!search_)
     throw InvalidInputError ("TargetSurface: no target (call setInputTarget)");
+  decideSmoothing ();
   std::vector<pcl::index_t> pending;
   for (const pcl::Correspondence& c : correspondences)
     if (!ready_[static_cast<size_t> (c.index_match)]) {
@@ -115,8 +197,13 @@ TargetSurface::computePoint (pcl::index_t i)
                         ? Eigen::Vector3d (point - plane.normal * plane.normal.dot (point - plane.centroid))
                         : point;
   Eigen::Vector3d normal = given_normals_.cols () ? Eigen::Vector3d (given_normals_.col (i)) : Eigen::Vector3d::Zero ();
-  if (!normal.allFinite () || normal.norm () < 1e-6)
+  if (!normal.allFinite () || normal.norm () < 1e-6) {
     normal = plane.normal;
+    const Eigen::Vector3d outwards =
+        viewpoint_ ? Eigen::Vector3d (*viewpoint_ - point) : Eigen::Vector3d (point - centroid_);
+    if (normal.dot (outwards) < 0.0)
+      normal = -normal;
+  }
   normal.normalize ();
   normals_.col (i) = normal;
   const bool has_normal = normal.allFinite ();

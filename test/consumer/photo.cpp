@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg::photo: a small RGB image written as PNG and read back (VTK's image IO inside the component), and the
 // closest point of a 2D polyline. Exit 0 on success.
 #include <morphreg/photo/polyline_2d.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The replay of the fuzz corpora and crash reproducers: the fuzz targets' sources (fuzz/) built into the normal
 # suite, without libFuzzer; the photo target needs the photo component.
 file(GLOB fuzz_target_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/fuzz/*.cpp")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Broken glTF files: each is refused by the loaders with a FormatError naming the file and the problem, never a
 // crash or an allocation the file cannot back (tinygltf and Draco see nothing unchecked).
 #include <morphreg/common/error.h>

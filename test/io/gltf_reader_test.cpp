@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg's glTF reader on files the tests write (test/support/glb_writer.h): node transforms, merged primitives,
 // strips, fans and points, .gltf with external and data-URI buffers, Draco, colours and textures, the loaders that
 // gain glTF through it; and broken files, each refused with the file and the problem named.

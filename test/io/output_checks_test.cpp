@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Output paths are checked before any work: a folder that is missing or not a folder, a path that is a folder, an
 // output that is one of the inputs (by another spelling or a hard link).
 #include <morphreg/common/error.h>

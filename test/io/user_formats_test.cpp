@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The formats users bring: iBUG-68 .pts files and ids, scalismo/BFM landmark JSON, STL and OFF scans, PLY files
 // with double coordinates.
 #include <morphreg/common/error.h>

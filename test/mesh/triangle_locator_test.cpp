@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Closest points on triangles and meshes (with the open-boundary flag), area-uniform surface samples and the flat
 // cap finder, on meshes with known answers.
 #include <morphreg/common/error.h>
@@ -133,7 +134,7 @@ TEST (SurfaceSamplingTest, SamplesAreUniformByAreaAndOnTheSurface)
                                  w[2] * mesh.vertices.col (mesh.triangles (2, t));
     ASSERT_LT ((foot - p).norm (), 1e-9) << "sample " << i << " lies on its triangle";
   }
-  EXPECT_NEAR (on_small, 100, 30);
+  EXPECT_NEAR (on_small, 100, 30); // a sampling tolerance: about 3 standard deviations of the binomial count (9.5)
   // Uniform inside a triangle: the sample mean is the centroid.
   const Eigen::Vector3d centroid = mesh.vertices.rightCols (3).rowwise ().mean ();
   Eigen::Vector3d mean = Eigen::Vector3d::Zero ();

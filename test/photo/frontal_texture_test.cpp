@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Texture from the frontal photo: the PNG/JPEG reader, visibility (facing, occlusion) on meshes whose answer is
 // known, and the colours of a fitted synthetic head.
 #include "photo_test_model.h"
+#include "support/accuracy_bound.h"
 #include "support/temp_directory.h"
 
 #include <morphreg/common/error.h>
@@ -144,8 +146,9 @@ TEST (FrontalTextureTest, FittedHeadTakesTheColoursAtItsLandmarks)
   const int facing = static_cast<int> ((normals.row (2).array () > 0.0).count ());
   std::cout << "visible from the front: " << texture.visibleCount () << " of " << facing << " facing the camera, "
             << fit.image_mesh.numVertices () << " in all\n";
+  // Measured: 2346 of 2431 (0.965).
   EXPECT_LE (texture.visibleCount (), facing);
-  EXPECT_GT (texture.visibleCount (), 0.9 * facing);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, static_cast<double> (texture.visibleCount ()) / facing, 0.957);
   EXPECT_LT (facing, 0.8 * fit.image_mesh.numVertices ());
 }
 } // namespace

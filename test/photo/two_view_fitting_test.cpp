@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // TwoViewFitting on photos simulated from synthetic heads with a known pose: accuracy against the true head, the
 // recovered similarity, the profile fit against the joint fit (approach 1), and bad input.
 #include "photo_test_model.h"
 
+#include "support/accuracy_bound.h"
 #include "support/expect_error.h"
 #include "support/temp_directory.h"
 
@@ -52,14 +54,20 @@ struct FitError
 };
 
 FitError
-fitError (const TwoViewFit& fit, const SimulatedPhotos& photos, const Eigen::Matrix3Xd& truth)
+fitError (const Eigen::Matrix3Xd& image_vertices, const SimulatedPhotos& photos, const Eigen::Matrix3Xd& truth)
 {
   const Eigen::Matrix3Xd back =
-      photos.rotation.transpose () * (fit.image_mesh.vertices.colwise () - photos.translation) / photos.scale;
+      photos.rotation.transpose () * (image_vertices.colwise () - photos.translation) / photos.scale;
   const Eigen::Matrix3Xd difference = back - truth;
   const double n = static_cast<double> (truth.cols ());
   return {std::sqrt (difference.colwise ().squaredNorm ().sum () / n),
           std::sqrt (difference.row (0).squaredNorm () / n)};
+}
+
+FitError
+fitError (const TwoViewFit& fit, const SimulatedPhotos& photos, const Eigen::Matrix3Xd& truth)
+{
+  return fitError (fit.image_mesh.vertices, photos, truth);
 }
 
 /** The similarity the fit should find: the known pose after the rigid map from the model frame to the head's. */
@@ -84,20 +92,48 @@ unseenHead (int index)
   return morphreg::test::headGenerator (morphreg::test::kPhotoResolution).sample (kUnseenSeed + index).mesh.vertices;
 }
 
-/** Asserts that \a fit's similarity is the known pose (in the model's frame) and prints the differences. */
-void
-expectPose (const TwoViewFit& fit, const SimulatedPhotos& photos)
+/** Figures of a test's fits over its heads: the mean and the largest vertex RMS against the truth (mm), the largest
+ *  image residuals (mm) and the largest pose errors (|scale ratio - 1|, degrees, mm); as bounds, their limits. */
+struct FitFigures
 {
-  const Eigen::Matrix4d expected = expectedSimilarity (photos);
-  const double expected_scale = std::cbrt (expected.topLeftCorner<3, 3> ().determinant ());
-  const Eigen::Matrix3d expected_rotation = expected.topLeftCorner<3, 3> () / expected_scale;
-  const double angle = Eigen::AngleAxisd (fit.rotation * expected_rotation.transpose ()).angle () * 180.0 / M_PI;
-  const double translation_mm = (fit.translation - expected.topRightCorner<3, 1> ()).norm () / expected_scale;
-  std::cout << "  similarity: scale ratio " << fit.scale / expected_scale << ", rotation error " << angle
-            << " deg, translation error " << translation_mm << " mm\n";
-  EXPECT_NEAR (fit.scale / expected_scale, 1.0, 0.02);
-  EXPECT_LT (angle, 1.5);
-  EXPECT_LT (translation_mm, 3.0);
+  double mean_rms = 0.0, worst_rms = 0.0, profile_rms = 0.0, landmark_rms = 0.0;
+  double scale = 0.0, angle = 0.0, translation = 0.0;
+
+  /** Adds one of \a heads fits, \a error against its truth; prints its pose against the known one. */
+  void
+  add (const TwoViewFit& fit, const FitError& error, const SimulatedPhotos& photos, int heads)
+  {
+    const Eigen::Matrix4d expected = expectedSimilarity (photos);
+    const double expected_scale = std::cbrt (expected.topLeftCorner<3, 3> ().determinant ());
+    const Eigen::Matrix3d expected_rotation = expected.topLeftCorner<3, 3> () / expected_scale;
+    const double angle_deg = Eigen::AngleAxisd (fit.rotation * expected_rotation.transpose ()).angle () * 180.0 / M_PI;
+    const double translation_mm = (fit.translation - expected.topRightCorner<3, 1> ()).norm () / expected_scale;
+    std::cout << "  similarity: scale ratio " << fit.scale / expected_scale << ", rotation error " << angle_deg
+              << " deg, translation error " << translation_mm << " mm\n";
+    mean_rms += error.rms / heads;
+    worst_rms = std::max (worst_rms, error.rms);
+    profile_rms = std::max (profile_rms, fit.final_residuals.profile_rms);
+    landmark_rms = std::max (landmark_rms, fit.final_residuals.landmark_rms);
+    scale = std::max (scale, std::abs (fit.scale / expected_scale - 1.0));
+    angle = std::max (angle, angle_deg);
+    translation = std::max (translation, translation_mm);
+  }
+};
+
+/** Asserts each of \a measured within its bound in \a bounds, and each bound within 1.3x of its figure; a bound of 0
+ *  is not asserted (a profile-only fit has no landmark residual, and no pose from the profile alone is claimed). */
+void
+expectWithin (const FitFigures& measured, const FitFigures& bounds)
+{
+  const double FitFigures::*fields[] = {&FitFigures::mean_rms,     &FitFigures::worst_rms, &FitFigures::profile_rms,
+                                        &FitFigures::landmark_rms, &FitFigures::scale,     &FitFigures::angle,
+                                        &FitFigures::translation};
+  const char* names[] = {"mean vertex RMS",          "largest vertex RMS",  "largest profile RMS",
+                         "largest landmark RMS",     "largest scale error", "largest rotation error",
+                         "largest translation error"};
+  for (size_t k = 0; k < std::size (fields); ++k)
+    if (bounds.*fields[k] > 0.0)
+      EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, measured.*fields[k], bounds.*fields[k]) << names[k];
 }
 
 class PhotoFittingTest : public ::testing::Test
@@ -120,13 +156,15 @@ public:
     return std::make_shared<MorphableModel> (*morphreg::test::photoTestModel ().model);
   }
 
-  /** The mean head posed by the joint similarity stage alone: the error a fit without shape has. */
+  /** The no-op: the model's mean head carried by \a fit's own similarity, and scored as the fit is: the error of
+   *  the same pose without the fitted shape. */
   static FitError
-  meanHeadError (const SimulatedPhotos& photos, const Eigen::Matrix3Xd& truth)
+  meanHeadError (const TwoViewFit& fit, const SimulatedPhotos& photos, const Eigen::Matrix3Xd& truth)
   {
-    TwoViewFitting mean_only = fitting ();
-    mean_only.setIterations (20, 0);
-    return fitError (mean_only.fitJoint (photos.profile, photos.frontal), photos, truth);
+    const MorphableModel& model = *morphreg::test::photoTestModel ().model;
+    const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
+    const Eigen::Matrix4d pose = fit.similarity ();
+    return fitError ((pose.topLeftCorner<3, 3> () * mean).colwise () + pose.topRightCorner<3, 1> (), photos, truth);
   }
 };
 
@@ -139,53 +177,62 @@ printFit (const std::string& name, const TwoViewFit& fit, const FitError& error)
             << " iterations\n";
 }
 
-/** Fits photos of each of \a heads and asserts that the fits are far better than the mean head on average, better
- *  for every head and within a fixed bound, with small residuals and the known pose.
- */
+/** Fits photos of each of \a heads and asserts that the fits are within \a bounds, each better than the mean head,
+ *  and the mean head placed by the known pose beyond the bound on the mean vertex RMS. */
 void
-expectJointFitsBeatTheMeanHead (const std::string& name, const std::vector<Eigen::Matrix3Xd>& heads)
+expectJointFitsBeatTheMeanHead (const std::string& name, const std::vector<Eigen::Matrix3Xd>& heads,
+                                const FitFigures& bounds)
 {
-  double fit_sum = 0.0, mean_sum = 0.0;
-  for (size_t h = 0; h < heads.size (); ++h) {
+  FitFigures figures;
+  double mean_head = 0.0;
+  const int count = static_cast<int> (heads.size ());
+  for (int h = 0; h < count; ++h) {
     const SimulatedPhotos photos = photograph (heads[h], 100 + h);
     const TwoViewFit fit = PhotoFittingTest::fitting ().fitJoint (photos.profile, photos.frontal);
     const FitError error = fitError (fit, photos, heads[h]);
-    const FitError mean = PhotoFittingTest::meanHeadError (photos, heads[h]);
+    const FitError mean = PhotoFittingTest::meanHeadError (fit, photos, heads[h]);
     printFit (name + " " + std::to_string (h) + " joint", fit, error);
     std::cout << "  mean head: vertex RMS " << mean.rms << " mm (x " << mean.rms_x << " mm)\n";
-    EXPECT_LT (error.rms, 0.8 * mean.rms);
-    EXPECT_LT (error.rms, 3.0);
-    EXPECT_LT (fit.final_residuals.profile_rms, 1.0);
-    EXPECT_LT (fit.final_residuals.landmark_rms, 1.2);
-    expectPose (fit, photos);
-    fit_sum += error.rms;
-    mean_sum += mean.rms;
+    EXPECT_LT (error.rms, mean.rms) << name << " " << h;
+    figures.add (fit, error, photos, count);
+    mean_head += mean.rms / count;
   }
-  std::cout << name << "s: mean vertex RMS " << fit_sum / heads.size () << " mm, mean head " << mean_sum / heads.size ()
-            << " mm\n";
-  EXPECT_LT (fit_sum, 0.6 * mean_sum);
+  std::cout << name << "s: mean vertex RMS " << figures.mean_rms << " mm (largest " << figures.worst_rms
+            << "), mean head " << mean_head << " mm\n";
+  expectWithin (figures, bounds);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, mean_head, bounds.mean_rms);
 }
 
+// Within-model heads, measured: vertex RMS 0.67-1.87 mm (mean 1.14), profile RMS up to 0.162 mm, landmark RMS up to
+// 0.476 mm, scale within 0.36 %, rotation within 0.071 degrees, translation within 1.32 mm; the mean head (carried by each
+// fit's similarity) 2.45 mm.
 TEST_F (PhotoFittingTest, JointFitRecoversHeadsOfTheModelAndTheirPose)
 {
   const auto& generator = morphreg::test::headGenerator (morphreg::test::kPhotoResolution);
   std::vector<Eigen::Matrix3Xd> heads;
   for (int h = 0; h < kHeadsPerCase; ++h)
     heads.push_back (generator.sample (morphreg::test::kPhotoTrainingSeed + h).mesh.vertices);
-  expectJointFitsBeatTheMeanHead ("within-model head", heads);
+  expectJointFitsBeatTheMeanHead ("within-model head", heads, {1.3, 2.2, 0.19, 0.56, 0.0045, 0.085, 1.55});
 }
 
+// Unseen heads, measured: vertex RMS 0.88-1.32 mm (mean 1.13), profile RMS up to 0.258 mm, landmark RMS up to
+// 0.561 mm, scale within 0.50 %, rotation within 0.31 degrees, translation within 1.29 mm; the mean head 2.99 mm (per
+// head the fits reach 0.31-0.84x the mean head).
 TEST_F (PhotoFittingTest, JointFitOfUnseenHeadsIsFarBetterThanTheMeanHead)
 {
   std::vector<Eigen::Matrix3Xd> heads;
   for (int h = 0; h < kHeadsPerCase; ++h)
     heads.push_back (unseenHead (h));
-  expectJointFitsBeatTheMeanHead ("unseen head", heads);
+  expectJointFitsBeatTheMeanHead ("unseen head", heads, {1.3, 1.55, 0.3, 0.65, 0.006, 0.37, 1.5});
 }
 
+// Measured on the unseen heads: width (x) error 0.257 mm joint, 0.702 mm from the profile alone (the no-op for the
+// width: what the frontal landmarks add to), the mean head 1.27 mm; the profile-only fits' vertex RMS 1.60-2.20 mm
+// (mean 1.99; the mean head carried by their similarity 1.71-4.23 mm, mean 3.13), profile RMS up to 0.339 mm.
 TEST_F (PhotoFittingTest, FrontalLandmarksReduceTheWidthErrorTheProfileCannotSee)
 {
-  double profile_x = 0.0, joint_x = 0.0;
+  FitFigures profile_figures;
+  double profile_x = 0.0, joint_x = 0.0, mean_x = 0.0, mean_rms = 0.0;
   for (int h = 0; h < kHeadsPerCase; ++h) {
     const Eigen::Matrix3Xd truth = unseenHead (h);
     const SimulatedPhotos photos = photograph (truth, 100 + h);
@@ -193,57 +240,68 @@ TEST_F (PhotoFittingTest, FrontalLandmarksReduceTheWidthErrorTheProfileCannotSee
     const TwoViewFit joint = fitting ().fitJoint (photos.profile, photos.frontal);
     const FitError profile_error = fitError (profile, photos, truth);
     const FitError joint_error = fitError (joint, photos, truth);
+    const FitError mean = meanHeadError (profile, photos, truth);
     printFit ("unseen head " + std::to_string (h) + " profile only", profile, profile_error);
-    EXPECT_LT (profile_error.rms, meanHeadError (photos, truth).rms);
-    EXPECT_LT (profile.final_residuals.profile_rms, 1.0);
+    std::cout << "  mean head: vertex RMS " << mean.rms << " mm\n";
+    EXPECT_LT (profile_error.rms, mean.rms);
     EXPECT_EQ (profile.final_residuals.landmark_rms, 0.0);
+    profile_figures.add (profile, profile_error, photos, kHeadsPerCase);
     profile_x += profile_error.rms_x / kHeadsPerCase;
     joint_x += joint_error.rms_x / kHeadsPerCase;
+    mean_x += meanHeadError (joint, photos, truth).rms_x / kHeadsPerCase;
+    mean_rms += mean.rms / kHeadsPerCase;
   }
-  std::cout << "mean x (width) error: profile only " << profile_x << " mm, joint " << joint_x << " mm\n";
-  EXPECT_LT (joint_x, 0.8 * profile_x);
+  std::cout << "mean x (width) error: profile only " << profile_x << " mm, joint " << joint_x << " mm, mean head "
+            << mean_x << " mm\n";
+  expectWithin (profile_figures, {2.3, 2.6, 0.4, 0.0, 0.0, 0.0, 0.0});
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, mean_rms, 2.3);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, joint_x, 0.3);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, profile_x, 0.3);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, mean_x, 0.3);
 }
 
+// Measured on the unseen heads: TPS-ICP vertex RMS 1.06-2.04 mm (mean 1.45; width 0.360 mm against the profile
+// fit's 0.702 mm), profile RMS up to 0.323 mm, landmark RMS up to 0.539 mm, scale within 0.61 %, rotation within
+// 0.37 degrees, translation within 1.48 mm; joint 1.13 mm, profile only 1.99 mm; the mean head 3.04 mm. The defaults
+// also suit real photos; on this synthetic suite they stay within 5 % of the figures of settings tuned on it alone
+// (joint 1.23, TPS-ICP 1.42, profile 1.97 mm).
 TEST_F (PhotoFittingTest, TpsIcpFitsUnseenHeadsAndSeesTheWidth)
 {
-  FitError tps_sum, profile_sum;
-  double joint_sum = 0.0, mean_sum = 0.0;
+  FitFigures figures;
+  double tps_x = 0.0, profile_x = 0.0, profile_rms = 0.0, joint_rms = 0.0, mean_rms = 0.0;
   for (int h = 0; h < kHeadsPerCase; ++h) {
     const Eigen::Matrix3Xd truth = unseenHead (h);
     const SimulatedPhotos photos = photograph (truth, 100 + h);
     const TwoViewFit fit = fitting ().fitTpsIcp (photos.profile, photos.frontal);
     const FitError error = fitError (fit, photos, truth);
     const FitError profile = fitError (fitting ().fitProfile (photos.profile), photos, truth);
-    const FitError mean = meanHeadError (photos, truth);
+    const FitError mean = meanHeadError (fit, photos, truth);
     printFit ("unseen head " + std::to_string (h) + " TPS-ICP", fit, error);
-    EXPECT_LT (error.rms, 0.8 * mean.rms);
-    EXPECT_LT (error.rms, 3.0);
-    EXPECT_LT (fit.final_residuals.profile_rms, 1.0);
-    EXPECT_LT (fit.final_residuals.landmark_rms, 1.2);
-    expectPose (fit, photos);
+    EXPECT_LT (error.rms, mean.rms);
     // The profile fit's iterations, then at least two rounds (the first one lowered the image residuals).
     ASSERT_GE (fit.history.size (), 3u);
     EXPECT_EQ (fit.history.back ().stage, morphreg::TwoViewStage::tps_icp);
     EXPECT_LT (fit.final_residuals.landmark_rms, fit.history[fit.history.size () - 2].landmark_rms + 1e-12);
-    tps_sum.rms += error.rms / kHeadsPerCase;
-    tps_sum.rms_x += error.rms_x / kHeadsPerCase;
-    profile_sum.rms += profile.rms / kHeadsPerCase;
-    profile_sum.rms_x += profile.rms_x / kHeadsPerCase;
-    mean_sum += mean.rms / kHeadsPerCase;
-    joint_sum += fitError (fitting ().fitJoint (photos.profile, photos.frontal), photos, truth).rms / kHeadsPerCase;
+    figures.add (fit, error, photos, kHeadsPerCase);
+    tps_x += error.rms_x / kHeadsPerCase;
+    profile_x += profile.rms_x / kHeadsPerCase;
+    profile_rms += profile.rms / kHeadsPerCase;
+    mean_rms += mean.rms / kHeadsPerCase;
+    joint_rms += fitError (fitting ().fitJoint (photos.profile, photos.frontal), photos, truth).rms / kHeadsPerCase;
   }
-  std::cout << "unseen heads, mean vertex RMS: TPS-ICP " << tps_sum.rms << " mm (x " << tps_sum.rms_x << " mm), joint "
-            << joint_sum << " mm, profile only " << profile_sum.rms << " mm (x " << profile_sum.rms_x
-            << " mm), mean head " << mean_sum << " mm\n";
-  EXPECT_LT (tps_sum.rms, 0.6 * mean_sum);
-  EXPECT_LT (tps_sum.rms_x, 0.8 * profile_sum.rms_x);
-  // The defaults also suit real photos; on this synthetic suite they stay within 5 % of the figures of settings
-  // tuned on it alone (joint 1.23, TPS-ICP 1.42, profile 1.97 mm): they reach 1.13, 1.45 and 1.99 mm.
-  EXPECT_LE (joint_sum, 1.05 * 1.23);
-  EXPECT_LE (tps_sum.rms, 1.05 * 1.42);
-  EXPECT_LE (profile_sum.rms, 1.05 * 1.97);
+  std::cout << "unseen heads, mean vertex RMS: TPS-ICP " << figures.mean_rms << " mm (x " << tps_x << " mm), joint "
+            << joint_rms << " mm, profile only " << profile_rms << " mm (x " << profile_x << " mm), mean head "
+            << mean_rms << " mm\n";
+  expectWithin (figures, {1.05 * 1.42, 2.4, 0.38, 0.63, 0.0072, 0.43, 1.7});
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, tps_x, 0.42);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, joint_rms, 1.05 * 1.23);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, profile_rms, 1.05 * 1.97);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, mean_rms, 1.05 * 1.42);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, profile_x, 0.42);
 }
 
+// Measured: vertex RMS 0.92-1.34 mm (mean 1.15) without the sagittal rows, 7.04 mm with them; scale within 0.51 %,
+// rotation within 0.34 degrees, translation within 1.29 mm; the mean head 3.00 mm.
 TEST_F (PhotoFittingTest, TurnedAndTiltedHeadsFitWithoutTheSagittalRows)
 {
   // The head also turns and tilts by 3 degrees: its sagittal plane is not X = 0, so the joint fit drops the profile
@@ -253,7 +311,8 @@ TEST_F (PhotoFittingTest, TurnedAndTiltedHeadsFitWithoutTheSagittalRows)
                      Eigen::AngleAxisd (3.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ ()))
                         .toRotationMatrix () *
                     camera.rotation;
-  double with_rows = 0.0, without_rows = 0.0;
+  FitFigures figures;
+  double with_rows = 0.0, mean_rms = 0.0;
   for (int h = 0; h < kHeadsPerCase; ++h) {
     const Eigen::Matrix3Xd truth = unseenHead (h);
     const SimulatedPhotos photos = PhotoSimulator (camera).photograph (
@@ -264,15 +323,17 @@ TEST_F (PhotoFittingTest, TurnedAndTiltedHeadsFitWithoutTheSagittalRows)
     f.setSagittalWeight (0.0);
     const TwoViewFit fit = f.fitJoint (photos.profile, photos.frontal);
     const FitError error = fitError (fit, photos, truth);
+    const FitError mean = meanHeadError (fit, photos, truth);
     printFit ("turned head " + std::to_string (h) + " joint without sagittal rows", fit, error);
-    EXPECT_LT (error.rms, 0.8 * meanHeadError (photos, truth).rms);
-    EXPECT_LT (error.rms, 3.0);
-    expectPose (fit, photos);
-    without_rows += error.rms / kHeadsPerCase;
+    EXPECT_LT (error.rms, mean.rms);
+    figures.add (fit, error, photos, kHeadsPerCase);
+    mean_rms += mean.rms / kHeadsPerCase;
   }
-  std::cout << "turned heads: mean vertex RMS " << without_rows << " mm without the sagittal rows, " << with_rows
-            << " mm with them\n";
-  EXPECT_LT (without_rows, with_rows);
+  std::cout << "turned heads: mean vertex RMS " << figures.mean_rms << " mm without the sagittal rows, " << with_rows
+            << " mm with them, mean head " << mean_rms << " mm\n";
+  EXPECT_LT (figures.mean_rms, with_rows);
+  expectWithin (figures, {1.3, 1.55, 0.0, 0.0, 0.006, 0.4, 1.5});
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, mean_rms, 1.3);
 }
 
 TEST_F (PhotoFittingTest, HistoryAndReportShowTheStagesAndFallingResiduals)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The shared real scans (Lee Perry-Smith's mesh, the james capture with its texture, the demoface capture) written as
 // glTF by the tests' writer (plain, Draco, under a node transform, as two primitives, in an arbitrary unit) and read
 // back: the geometry is the original's to float precision (after the m to mm conversion, the node's transform and

@@ -1,8 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The real head-and-shoulders scan (82k points) resampled into the ICT topology: the ICT model (30 components per
 // region) fitted with `morphreg resample --components 30`'s registration (register's defaults), then ScanResampler; the face's coverage and the observed face
 // vertices' distance to the scan's own mesh, against the model-only fit's.
 #include "real_scan_support.h"
+#include "support/accuracy_bound.h"
 
+#include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/triangle_locator.h>
 #include <morphreg/registration/registration_settings.h>
 #include <morphreg/resampling/scan_resampler.h>
@@ -18,13 +21,6 @@ namespace
 using namespace morphreg::test;
 
 constexpr int kFaceVertices = 9409; ///< ICT's face: vertex ids below this
-
-double
-median (std::vector<double> values)
-{
-  std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
-  return values[values.size () / 2];
-}
 
 TEST (RealScanResamplingTest, Cloud82kIntoTheIctTopology)
 {
@@ -46,25 +42,33 @@ TEST (RealScanResamplingTest, Cloud82kIntoTheIctTopology)
   ASSERT_TRUE (result.mesh.vertices.allFinite ());
 
   const morphreg::TriangleLocator truth (leeHeadMesh ());
-  std::vector<double> resampled, model_only;
-  for (int v = 0; v < kFaceVertices; ++v) {
-    model_only.push_back (truth.closestPoint (fitted.vertices.col (v)).distance);
-    if (result.state[v] == morphreg::ResampledVertex::observed)
+  std::vector<double> resampled, model_only; // the observed face vertices, resampled and as the fit left them
+  for (int v = 0; v < kFaceVertices; ++v)
+    if (result.state[v] == morphreg::ResampledVertex::observed) {
       resampled.push_back (truth.closestPoint (result.mesh.vertices.col (v)).distance);
-  }
+      model_only.push_back (truth.closestPoint (fitted.vertices.col (v)).distance);
+    }
+  ASSERT_FALSE (resampled.empty ());
   const double face_coverage = static_cast<double> (resampled.size ()) / kFaceVertices;
+  const double median = morphreg::median (resampled), percentile95 = morphreg::percentile (resampled, 0.95);
+  const double model_median = morphreg::median (model_only);
   std::printf ("[ real resampling ] face coverage %.3f (%zu of %d), observed face vertices' distance to the scan mesh: "
-               "median %.3f mm (model-only fit: %.3f mm over all face vertices); whole head: coverage %.3f, %zu holes, "
-               "folded %d, rays %.3f s, fill %.3f s\n",
-               face_coverage, resampled.size (), kFaceVertices, median (resampled), median (model_only),
-               result.statistics.coverage, result.statistics.holes.size (), result.statistics.folded_triangles,
-               result.statistics.ray_seconds, result.statistics.fill_seconds);
+               "median %.3f mm, 95th percentile %.3f mm (the model-only fit there: median %.3f mm, 95th percentile "
+               "%.3f mm); whole head: coverage %.3f, %zu holes, folded %d, rays %.3f s, fill %.3f s\n",
+               face_coverage, resampled.size (), kFaceVertices, median, percentile95, model_median,
+               morphreg::percentile (model_only, 0.95), result.statistics.coverage, result.statistics.holes.size (),
+               result.statistics.folded_triangles, result.statistics.ray_seconds, result.statistics.fill_seconds);
   // Required: at least 90 % of the face observed, observed median <= 0.3 mm. The misses are ICT's creases the scan
   // does not have (eyelid margins, nostrils, the lips' line, the ears' folds): their rays meet the scan at a grazing
   // angle or against its normal, or land on the one surface the scan has there and would turn their triangles over.
-  // The folds counted against the fit are mostly those creases flattened onto the scan.
-  EXPECT_GE (face_coverage, 0.9);
-  EXPECT_LE (median (resampled), 0.3);
-  EXPECT_LT (median (resampled), median (model_only)) << "the resampled face carries the scan's own detail";
+  // The folds counted against the fit are mostly those creases flattened onto the scan. Measured: face coverage
+  // 0.915 (whole head 0.926), median 0.053 mm, 95th percentile 0.526 mm; the no-op, the model-only fit at the same
+  // vertices, median 0.465 mm, 95th percentile 1.90 mm.
+  EXPECT_PRED_FORMAT2 (tightLowerBound, face_coverage, 0.9);
+  EXPECT_PRED_FORMAT2 (tightLowerBound, result.statistics.coverage, 0.91);
+  EXPECT_PRED_FORMAT2 (tightUpperBound, median, 0.065);
+  EXPECT_PRED_FORMAT2 (tightUpperBound, percentile95, 0.62);
+  EXPECT_PRED_FORMAT2 (noOpFailsUpperBound, model_median, 0.065);
+  EXPECT_PRED_FORMAT2 (noOpFailsUpperBound, morphreg::percentile (model_only, 0.95), 0.62);
 }
 } // namespace

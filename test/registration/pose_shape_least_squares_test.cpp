@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The solver, the convergence rules and the boundary rejector on small problems with known answers.
 #include <morphreg/common/error.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The checks around a registration: scans that cannot be registered, and fits that are not believable.
 #include "../support/synthetic_heads.h"
 
@@ -46,39 +47,69 @@ TEST (ScanChecksTest, RejectsScansThatCannotBeRegistered)
 
 TEST (FitPlausibilityTest, NamesEveryFailedCheck)
 {
-  const Eigen::Matrix3Xd head = morphreg::test::headGenerator (20).sample (1).mesh.vertices;
-  const Eigen::VectorXd residuals = Eigen::VectorXd::Constant (head.cols (), 0.5);
-  const Eigen::VectorXd coefficients = Eigen::VectorXd::Constant (10, 1.0);
-  morphreg::IcpReport report;
-  report.fitness_median = 0.5;
-  const auto good = morphreg::checkFitPlausibility (1.0, head, residuals, coefficients, report);
-  EXPECT_TRUE (good.plausible);
-  EXPECT_TRUE (good.failures.empty ());
+  const morphreg::FitMeasures good;
+  EXPECT_TRUE (morphreg::checkFitPlausibility (good).plausible);
+  EXPECT_TRUE (morphreg::checkFitPlausibility (good).failures.empty ());
 
-  Eigen::VectorXd sparse = Eigen::VectorXd::Constant (head.cols (), std::nan (""));
-  sparse.head (head.cols () / 10).setConstant (0.5);
-  Eigen::VectorXd wild = coefficients;
-  wild[3] = -6.5;
-  Eigen::Matrix3Xd flat = head;
-  flat.row (2) *= 0.05;
-  report.fitness_median = 12.0;
-  report.divergence = morphreg::IcpDivergence::unsolvable;
-  report.message = "the normal equations could not be solved";
-  const auto bad = morphreg::checkFitPlausibility (0.001, flat, sparse, wild, report);
-  EXPECT_FALSE (bad.plausible);
-  ASSERT_EQ (bad.failures.size (), 6u);
-  for (const char* text : {"scale 0.001", "% of the model has correspondences", "6.5 standard deviations",
-                           "collapsed or flat", "12 mm from the scan", "normal equations"}) {
+  morphreg::FitMeasures bad;
+  bad.scale = 0.001;
+  bad.correspondence_share = 0.1;
+  bad.largest_sigma = 12.5;
+  bad.thickness_ratio = 0.05;
+  bad.median_residual = 12.0;
+  bad.explained_share = 0.31;
+  bad.scored_points = 17000;
+  bad.folded_share = 0.2;
+  bad.divergence = morphreg::IcpDivergence::unsolvable;
+  bad.divergence_message = "the normal equations could not be solved";
+  const auto verdict = morphreg::checkFitPlausibility (bad);
+  EXPECT_FALSE (verdict.plausible);
+  ASSERT_EQ (verdict.failures.size (), 8u);
+  for (const char* text : {"scale 0.001", "10 % of the model has correspondences", "12.5 standard deviations",
+                           "collapsed or flat", "12 mm from the scan", "explains 31 % of the 17000 scan points",
+                           "folds over itself: 20 % of its area", "normal equations"}) {
     bool found = false;
-    for (const std::string& failure : bad.failures)
+    for (const std::string& failure : verdict.failures)
       found = found || failure.find (text) != std::string::npos;
     EXPECT_TRUE (found) << "no failure says '" << text << "'";
   }
-  report = morphreg::IcpReport ();
-  report.divergence = morphreg::IcpDivergence::cost_rose;
-  EXPECT_TRUE (morphreg::checkFitPlausibility (1.0, head, residuals, coefficients, report).plausible)
+  morphreg::FitMeasures settled;
+  settled.divergence = morphreg::IcpDivergence::cost_rose;
+  EXPECT_TRUE (morphreg::checkFitPlausibility (settled).plausible)
       << "a rising cost ends a settled fit: the best state is returned";
-  EXPECT_THROW (morphreg::checkFitPlausibility (1.0, head, residuals.head (5), coefficients, report),
+  settled.divergence = morphreg::IcpDivergence::prior_exceeded;
+  EXPECT_TRUE (morphreg::checkFitPlausibility (settled).plausible)
+      << "a coefficient leaving the prior ends the fit at its best state, which the other checks judge";
+}
+
+TEST (FitPlausibilityTest, MeasuresTheScanExplainedAndFoldedTriangles)
+{
+  const morphreg::TriangleMesh head = morphreg::test::headGenerator (20).sample (1).mesh;
+  const Eigen::VectorXd mean = Eigen::Map<const Eigen::VectorXd> (head.vertices.data (), head.vertices.size ());
+  const auto model_pointer = morphreg::MorphableModel::fromGlobalPca (
+      head.triangles, mean, Eigen::MatrixXd::Zero (mean.size (), 0), Eigen::VectorXd ());
+  const morphreg::MorphableModel& model = *model_pointer;
+  const Eigen::VectorXd residuals = Eigen::VectorXd::Constant (head.numVertices (), 0.5);
+  const morphreg::IcpReport report;
+  const morphreg::ComponentSelection none = model.firstComponents (0);
+  // The scan: the head's own vertices, half of them pushed 20 mm outwards (unexplained).
+  Eigen::Matrix3Xd scan = head.vertices;
+  const Eigen::Vector3d centre = head.vertices.rowwise ().mean ();
+  for (Eigen::Index i = 0; i < scan.cols (); i += 2)
+    scan.col (i) += 20.0 * (scan.col (i) - centre).normalized ();
+  const auto measures = morphreg::measureFit (model, none, Eigen::VectorXd (), Eigen::Matrix4d::Identity (),
+                                              head.vertices, residuals, scan, report, 5);
+  EXPECT_NEAR (measures.explained_share, 0.5, 0.03);
+  EXPECT_GT (measures.scored_points, head.numVertices () / 2);
+  EXPECT_EQ (measures.folded_share, 0.0);
+  // The same head mirrored through its centre turns every triangle over.
+  const Eigen::Matrix3Xd mirrored = (-(head.vertices.colwise () - centre)).colwise () + centre;
+  const auto folded = morphreg::measureFit (model, none, Eigen::VectorXd (), Eigen::Matrix4d::Identity (), mirrored,
+                                            residuals, Eigen::Matrix3Xd (), report, 5);
+  EXPECT_GT (folded.folded_share, 0.99);
+  EXPECT_EQ (folded.explained_share, 1.0) << "no scan: nothing to explain";
+  EXPECT_THROW (morphreg::measureFit (model, none, Eigen::VectorXd (), Eigen::Matrix4d::Identity (), head.vertices,
+                                      residuals.head (5), scan, report, 5),
                 InvalidInputError);
 }
 

@@ -1,5 +1,6 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The bad-input catalogue (CliTest.BadInput.*): files and arguments a hostile or careless user gives each subcommand.
-# Every case runs in its own folder with copies of its inputs (test/scripts/cli/expect_bad_input.cmake) and asserts
+# Every case runs in its own folder with copies of its inputs (CASE_DIR of test/support/command_test.cmake) and asserts
 # the exit code, that stderr names the file or option and the problem, that the inputs are unchanged and that no
 # output, whole or partial, is left. It uses the small synthetic population and model of cli.cmake.
 if(NOT TARGET morphreg_cli)
@@ -16,29 +17,19 @@ file(MAKE_DIRECTORY ${bad})
 # "@CASE@" in SETUP, ARGS and TEXT is the case's folder; the small population and model are its fixtures.
 function(morphreg_bad_input name code)
   cmake_parse_arguments(PARSE_ARGV 2 case "XVFB" "FORBID" "TEXT;SETUP;ARGS;WRAP;ENVIRONMENT")
-  set(command ${case_WRAP})
+  set(options "")
   if(case_XVFB)
-    if(NOT MORPHREG_XVFB)
-      return()
-    endif()
-    list(APPEND command ${MORPHREG_XVFB})
+    list(APPEND options XVFB)
   endif()
-  list(APPEND command $<TARGET_FILE:morphreg_cli> ${case_ARGS})
-  foreach(list command case_TEXT case_SETUP)
-    list(JOIN ${list} "|" ${list})
-  endforeach()
-  add_test(NAME CliTest.BadInput.${name}
-    COMMAND ${CMAKE_COMMAND} -DCASE_DIR=${bad_dir}/${name} "-DARGS=${command}" -DEXPECT_CODE=${code}
-            "-DEXPECT_TEXT=${case_TEXT}" "-DSETUP=${case_SETUP}" "-DFORBID_TEXT=${case_FORBID}"
-            -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/cli/expect_bad_input.cmake)
-  math(EXPR timeout "300 * ${MORPHREG_TEST_TIMEOUT_FACTOR}")
-  set_tests_properties(CliTest.BadInput.${name} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model" TIMEOUT ${timeout})
   if(case_ENVIRONMENT)
-    set_tests_properties(CliTest.BadInput.${name} PROPERTIES ENVIRONMENT_MODIFICATION "${case_ENVIRONMENT}")
+    list(APPEND options PROPERTIES ENVIRONMENT_MODIFICATION "${case_ENVIRONMENT}")
   endif()
-  if(case_XVFB)
-    set_tests_properties(CliTest.BadInput.${name} PROPERTIES RESOURCE_LOCK xvfb)
+  if(case_FORBID)
+    list(APPEND options FORBID "${case_FORBID}")
   endif()
+  morphreg_command_test(CliTest.BadInput.${name} EXPECT_CODE ${code} ERROR ${case_TEXT} CASE_DIR ${bad_dir}/${name}
+    SETUP ${case_SETUP} FIXTURES_REQUIRED "cli_small;cli_model" ${options}
+    COMMAND ${case_WRAP} $<TARGET_FILE:morphreg_cli> ${case_ARGS})
 endfunction()
 
 # Inputs copied into the cases: the population's files and the model.
@@ -137,10 +128,8 @@ morphreg_bad_input(RenderGltfCut 1 TEXT "cut.glb: " "the GLB header gives a leng
   ARGS render --mesh @CASE@/cut.glb --width 64 --height 64 --out @CASE@/render.png)
 morphreg_bad_input(ResampleGltfBadDraco 1 TEXT "bad_draco.glb: " "bad Draco payload" SETUP copy,${gltf_bad}/bad_draco.glb,@CASE@/bad_draco.glb ${model}
   ARGS resample --scan @CASE@/bad_draco.glb --model @CASE@/model.h5 --out @CASE@/resampled.ply)
-if(TEST CliTest.BadInput.RenderGltfCut)
-  set_property(TEST CliTest.BadInput.RenderGltfCut APPEND PROPERTY FIXTURES_REQUIRED cli_gltf)
-endif()
-set_property(TEST CliTest.BadInput.ResampleGltfBadDraco APPEND PROPERTY FIXTURES_REQUIRED cli_gltf)
+set_property(TEST CliTest.BadInput.RenderGltfCut CliTest.BadInput.ResampleGltfBadDraco APPEND PROPERTY
+             FIXTURES_REQUIRED cli_gltf)
 
 # --- Scans that cannot be registered (degenerate geometry) ------------------------------------------------------------
 set(one "1 2 3")

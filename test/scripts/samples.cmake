@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # SampleTest: each sample runs on small inputs, writes its files and prints figures within measured bounds; bad
 # arguments give the usage (exit 2) and bad files an error naming them (exit 1). See test/samples/run_sample.cmake.
 if(NOT TARGET sample_register_scan)
@@ -6,21 +7,28 @@ endif()
 set(sample_dir "${CMAKE_CURRENT_BINARY_DIR}/samples")
 
 # sample_test(<name> COMMAND ... [PATTERNS ...] [MAXIMA regex=>bound ...] [FILES ...] [EXIT_CODE n]
-#             [PROPERTIES ...]): the sample's outputs go to ${sample_dir}/<name>.
+#             [PROPERTIES ...] [REQUIRES_DATA ...] [XVFB]): the sample's outputs go to ${sample_dir}/<name>; run and checked by
+#             morphreg_command_test (test/support/command_test.cmake).
 function(sample_test name)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "EXIT_CODE" "COMMAND;PATTERNS;MAXIMA;FILES;PROPERTIES")
-  if(NOT DEFINED arg_EXIT_CODE)
-    set(arg_EXIT_CODE 0)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "XVFB" "EXIT_CODE" "COMMAND;PATTERNS;MAXIMA;FILES;PROPERTIES;REQUIRES_DATA")
+  file(MAKE_DIRECTORY ${sample_dir}/${name})
+  set(xvfb "")
+  if(arg_XVFB)
+    set(xvfb XVFB)
   endif()
-  set(definitions "-DOUT_DIR=${sample_dir}/${name}" "-DEXIT_CODE=${arg_EXIT_CODE}")
-  foreach(list COMMAND PATTERNS MAXIMA FILES)
-    string(REPLACE ";" "$<SEMICOLON>" escaped "${arg_${list}}")
-    list(APPEND definitions "-D${list}=${escaped}")
+  set(fixtures "")
+  foreach(kind REQUIRED SETUP)
+    list(FIND arg_PROPERTIES FIXTURES_${kind} index)
+    if(index GREATER -1)
+      math(EXPR value "${index} + 1")
+      list(GET arg_PROPERTIES ${value} fixture)
+      list(REMOVE_AT arg_PROPERTIES ${index} ${value})
+      list(APPEND fixtures FIXTURES_${kind} "${fixture}")
+    endif()
   endforeach()
-  add_test(NAME SampleTest.${name}
-    COMMAND ${CMAKE_COMMAND} ${definitions} -P ${CMAKE_CURRENT_SOURCE_DIR}/samples/run_sample.cmake)
-  math(EXPR timeout "120 * ${MORPHREG_TEST_TIMEOUT_FACTOR}")
-  set_tests_properties(SampleTest.${name} PROPERTIES TIMEOUT ${timeout} ${arg_PROPERTIES})
+  morphreg_command_test(SampleTest.${name} COMMAND ${arg_COMMAND} EXPECT_CODE "${arg_EXIT_CODE}"
+    OUTPUT ${arg_PATTERNS} MAXIMA ${arg_MAXIMA} FILES ${arg_FILES} REQUIRES_DATA ${arg_REQUIRES_DATA} TIMEOUT 120
+    ${fixtures} ${xvfb} PROPERTIES ${arg_PROPERTIES})
 endfunction()
 
 # register_scan: a 30-head synthetic model and a scan of an unseen head (measured: vertex RMS 1.00 mm where the scan
@@ -78,9 +86,8 @@ sample_test(WarpHead
 sample_test(WarpBodyMissingFolderIsNamed
   COMMAND $<TARGET_FILE:sample_warp_body> ${sample_dir}/no_such_bodies
   EXIT_CODE 1 PATTERNS "no_such_bodies")
-if(EXISTS "${MORPHREG_SHARED_DATA_DIR}/makehuman_bodies")
-  set(bodies_out ${sample_dir}/WarpBodyFemale)
-  sample_test(WarpBodyFemale
+set(bodies_out ${sample_dir}/WarpBodyFemale)
+sample_test(WarpBodyFemale REQUIRES_DATA ${MORPHREG_SHARED_DATA_DIR}/makehuman_bodies
     COMMAND $<TARGET_FILE:sample_warp_body> ${MORPHREG_SHARED_DATA_DIR}/makehuman_bodies --out ${bodies_out}
             --subject caucasian-female-young
     PATTERNS "standing->seated +global +mean +[0-9.]+ mm +max +[0-9.]+ mm"
@@ -90,24 +97,18 @@ if(EXISTS "${MORPHREG_SHARED_DATA_DIR}/makehuman_bodies")
     FILES ${bodies_out}/caucasian-female-young_seated_global.ply ${bodies_out}/caucasian-female-young_seated_hard.ply
           ${bodies_out}/caucasian-female-young_seated_blended.ply
           ${bodies_out}/base_to_caucasian-female-young_blended.ply)
-endif()
 
 # The viewers render offscreen under a virtual X server, one server at a time.
-if(MORPHREG_XVFB)
-  set(xvfb ${MORPHREG_XVFB})
-  sample_test(LiveViewerWritesFrames
-    COMMAND ${xvfb} $<TARGET_FILE:sample_live_viewer> --frames ${sample_dir}/LiveViewerWritesFrames --iterations 4
-            --width 320 --height 240
-    PATTERNS "4 iterations" "wrote 4 frames \\(320x240\\)"
-    MAXIMA "fitness RMS ([0-9.]+) mm=>2.0" "error against the true head RMS ([0-9.]+) mm=>8.0"
-    FILES ${sample_dir}/LiveViewerWritesFrames/frame_000.png ${sample_dir}/LiveViewerWritesFrames/frame_003.png
-    PROPERTIES RESOURCE_LOCK xvfb)
-  sample_test(PopulationGalleryRenders
-    COMMAND ${xvfb} $<TARGET_FILE:sample_population_gallery> ${sample_dir}/PopulationGalleryRenders/heads.png 2
-    PATTERNS "wrote .*heads.png"
-    FILES ${sample_dir}/PopulationGalleryRenders/heads.png
-    PROPERTIES RESOURCE_LOCK xvfb)
-endif()
+sample_test(LiveViewerWritesFrames XVFB
+  COMMAND $<TARGET_FILE:sample_live_viewer> --frames ${sample_dir}/LiveViewerWritesFrames --iterations 4
+          --width 320 --height 240
+  PATTERNS "4 iterations" "wrote 4 frames \\(320x240\\)"
+  MAXIMA "fitness RMS ([0-9.]+) mm=>2.0" "error against the true head RMS ([0-9.]+) mm=>8.0"
+  FILES ${sample_dir}/LiveViewerWritesFrames/frame_000.png ${sample_dir}/LiveViewerWritesFrames/frame_003.png)
+sample_test(PopulationGalleryRenders XVFB
+  COMMAND $<TARGET_FILE:sample_population_gallery> ${sample_dir}/PopulationGalleryRenders/heads.png 2
+  PATTERNS "wrote .*heads.png"
+  FILES ${sample_dir}/PopulationGalleryRenders/heads.png)
 
 # fit_photos: photos of an unseen head fitted by a 30-head model, approach 1 (measured: vertex RMS 2.27 mm against the truth,
 # width 0.64 mm, scale within 0.8 %, profile 0.71 mm and landmark 0.76 mm RMS); then the files route with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A small glTF 2.0 writer for tests (the library only reads glTF): meshes of primitives (triangles, strips, points;
 // positions, normals, COLOR_0, TEXCOORD_0; optionally Draco-compressed with the draco library), a node hierarchy with

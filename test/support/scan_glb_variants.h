@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The glTF versions of a real scan the tests write (test/support/glb_writer.h): plain, Draco-compressed, under a node
 // transform, as two primitives, and in an arbitrary unit (a scale in the node), each with what reading it must give.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/synthetic/head_generator.h>
@@ -6,6 +7,7 @@
 #include <pcl/conversions.h>
 #include <pcl/kdtree/kdtree_flann.h>
 
+#include "support/accuracy_bound.h"
 #include "support/synthetic_heads.h"
 
 #include <gtest/gtest.h>
@@ -177,11 +179,12 @@ TEST (ScanSimulatorTest, HolesWhereScannersMiss)
   const double face = missedFraction (scan, [&] (int v) { return regions[v] == HeadRegion::cheeks; });
   std::cout << "missed: crown " << crown << ", under chin " << under_chin << ", nostrils " << nostrils
             << ", ear undersides " << under_ears << ", cheeks " << face << '\n';
-  EXPECT_GT (crown, 0.95);
-  EXPECT_GT (under_chin, 0.8);
-  EXPECT_GT (nostrils, 0.7);
-  EXPECT_GT (under_ears, 0.6);
-  EXPECT_LT (face, 0.05) << "the cheeks face the scanner";
+  // Measured: crown 1, under the chin 1, nostrils 0.833, ear undersides 0.727, cheeks 0.
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, crown, 1.0);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, under_chin, 1.0);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, nostrils, 0.8);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, under_ears, 0.67);
+  EXPECT_LT (face, 0.05) << "the cheeks face the scanner (none missed: no ratio applies to 0)";
 }
 
 TEST (ScanSimulatorTest, RangeMeshConnectsNeighbouringReturns)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/warp/articulated_warp.h>
@@ -5,13 +6,16 @@
 #include <morphreg/warp/limb_parts.h>
 #include <morphreg/warp/warp_quality.h>
 
+#include "support/accuracy_bound.h"
 #include "support/expect_error.h"
 #include "support/makehuman_data.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 using morphreg::ArticulatedWarp;
 using morphreg::Bone;
@@ -286,11 +290,23 @@ limbErrors (const TriangleMesh& source, const TriangleMesh& warped, const Triang
 }
 } // namespace
 
+// Standing to seated with the 51 major joints, the largest over the three bodies. Measured: mean 0.745 mm (0.656 and
+// 0.690 for the others), seam 0.066, shin 25.4 mm, upper arm 0.012 mm, thigh 40.1 mm. The identity warp (the
+// standing body as it is) lies 118.8-134.1 mm from the seated truth on average (thigh 538-608 mm, shin 562-633 mm). The upper arm stays still in the seated
+// truth: its bound guards the refinement against moving it, which the identity warp also meets.
+constexpr double kSeatedMean = 0.85, kSeatedSeam = 0.075, kSeatedShin = 30.0, kSeatedUpperArm = 0.015;
+// The target for the thigh is 30 mm; the buttock and crotch vertices nearest the thigh bones stay at 26 to 40
+// mm, against 120 to 150 mm for TPS. The seated truth is linear blend skinning with MakeHuman's painted weights, which
+// keep the buttocks with the pelvis and the groin with the thigh: at the same geodesic distances the true thigh weight
+// runs from 0.38 to 0.83, so no weight derived from them gets the base body under 37.6 mm.
+constexpr double kSeatedThigh = 42.0;
+
 TEST (ArticulatedWarpTest, RepostureStandingToSeatedWithMajorJoints)
 {
   REQUIRE_BODIES ();
   const morphreg::MakeHumanBodies bodies (bodiesDirectory ());
   const Skeleton skeleton = morphreg::makeHumanSkeleton ();
+  double mean = 0.0, seam = 0.0, thigh = 0.0, shin = 0.0, upper_arm = 0.0; // the largest over the bodies
   for (const auto& subject : bodies.subjects ()) {
     const TriangleMesh standing = bodies.loadMesh (subject, morphreg::BodyPose::standing);
     const TriangleMesh seated = bodies.loadMesh (subject, morphreg::BodyPose::seated);
@@ -309,18 +325,38 @@ TEST (ArticulatedWarpTest, RepostureStandingToSeatedWithMajorJoints)
     std::cout << "  folded triangles: standing " << morphreg::countFoldedTriangles (standing) << ", seated truth "
               << truth_folds << ", skinned " << morphreg::countFoldedTriangles (skinned) << ", refined "
               << morphreg::countFoldedTriangles (refined) << "\n";
-    EXPECT_LE (q.mean_error, 4.0) << subject;
-    EXPECT_LE (q.seam, 0.2) << subject;
     EXPECT_LE (morphreg::countFoldedTriangles (refined), truth_folds) << subject;
-    EXPECT_LE (parts[1].max_error, 30.0) << subject << ": shin";
-    EXPECT_LE (parts[2].max_error, 30.0) << subject << ": upper arm";
-    // The target for the thigh is 30 mm; the buttock and crotch vertices nearest the thigh bones stay at 26
-    // to 40 mm, against 120 to 150 mm for TPS. The seated truth is linear blend skinning with MakeHuman's painted
-    // weights, which keep the buttocks with the pelvis and the groin with the thigh: at the same geodesic distances
-    // the true thigh weight runs from 0.38 to 0.83, so no weight derived from them gets the base body under 37.6 mm.
-    EXPECT_LE (parts[0].max_error, 42.0) << subject << ": thigh";
     EXPECT_LT (parts[0].max_error, limbErrors (standing, skinned, seated, skeleton, source)[0].max_error + 1e-9)
         << subject << ": the refinement does not make the thigh worse";
+    mean = std::max (mean, q.mean_error);
+    seam = std::max (seam, q.seam);
+    thigh = std::max (thigh, parts[0].max_error);
+    shin = std::max (shin, parts[1].max_error);
+    upper_arm = std::max (upper_arm, parts[2].max_error);
+  }
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, mean, kSeatedMean);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, seam, kSeatedSeam);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, thigh, kSeatedThigh);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, shin, kSeatedShin);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, upper_arm, kSeatedUpperArm);
+}
+
+TEST (ArticulatedWarpTest, IdentityWarpFailsTheRepostureBounds)
+{
+  REQUIRE_BODIES ();
+  const morphreg::MakeHumanBodies bodies (bodiesDirectory ());
+  const Skeleton skeleton = morphreg::makeHumanSkeleton ();
+  for (const auto& subject : bodies.subjects ()) {
+    const TriangleMesh standing = bodies.loadMesh (subject, morphreg::BodyPose::standing);
+    const TriangleMesh seated = bodies.loadMesh (subject, morphreg::BodyPose::seated);
+    const LandmarkPositions source = bodies.namedJoints (subject, morphreg::BodyPose::standing, bodies.majorJoints ());
+    const auto q = morphreg::evaluateWarp (standing, seated, bodies.segmentLabels (), 100.0, &standing);
+    const auto parts = limbErrors (standing, standing, seated, skeleton, source);
+    std::cout << subject << " standing as it is, against seated:\n";
+    report ("identity", q, parts);
+    EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, q.mean_error, kSeatedMean) << subject;
+    EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, parts[0].max_error, kSeatedThigh) << subject;
+    EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, parts[1].max_error, kSeatedShin) << subject;
   }
 }
 
@@ -331,6 +367,8 @@ TEST (ArticulatedWarpTest, BetweenSubjectsWithJointsAndSurfaceLandmarks)
   const TriangleMesh base = bodies.loadMesh ("base", morphreg::BodyPose::standing);
   const LandmarkPositions source = bodies.namedJoints ("base", morphreg::BodyPose::standing, bodies.majorJoints ());
   const std::vector<int>& surface = bodies.surfaceVertices ();
+  double mean = 0.0, landmarks = 0.0;                              // the worst fit
+  double identity_mean = std::numeric_limits<double>::infinity (); // the best identity
   for (const auto& subject : bodies.subjects ()) {
     if (subject == "base")
       continue;
@@ -345,11 +383,22 @@ TEST (ArticulatedWarpTest, BetweenSubjectsWithJointsAndSurfaceLandmarks)
     const auto q = morphreg::evaluateWarp (warped, truth, bodies.segmentLabels (), 100.0, &base);
     std::cout << "base -> " << subject << " (51 joints + 16 surface landmarks):\n";
     report ("articulated", q, {});
-    // Rigid bones cannot change the body's girth or the length of a bone: between subjects the mean stays far
-    // above the 8 mm (with the same landmarks a TPS reaches 9.4-9.7 mm and the moving least squares warp
-    // 8.6-8.7 mm, MovingLeastSquaresWarpTest); the landmarks are followed.
+    double landmark = 0.0;
     for (std::size_t k = 0; k < surface.size (); ++k)
-      EXPECT_LT ((warped.vertices.col (surface[k]) - targets.col (static_cast<Eigen::Index> (k))).norm (), 1.0);
-    EXPECT_LE (q.mean_error, 30.0) << subject;
+      landmark =
+          std::max (landmark, (warped.vertices.col (surface[k]) - targets.col (static_cast<Eigen::Index> (k))).norm ());
+    const auto identity = morphreg::evaluateWarp (base, truth, bodies.segmentLabels (), 100.0, &base);
+    std::cout << "  surface landmarks within " << landmark << " mm; the base body as it is: mean "
+              << identity.mean_error << " mm\n";
+    landmarks = std::max (landmarks, landmark);
+    mean = std::max (mean, q.mean_error);
+    identity_mean = std::min (identity_mean, identity.mean_error);
   }
+  // Rigid bones cannot change the body's girth or the length of a bone: between subjects the mean stays far above the
+  // issue's 8 mm (with the same landmarks a TPS reaches 9.4-9.7 mm and the moving least squares warp 8.6-8.7 mm,
+  // MovingLeastSquaresWarpTest); the landmarks are followed. Measured: mean 20.3 and 27.6 mm, landmarks within
+  // 0.014 mm; the base body as it is 59.2 and 73.1 mm.
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, mean, 30.0);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, landmarks, 0.017);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, identity_mean, 30.0);
 }

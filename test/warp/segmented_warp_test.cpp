@@ -1,14 +1,17 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/warp/segmented_warp.h>
 #include <morphreg/warp/warp_quality.h>
 
+#include "support/accuracy_bound.h"
 #include "support/expect_error.h"
 #include "support/makehuman_data.h"
 #include "support/test_meshes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -67,6 +70,15 @@ compareWarps (const morphreg::MakeHumanBodies& bodies, const TriangleMesh& sourc
     warp.setSegmentBlendWidth (s, blend_widths[static_cast<std::size_t> (s)]);
   result.segmented = morphreg::evaluateWarp (warp.warp (source), truth, bodies.segmentLabels (), 100.0, &source);
   return result;
+}
+
+/** The mean error (mm) of the identity warp, \a source as it is, against \a truth: the no-op a warp must beat. */
+double
+identityMean (const morphreg::MakeHumanBodies& bodies, const TriangleMesh& source, const TriangleMesh& truth)
+{
+  const double mean = morphreg::evaluateWarp (source, truth, bodies.segmentLabels (), 100.0, &source).mean_error;
+  std::cout << "  identity (the source as it is): mean " << mean << " mm\n";
+  return mean;
 }
 
 void
@@ -208,10 +220,16 @@ TEST (SegmentedWarpTest, LandmarkSubsetsOverlapAcrossBorders)
 
 // --- The seed paper's use cases on the MakeHuman bodies (../shared/data/makehuman_bodies), in millimetres. ------
 
+// Standing to seated with the 51 major joints, the largest over the three bodies. Measured: global TPS mean 9.67 mm
+// (8.62, 8.78 for the others), segmented 5.09 mm (4.98, 4.55), segmented / global 0.578, seam 0.098 (the hard
+// segmentation's 1.12-2.24: blended / hard 0.072), band / global band 0.994; the identity warp 118.8-134.1 mm.
 TEST (SegmentedWarpTest, RepostureStandingToSeatedWithMajorJoints)
 {
   REQUIRE_BODIES ();
   const morphreg::MakeHumanBodies bodies (bodiesDirectory ());
+  constexpr double kSegmentedMean = 5.5;
+  double global = 0.0, segmented = 0.0, seam = 0.0, seam_share = 0.0, band_share = 0.0;
+  double identity = std::numeric_limits<double>::infinity ();
   for (const auto& subject : bodies.subjects ()) {
     const TriangleMesh standing = bodies.loadMesh (subject, morphreg::BodyPose::standing);
     const TriangleMesh seated = bodies.loadMesh (subject, morphreg::BodyPose::seated);
@@ -227,20 +245,32 @@ TEST (SegmentedWarpTest, RepostureStandingToSeatedWithMajorJoints)
     print ("segmented, blended 100/100/400/50 mm", c.segmented);
     std::cout << "  segmented / global: " << c.segmented.mean_error / c.global.mean_error << "\n";
     EXPECT_GE (c.global.mean_error, 8.0) << subject;
-    EXPECT_LE (c.global.mean_error, 10.0) << subject;
-    EXPECT_LE (c.segmented.mean_error, 5.5) << subject;
     EXPECT_LE (c.segmented.mean_error, 0.6 * c.global.mean_error) << subject;
-    EXPECT_LE (c.segmented.seam, 0.2) << subject;
-    EXPECT_LT (c.segmented.seam, 0.5 * c.hard.seam) << subject << ": blending removes the seam jump";
-    EXPECT_LE (c.segmented.band, 1.5 * c.global.band) << subject;
     EXPECT_EQ (c.segmented.folded_in_band, 0) << subject;
+    global = std::max (global, c.global.mean_error);
+    segmented = std::max (segmented, c.segmented.mean_error);
+    seam = std::max (seam, c.segmented.seam);
+    seam_share = std::max (seam_share, c.segmented.seam / c.hard.seam);
+    band_share = std::max (band_share, c.segmented.band / c.global.band);
+    identity = std::min (identity, identityMean (bodies, standing, seated));
   }
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, global, 10.0);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, segmented, kSegmentedMean);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, seam, 0.115);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, seam_share, 0.09) << "blending removes the seam jump";
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, band_share, 1.15);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, identity, kSegmentedMean);
 }
 
+// Standing to seated with the 51 joints and 16 surface vertices, the largest over the three bodies. Measured:
+// segmented 3.23 mm (2.81, 3.21 for the others), segmented / global 0.467, seam 0.148, band / global band 1.28; the
+// identity warp 118.8-134.1 mm.
 TEST (SegmentedWarpTest, RepostureWithSurfaceLandmarks)
 {
   REQUIRE_BODIES ();
   const morphreg::MakeHumanBodies bodies (bodiesDirectory ());
+  constexpr double kSegmentedMean = 3.7;
+  double segmented = 0.0, seam = 0.0, identity = std::numeric_limits<double>::infinity ();
   for (const auto& subject : bodies.subjects ()) {
     const TriangleMesh standing = bodies.loadMesh (subject, morphreg::BodyPose::standing);
     const TriangleMesh seated = bodies.loadMesh (subject, morphreg::BodyPose::seated);
@@ -261,12 +291,16 @@ TEST (SegmentedWarpTest, RepostureWithSurfaceLandmarks)
     std::cout << subject << " (51 joints + 16 surface vertices):\n";
     print ("global TPS", c.global);
     print ("segmented, blended 150 mm", c.segmented);
-    EXPECT_LE (c.segmented.mean_error, 4.0) << subject;
     EXPECT_LE (c.segmented.mean_error, 0.55 * c.global.mean_error) << subject;
-    EXPECT_LE (c.segmented.seam, 0.2) << subject;
     EXPECT_LE (c.segmented.band, 1.5 * c.global.band) << subject;
     EXPECT_EQ (c.segmented.folded_in_band, 0) << subject;
+    segmented = std::max (segmented, c.segmented.mean_error);
+    seam = std::max (seam, c.segmented.seam);
+    identity = std::min (identity, identityMean (bodies, standing, seated));
   }
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, segmented, kSegmentedMean);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, seam, 0.17);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, identity, kSegmentedMean);
 }
 
 TEST (SegmentedWarpTest, BetweenSubjectsWithAllJoints)
@@ -280,6 +314,7 @@ TEST (SegmentedWarpTest, BetweenSubjectsWithAllJoints)
   // only its own joints. In one global TPS the chest, breast and clavicle joints, whose displacement carries the
   // trunk's bulk, drag the arms that hang beside the trunk (arm vertices 6.2 mm global, 5.6 mm with their own joints).
   const double all = std::numeric_limits<double>::infinity ();
+  double global = 0.0, segmented = 0.0, identity = all; // the worst warps, the best identity
   for (const auto& subject : bodies.subjects ()) {
     if (subject == "base")
       continue;
@@ -290,14 +325,19 @@ TEST (SegmentedWarpTest, BetweenSubjectsWithAllJoints)
     print ("global TPS", c.global);
     print ("segmented (arms: own joints; trunk: all), blended 100 mm", c.segmented);
     // Female 8.15 mm global, 8.06 segmented; male 9.12 global, 8.86 segmented (the expected range for these
-    // bodies is 8.2-9.1 mm). The global warp's male error sits in soft tissue the joints do not see (calves, shoulders and
+    // bodies is 8.2-9.1 mm); the base body as it is 59.2 and 73.1 mm. The global warp's male error sits in soft tissue the joints do not see (calves, shoulders and
     // chest) and in vertices the male target slides along the thigh; leave-one-out over the joints picks exact
     // interpolation, so it is reported as it is, within the expected range.
-    EXPECT_LE (c.global.mean_error, 9.2) << subject;
-    EXPECT_LE (c.segmented.mean_error, 9.0) << subject;
     EXPECT_LT (c.segmented.mean_error, c.global.mean_error) << subject;
     EXPECT_LE (c.segmented.seam, c.global.seam) << subject << ": the seams add no edge-length jump of their own";
+    global = std::max (global, c.global.mean_error);
+    segmented = std::max (segmented, c.segmented.mean_error);
+    identity =
+        std::min (identity, identityMean (bodies, base, bodies.loadMesh (subject, morphreg::BodyPose::standing)));
   }
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, global, 9.2);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, segmented, 9.0);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, identity, 9.0);
 }
 
 TEST (SegmentedWarpTest, MakeHumanReaderRejectsBadFolders)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file atomic_file.h
  *  \brief Writing a file so that readers see it whole or not at all: written under a temporary name in the same

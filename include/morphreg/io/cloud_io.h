@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file cloud_io.h
  *  \brief Reading and writing point clouds (PCD, PLY, OBJ; STL, OFF and glTF/GLB meshes read as their vertices) of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file coloured_surface_io.h
  *  \brief A scan file's colours as a ColouredSurface, whatever its format: what registration and resampling sample

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file file_checks.h
  *  \brief Small checks shared by the readers and writers: clear errors before a library reader fails obscurely.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file file_format.h
  *  \brief Recognising a mesh or cloud file's format from its content, so that a file whose name lies (a PLY renamed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file file_validation.h
  *  \brief Structural checks of mesh and cloud files before PCL's or VTK's readers see them: the format recognised from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file gltf_reader.h
  *  \brief morphreg's reader of glTF 2.0 scans and meshes (.gltf with external or data-URI buffers, binary .glb), as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file json_file.h
  *  \brief Reading a JSON file with errors that name it (nlohmann-json, a public dependency of the package).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file landmark_io.h
  *  \brief Landmark files: MeshLab PickedPoints (.pp), JSON (.json: morphreg's or scalismo's array layout), CSV

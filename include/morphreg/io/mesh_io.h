@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mesh_io.h
  *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL; OFF, glTF and GLB read) on top of PCL's readers and
@@ -41,13 +42,31 @@ readObjFile (const std::string& path);
 void
 saveObjFile (const std::string& path, const pcl::PolygonMesh& mesh);
 
-/** \brief Saves \a mesh (.ply binary, .obj, .vtk), whole or not at all (written under a temporary name, checked to
- *  be complete, then renamed); throws IoError naming the file on failure, a full disk included.
+/** \brief Saves \a mesh (.ply binary with every vertex field, by morphreg's writer; .obj by saveObjFile; .vtk by
+ *  PCL), whole or not at all (written under a temporary name, checked to be complete, then renamed); throws IoError
+ *  naming the file on failure, a full disk included.
  *  \param[in] path the file; its extension chooses the format
  *  \param[in] mesh the mesh to write
  */
 void
 savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh);
+
+/** \brief Which of a mesh's per-vertex colours and "quality" scalar (toPolygonMesh) a format keeps. */
+struct SavedVertexData
+{
+  bool colours = false; ///< the rgb colours
+  bool quality = false; ///< the "quality" scalar
+};
+
+/** \brief What savePolygonMesh writes of a mesh's colours and quality in the format of \a path: .ply both (uchar red
+ *  green blue, float quality: MeshLab's vertex colour and quality), .obj the colours (v x y z r g b in [0, 1]), .vtk
+ *  the colours (COLOR_SCALARS; PCL's VTK writer keeps no other vertex data). Throws IoError naming \a path
+ *  for another extension.
+ *  \param[in] path the mesh file to be written
+ *  \return what it will carry
+ */
+SavedVertexData
+savedVertexData (const std::string& path);
 
 /** \brief Loads a triangle mesh (non-triangle polygons are an error) and validates it.
  *  \param[in] path the mesh file (as loadPolygonMesh())

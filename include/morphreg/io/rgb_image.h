@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file rgb_image.h
  *  \brief An 8-bit RGB image in memory (a photo, a scan's texture), read from PNG or JPEG (libpng, libjpeg) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_manifest.h
  *  \brief The list of scans of a study (`register --scans`, `build-model --from-scans`): a manifest CSV or a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file coloured_surface.h
  *  \brief A scan's surface with what colours it (per-point colours, or texture images at texture coordinates), and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file model_builder.h
  *  \brief Builds a (multi-region) MorphableModel from training meshes in correspondence (docs/method.md,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file frontal_texture.h
  *  \brief Per-vertex colours of a fitted head from its frontal photo: the orthographic projection of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_view_io.h
  *  \brief JSON files of the annotated photos of the two-view fit (layouts in README.md, "Photo annotations").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file two_view_fit.h
  *  \brief The result of a two-view (profile + frontal photo) fit of a morphable model, and its JSON report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file two_view_fitting.h
  *  \brief Fitting a morphable model to a profile and a frontal photo under orthographic projection

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file two_view_settings.h
  *  \brief The settings of a fit to two photographs by their command-line names (`morphreg fit-photos

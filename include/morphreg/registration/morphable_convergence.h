@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file morphable_convergence.h
  *  \brief When MorphableICP's phases stop, in the spirit of pcl::registration::DefaultConvergenceCriteria.

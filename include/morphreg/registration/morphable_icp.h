@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file morphable_icp.h
  *  \brief ICP with shape parameters (docs/method.md, "ICP with shape parameters"): registers a scan to a
@@ -6,6 +7,7 @@
 #include <morphreg/common/landmarks.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/registration/correspondence_rejection_normal_compatibility.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
 #include <morphreg/registration/morphable_convergence.h>
 #include <morphreg/registration/pose_shape_least_squares.h>
@@ -298,14 +300,57 @@ public:
     return boundary_rejector_;
   }
 
+  /** \brief Where the sensor of a one-view target stood (target frame and unit), which estimated target normals
+   *  face; unset (the default): the origin of an organised target cloud, else none, and estimated normals face away
+   *  from the target's centre (see TargetSurface::setViewpoint).
+   *  \param[in] viewpoint the sensor's position, or std::nullopt
+   */
+  void
+  setTargetViewpoint (std::optional<Eigen::Vector3d> viewpoint)
+  {
+    viewpoint_ = viewpoint;
+    target_prepared_ = false;
+  }
+
+  /** \brief Whether the default rejector chain also holds getNormalCompatibilityRejector (on by default) and its
+   *  largest angle between a model vertex's normal and its target point's (degrees, default 60).
+   *  \param[in] enabled whether the default chain rejects correspondences whose normals disagree
+   *  \param[in] max_angle_deg the largest angle kept (0 to 180)
+   */
+  void
+  setRejectIncompatibleNormals (bool enabled, double max_angle_deg = 60.0);
+
+  /** \brief The rejector of correspondences whose normals disagree, on this registration's target surface (its
+   *  normals given by the scan, or estimated and turned outwards: towards the sensor of an organised cloud, else away
+   *  from the scan's centre). After getTargetBoundaryRejector in the default chain; a chain of
+   *  addCorrespondenceRejector replaces the default, so add both to keep them.
+   *  \return the normal-compatibility rejector bound to this registration's target surface
+   */
+  CorrespondenceRejectorNormalCompatibility::Ptr
+  getNormalCompatibilityRejector () const
+  {
+    return normal_rejector_;
+  }
+
   /** \brief Residuals against each target point projected onto the least-squares plane of its neighbourhood
    *  (the k of setRejectTargetBoundary) instead of the raw point: scan noise then averages out instead of pulling
-   *  the model towards the nearest noisy points. On by default; the k-d tree still holds the raw points, and the
+   *  the model towards the nearest noisy points. Automatic by default: on for noisy targets (depth cameras), off for
+   *  clean ones, where a plane through a curved, sparsely sampled neighbourhood pulls the surface inwards (see
+   *  TargetSmoothing; the report says what was decided). The k-d tree still holds the raw points, and the
    *  correspondences' distances are measured to the smoothed points before any rejector sees them.
+   *  \param[in] smoothing on, off or automatic
+   */
+  void
+  setTargetSmoothing (TargetSmoothing smoothing);
+
+  /** \brief setTargetSmoothing with on (true) or off (false).
    *  \param[in] enabled false to use the raw target points
    */
   void
-  setTargetSmoothing (bool enabled);
+  setTargetSmoothing (bool enabled)
+  {
+    setTargetSmoothing (enabled ? TargetSmoothing::on : TargetSmoothing::off);
+  }
 
   /** \brief Stop and revert to the best state when a coefficient exceeds \a max_sigma prior standard deviations
    *  (<= 0: never; default 8) or, in a shape phase, the cost per row stayed above 1.05 times the phase's best for
@@ -537,6 +582,9 @@ private:
   bool area_weighting_ = false;
   Eigen::VectorXd vertex_area_weights_; ///< per model vertex, mean 1 (setModel)
   bool reject_boundary_ = true;
+  bool reject_incompatible_normals_ = true;
+  std::optional<Eigen::Vector3d> viewpoint_;        ///< setTargetViewpoint's
+  std::optional<Eigen::Vector3d> target_viewpoint_; ///< the viewpoint in force for the prepared target
   double max_sigma_ = 8.0;
   int rising_iterations_ = 3;
   LandmarkPositions landmarks_;
@@ -547,6 +595,7 @@ private:
   TargetSurface::Ptr target_surface_;
   bool target_prepared_ = false;
   CorrespondenceRejectorTargetBoundary::Ptr boundary_rejector_;
+  CorrespondenceRejectorNormalCompatibility::Ptr normal_rejector_;
   std::vector<pcl::registration::CorrespondenceRejector::Ptr> chain_; ///< the rejectors of this align()
   std::vector<PoseShapeRow> landmark_rows_;
 

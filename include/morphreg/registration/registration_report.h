@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_report.h
  *  \brief What a MorphableICP run did: why it stopped, every iteration, and the fit quality it reached.
  */
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -76,6 +78,8 @@ struct IcpReport
   int head_points = -1;                   ///< target points the global start found on the head (-1: not searched)
   std::string target_unit = "mm";         ///< the target's length unit (given or guessed); the fit ran in mm
   std::string target_unit_reason;         ///< why that unit: "given", or guessLengthUnit's sentence
+  bool target_smoothing = false;          ///< whether the target points were projected onto their local planes
+  double target_noise_ratio = NAN;        ///< the target's measured noise ratio (TargetSurface; NaN: not measured)
   /** \brief Accepted correspondences at the returned state, over which the fitness figures below are taken
    *  (scan-to-model distances in mm, whatever the target's unit). */
   int correspondences = 0;

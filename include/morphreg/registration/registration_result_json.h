@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_result_json.h
  *  \brief A finished MorphableICP fit as JSON: its verdict, similarity, coefficients per region, residuals,
@@ -15,8 +16,17 @@
 
 namespace morphreg
 {
-/** \brief The plausibility checks (checkFitPlausibility) of \a icp's finished fit of \a model, in mm; of the
- *  shape coefficients, each region's FitPlausibilitySettings::leading_components are held to the sigma limit.
+/** \brief The measures (measureFit) of \a icp's finished fit of \a model against its target, in mm whatever the
+ *  target's unit; of the shape coefficients, each region's FitPlausibilitySettings::leading_components are held to
+ *  the sigma limit.
+ *  \param[in] icp a registration after align()
+ *  \param[in] model the model it fitted
+ *  \return the measures
+ */
+FitMeasures
+measureRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model);
+
+/** \brief The plausibility checks (checkFitPlausibility) of measureRegistration's measures.
  *  \param[in] icp a registration after align()
  *  \param[in] model the model it fitted
  *  \return the verdict
@@ -32,7 +42,7 @@ nlohmann::json
 similarityJson (const Eigen::Matrix4d& transform);
 
 /** \brief The JSON of \a icp's finished fit of \a model: "status" ("ok" or "failed") and "checks"
- *  (checkRegistration), "initialisation", "similarity", "initial_similarity", "coefficients" (per region name),
+ *  (checkRegistration, with the measures), "initialisation", "similarity", "initial_similarity", "coefficients" (per region name),
  *  "residuals_mm" (scan to model over the correspondences; "per_vertex" statistics), "iterations" and
  *  "termination". Callers add what they know of the scan, the model file and the outputs.
  *  \param[in] icp a registration after align()

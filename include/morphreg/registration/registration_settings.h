@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_settings.h
  *  \brief The settings of a scan registration by their command-line names (`morphreg register --iterations ...`),
@@ -20,10 +21,12 @@ namespace morphreg
  *  '_' for '-'); the defaults are the command line's. */
 struct RegistrationSettings
 {
-  int iterations = 100;            ///< ICP iterations, similarity and shape stages together (>= 1)
-  int similarity_iterations = 60;  ///< at most this many fit the similarity alone (>= 1)
-  double max_distance = 0.0;       ///< max correspondence distance (mm, 0 = no limit)
-  std::vector<int> components{10}; ///< components per region: one count for all, or one per region
+  int iterations = 100;           ///< ICP iterations, similarity and shape stages together (>= 1)
+  int similarity_iterations = 60; ///< at most this many fit the similarity alone (>= 1)
+  double max_distance = 0.0;      ///< max correspondence distance (mm, 0 = no limit)
+  /** Components per region: one count for all, or one per region; empty (the default): every component the model
+   *  has, at most kMaxDefaultComponents per region. */
+  std::vector<int> components;
   bool point_to_plane = true;      ///< point-to-plane rows (false: point-to-point)
   double tangential_weight = 0.02; ///< point-to-point share kept along the tangent plane (0-1)
   double shape_prior = 3.0;        ///< lambda_2, the shape regulariser (>= 0)
@@ -36,7 +39,10 @@ struct RegistrationSettings
    *  (synthetic scans: vertex error 0.165 mm at 0.1, 0.138 mm at 1 to 10); a model whose regions cannot agree on the
    *  scan fits closer with less (ICT-FaceKit on the real Lee Perry-Smith scan: RMS 1.56 mm at 0.1, 1.71 mm at 1). */
   double refinement_smoothness = 1.0;
-  double landmark_weight = 1.0;   ///< one landmark counts as this many correspondences (>= 0)
+  /** One landmark counts as this many correspondences (>= 0). 0, the default: landmarks only place the start; the
+   *  surface fits the shape (hand-placed landmarks lie millimetres off the model's points, and contour ones such as
+   *  the jaw line mean other points on a scan than on the model). */
+  double landmark_weight = 0.0;
   bool area_weighting = false;    ///< weigh model vertices by their surface area
   std::string loss = "tukey";     ///< robust loss: none, huber or tukey
   double loss_scale = 0.0;        ///< robust loss width (mm, 0 = from the residuals' MAD)
@@ -44,12 +50,26 @@ struct RegistrationSettings
   double reject_median = 0.0;     ///< reject beyond this factor of the median distance (0 = off)
   bool reject_one_to_one = false; ///< keep the nearest of several model points sharing a scan point
   double reject_trimmed = 0.0;    ///< keep this share of the correspondences, the nearest (0 = off, else 0-1]
-  bool target_smoothing = true;   ///< fit to the scan points projected onto their neighbourhood's plane
-  std::string units = "auto";     ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
+  /** Fit to the scan points projected onto their neighbourhood's plane: "on", "off" or "auto" (on for noisy scans,
+   *  see TargetSmoothing). */
+  std::string target_smoothing = "auto";
+  std::string units = "auto"; ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
 };
 
 /** \brief The components per region of the first shape phase when RegistrationSettings::refinement_prior is set. */
 constexpr int kCoarseComponents = 10;
+
+/** \brief The most components per region that RegistrationSettings' default (every component) fits. */
+constexpr int kMaxDefaultComponents = 60;
+
+/** \brief The components per region that \a settings select in \a model: their counts, or the default.
+ *  Throws InvalidInputError if the counts are neither one nor one per region.
+ *  \param[in] settings the settings
+ *  \param[in] model the model to fit
+ *  \return one count per region (at most what each region has)
+ */
+std::vector<int>
+componentsPerRegion (const RegistrationSettings& settings, const MorphableModel& model);
 
 /** \brief Throws InvalidInputError naming the first setting out of its range (see the fields) or the unknown loss or
  *  unit name.

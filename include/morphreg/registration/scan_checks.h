@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_checks.h
  *  \brief Checks that a scan can be registered at all, before any fitting: enough finite points spread in 3D.

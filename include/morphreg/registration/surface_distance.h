@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file surface_distance.h
  *  \brief How close a fitted model surface lies to a target surface without known correspondence, the accuracy
@@ -46,6 +47,17 @@ struct SurfaceDistance
 SurfaceDistance
 surfaceDistance (const TriangleMesh& target, const TriangleMesh& fitted, const std::vector<bool>& excluded_target = {},
                  const SurfaceDistanceSettings& settings = {});
+
+/** \brief Each of \a points (3 x N, mm) to the closest point of \a fitted, leaving out (with \a drop_boundary) the
+ *  points that reach it only at its open boundary: the distances and their statistics (zero when none is kept).
+ *  Throws InvalidInputError for an invalid mesh.
+ *  \param[in] points the points measured, e.g. a scan's
+ *  \param[in] fitted the fitted model surface (mm)
+ *  \param[in] drop_boundary leave out points whose closest fitted point lies on the fitted boundary
+ *  \return the kept points' distances (mm), the fitted triangle each lands on, and their statistics
+ */
+SurfaceDistance
+pointDistances (const Eigen::Matrix3Xd& points, const TriangleMesh& fitted, bool drop_boundary = true);
 
 /** \brief The statistics of the kept samples whose closest point lies on a fitted triangle flagged in
  *  \a triangles (one flag per fitted triangle), e.g. the face of a head model; \a distance as surfaceDistance

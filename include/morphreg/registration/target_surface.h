@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file target_surface.h
  *  \brief The registration target as a surface: per point its neighbourhood's plane, the point projected onto it
@@ -9,16 +10,31 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <functional>
+#include <optional>
 #include <memory>
 #include <vector>
 
 namespace morphreg
 {
+/** \brief Whether TargetSurface projects the target points onto their neighbourhood's plane. */
+enum class TargetSmoothing
+{
+  off,      ///< the raw points: clean scans, where a plane through a curved, sparse neighbourhood only pulls inwards
+  on,       ///< the projected points: noisy scans, whose noise then averages out
+  automatic ///< on when the target is noisy: its median plane residual is over kNoisyTargetRatio of the
+            ///< neighbourhood's radius (depth cameras: about 0.23; laser and photogrammetry scans: 0.02-0.12)
+};
+
+/** \brief The noise of a target above which automatic smoothing is on: the median, over points, of the RMS distance
+ *  of a point's k nearest neighbours from their plane over the distance to the k-th neighbour. */
+constexpr double kNoisyTargetRatio = 0.15;
+
 /** \brief Computed lazily, once per target point when it first becomes a correspondence: the \a k nearest
  *  neighbours' least-squares plane; the point projected onto it (with smoothing; scan noise then averages out instead
  *  of pulling a fit towards the nearest noisy points); the target's own normal where it has a valid one, else the
- *  plane's; and the boundary flag: the largest angular gap between the neighbours around the point, in that plane,
+ *  plane's, turned outwards (see setViewpoint); and the boundary flag: the largest angular gap between the neighbours around the point, in that plane,
  *  exceeds 90 degrees (hole borders, isolated outliers).
  */
 class TargetSurface
@@ -37,6 +53,14 @@ public:
   void
   setInputTarget (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, NeighbourSearch search);
 
+  /** \brief Where the sensor stood (the target's frame), or none: estimated normals are turned towards it, or
+   *  (without one) away from the target's centroid, so that normals agree in sign with a model's outward ones; given
+   *  normals are kept (all turned over when most of them point towards the centroid). Forgets what was computed.
+   *  \param[in] viewpoint the sensor's position, e.g. the origin of a depth camera's organised cloud
+   */
+  void
+  setViewpoint (std::optional<Eigen::Vector3d> viewpoint);
+
   /** \brief The neighbourhood size k (>= 4; default 20); forgets what was computed when it changes.
    *  \param[in] k the target points each plane is fitted to: more smooth more and flag fewer boundary points
    */
@@ -52,20 +76,37 @@ public:
     return neighbours_;
   }
 
-  /** \brief Project the points onto their neighbourhood's plane (default on); forgets what was computed when it
-   *  changes.
+  /** \brief Project the points onto their neighbourhood's plane: on, off or automatic (the default: on for a noisy
+   *  target, see TargetSmoothing); forgets what was computed when it changes.
+   *  \param[in] smoothing the mode
+   */
+  void
+  setSmoothing (TargetSmoothing smoothing);
+
+  /** \brief Project the points onto their neighbourhood's plane (true) or keep the raw points (false).
    *  \param[in] enabled true to average out scan noise, false to keep the raw points
    */
   void
-  setSmoothing (bool enabled);
+  setSmoothing (bool enabled)
+  {
+    setSmoothing (enabled ? TargetSmoothing::on : TargetSmoothing::off);
+  }
 
-  /** \brief Whether the points are projected onto their neighbourhood's plane.
+  /** \brief Whether the points are projected onto their neighbourhood's plane (for the automatic mode: what it
+   *  decided for this target, measuring its noise if not done yet).
    *  \return true if smoothing is on
    */
   bool
-  getSmoothing () const
+  getSmoothing ();
+
+  /** \brief The target's noise ratio (see kNoisyTargetRatio), measured on up to 500 points spread over the target;
+   *  NaN until measured (the automatic mode measures it on the first compute).
+   *  \return the ratio
+   */
+  double
+  getNoiseRatio () const
   {
-    return smoothing_;
+    return noise_ratio_;
   }
 
   /** \brief Computes the target points of \a correspondences (their index_match) not computed yet, and sets each
@@ -131,11 +172,24 @@ private:
   void
   computePoint (pcl::index_t index);
 
+  /** Turns every given normal over when most point towards the centroid (a scan written with inward normals). */
+  void
+  turnGivenNormalsOutwards ();
+
+  /** Measures the noise ratio and settles smoothing_ for the automatic mode (once per target). */
+  void
+  decideSmoothing ();
+
   Eigen::Matrix3Xd raw_points_;
   Eigen::Matrix3Xd given_normals_;
+  Eigen::Vector3d centroid_ = Eigen::Vector3d::Zero (); ///< of the raw points
+  std::optional<Eigen::Vector3d> viewpoint_;
   NeighbourSearch search_;
   int neighbours_ = 20;
-  bool smoothing_ = true;
+  TargetSmoothing mode_ = TargetSmoothing::automatic;
+  bool smoothing_ = false;   ///< what applies to this target (decided by decideSmoothing in the automatic mode)
+  bool decided_ = false;     ///< smoothing_ is settled for this target
+  double noise_ratio_ = NAN; ///< the target's noise over its neighbourhood's radius
   Eigen::Matrix3Xd points_;
   Eigen::Matrix3Xd normals_;
   std::vector<char> has_normal_;

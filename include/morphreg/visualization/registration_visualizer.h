@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_visualizer.h
  *  \brief Overlays of a registration on pcl::visualization::PCLVisualizer: target scan, fitted model, correspondences,

@@ -1,10 +1,9 @@
-# cmake -DARGS="program|arg|..." -DCHECK="check_scan_colours|mesh|folder" -P check_colours.cmake
-# Runs ARGS (a register or resample that must succeed: exit 0), then CHECK (check_scan_colours on a mesh it wrote).
-foreach(step ARGS CHECK)
-  string(REPLACE "|" ";" command "${${step}}")
-  execute_process(COMMAND ${command} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}${err}")
-  if(NOT code EQUAL 0)
-    message(FATAL_ERROR "${step} exited ${code}: ${command}")
-  endif()
-endforeach()
+# SPDX-License-Identifier: BSD-3-Clause
+# A check of run_command.cmake (CHECKS) with -DCHECKER=check_scan_colours -DMESH=mesh.ply -DSCAN_DIR=folder: the
+# colours of the mesh the command wrote are the scan's (check_scan_colours, which says why when they are not).
+execute_process(COMMAND ${CHECKER} ${MESH} ${SCAN_DIR} RESULT_VARIABLE check_code OUTPUT_VARIABLE check_out
+                ERROR_VARIABLE check_err)
+message("${CHECKER}: exit ${check_code}\n${check_out}${check_err}")
+if(NOT check_code EQUAL 0)
+  fail("${MESH}: its colours are not the scan's (check_scan_colours exited ${check_code}: ${check_err})")
+endif()

@@ -1,42 +1,12 @@
-# cmake -DARGS="program|arg|..." -DREPORT=file.json -DMESH=resampled.ply -DFIT=fit.ply -DEXPECT_CODE=n
-#       [-DEXPECT_TEXT=text] [-DMIN_COVERAGE=c] -P check_resample.cmake
-# Runs `morphreg resample`. Exit 0 expected: the report's status and resampling status are "ok", the coverage is at
-# least MIN_COVERAGE, observed + filled vertices make up the model's, and the resampled and fitted meshes exist.
-# Any other code: stderr contains EXPECT_TEXT and none of the outputs is left behind.
-string(REPLACE "|" ";" command "${ARGS}")
-execute_process(COMMAND ${command} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("exit ${code}\nstdout: ${out}\nstderr: ${err}")
-if(NOT code STREQUAL "${EXPECT_CODE}")
-  message(FATAL_ERROR "expected exit code ${EXPECT_CODE}, got ${code}")
-endif()
-if(NOT EXPECT_CODE EQUAL 0)
-  string(FIND "${err}" "${EXPECT_TEXT}" found)
-  if(found EQUAL -1)
-    message(FATAL_ERROR "stderr does not contain '${EXPECT_TEXT}'")
-  endif()
-  foreach(output "${REPORT}" "${MESH}" "${FIT}")
-    if(EXISTS "${output}")
-      message(FATAL_ERROR "${output} was left behind by a failed run")
-    endif()
-  endforeach()
-  return()
-endif()
-foreach(output "${MESH}" "${FIT}")
-  if(NOT EXISTS "${output}")
-    message(FATAL_ERROR "${output} was not written")
-  endif()
-endforeach()
-file(READ "${REPORT}" json)
-string(JSON status GET "${json}" status)
-string(JSON resampling GET "${json}" resampling status)
-string(JSON coverage GET "${json}" resampling coverage)
-string(JSON vertices GET "${json}" resampling vertices)
-string(JSON observed GET "${json}" resampling observed)
-string(JSON filled GET "${json}" resampling filled)
-string(JSON holes GET "${json}" resampling hole_count)
+# SPDX-License-Identifier: BSD-3-Clause
+# A check of run_command.cmake (CHECKS) for a successful `morphreg resample` with -DMIN_COVERAGE=c: the resampling's
+# status is "ok", its coverage at least MIN_COVERAGE, and observed + filled vertices make up the model's.
+string(JSON resampling ERROR_VARIABLE missing GET "${json}" resampling status)
+string(JSON coverage ERROR_VARIABLE missing GET "${json}" resampling coverage)
+string(JSON vertices ERROR_VARIABLE missing GET "${json}" resampling vertices)
+string(JSON observed ERROR_VARIABLE missing GET "${json}" resampling observed)
+string(JSON filled ERROR_VARIABLE missing GET "${json}" resampling filled)
 math(EXPR total "${observed} + ${filled}")
-if(NOT status STREQUAL "ok" OR NOT resampling STREQUAL "ok" OR coverage LESS MIN_COVERAGE OR NOT total EQUAL vertices)
-  message(FATAL_ERROR "${REPORT}: status '${status}', resampling '${resampling}', coverage ${coverage} (at least "
-                      "${MIN_COVERAGE}), ${observed} observed + ${filled} filled of ${vertices} vertices")
+if(NOT resampling STREQUAL "ok" OR coverage LESS MIN_COVERAGE OR NOT total EQUAL vertices)
+  fail("${REPORT}: resampling '${resampling}', coverage ${coverage} (at least ${MIN_COVERAGE}), ${observed} observed + ${filled} filled of ${vertices} vertices")
 endif()
-message("${REPORT}: coverage ${coverage}, ${observed} observed, ${filled} filled in ${holes} holes")

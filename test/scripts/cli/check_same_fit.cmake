@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # cmake -DPROGRAM=morphreg -DMODEL=model.h5 -DORIGINAL=scan -DVERSIONS="a.glb|b.glb|..." -DOUT=folder
 #       -P check_same_fit.cmake
 # Registers ORIGINAL and each of VERSIONS (the same scan in other files) at register's defaults and passes when every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // check_scan_colours FIT.ply JAMES_DIR: passes (exit 0) when the fitted mesh of the james capture carries the person's
 // colours: at the cheeks, the nose tip and the chin (from the capture's 68 landmarks), the nearest fitted vertex has
 // the colour the photo that sees it best has there (projected with the capture's recovered cameras), and is

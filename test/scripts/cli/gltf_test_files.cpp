@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // gltf_test_files OUT_DIR [SHARED_DATA_DIR]: writes the glTF files of the command line's tests with the tests' own
 // writer (test/support/glb_writer.h): the bad-input catalogue's broken files (test/scripts/cli_catalogue.cmake), and,
 // when SHARED_DATA_DIR holds the real head scans, their glTF versions <scan>_<variant>.glb (test/scripts/gltf.cmake).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
 #include <morphreg/common/cloud_matrix.h>
@@ -61,6 +62,7 @@ MorphableICP<PointTarget, Scalar>::MorphableICP ()
   this->correspondence_estimation_.reset (new CachedCorrespondenceEstimation<PointTarget, PointTarget, Scalar>);
   target_surface_ = std::make_shared<TargetSurface> ();
   boundary_rejector_ = std::make_shared<CorrespondenceRejectorTargetBoundary> (target_surface_);
+  normal_rejector_ = std::make_shared<CorrespondenceRejectorNormalCompatibility> (target_surface_);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -177,9 +179,17 @@ MorphableICP<PointTarget, Scalar>::setRejectTargetBoundary (bool enabled, int ne
 
 template <typename PointTarget, typename Scalar>
 void
-MorphableICP<PointTarget, Scalar>::setTargetSmoothing (bool enabled)
+MorphableICP<PointTarget, Scalar>::setRejectIncompatibleNormals (bool enabled, double max_angle_deg)
 {
-  target_surface_->setSmoothing (enabled);
+  normal_rejector_->setMaximumAngle (max_angle_deg);
+  reject_incompatible_normals_ = enabled;
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setTargetSmoothing (TargetSmoothing smoothing)
+{
+  target_surface_->setSmoothing (smoothing);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -280,6 +290,9 @@ MorphableICP<PointTarget, Scalar>::alignInMillimetres (PointCloudSource& output,
 {
   const PointCloudTargetConstPtr user_target = this->target_;
   const LandmarkPositions user_landmarks = landmarks_;
+  const std::optional<Eigen::Vector3d> user_viewpoint = viewpoint_;
+  if (viewpoint_)
+    *viewpoint_ *= to_mm;
   typename PointCloudTarget::Ptr scaled (new PointCloudTarget (*user_target));
   for (auto& point : *scaled)
     point.getVector3fMap () *= static_cast<float> (to_mm);
@@ -290,6 +303,7 @@ MorphableICP<PointTarget, Scalar>::alignInMillimetres (PointCloudSource& output,
     scaled_guess.template topRows<3> () *= static_cast<Scalar> (to_mm);
   const auto restore = [&] () {
     landmarks_ = user_landmarks;
+    viewpoint_ = user_viewpoint;
     setInputTarget (user_target);
   };
   setInputTarget (scaled);
@@ -340,8 +354,10 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess)
   const Eigen::Matrix3Xd target = pointsOf (*this->target_);
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
   if (mode == IcpInitialisation::global) {
+    GlobalAlignmentSettings settings;
+    settings.viewpoint = target_viewpoint_;
     const GlobalAlignment found =
-        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normalsIfAny (*this->target_));
+        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normalsIfAny (*this->target_), settings);
     report_.initialisation_detail = found.method;
     report_.initialisation_confidence = found.confidence;
     report_.head_points = static_cast<int> (found.head_indices.size ());
@@ -373,11 +389,19 @@ MorphableICP<PointTarget, Scalar>::prepareEstimators ()
         [tree, cloud] (pcl::index_t i, int k, pcl::Indices& indices, std::vector<float>& squared) {
           tree->nearestKSearch ((*cloud)[i], k, indices, squared);
         });
+    // An organised cloud is one sensor's view: its estimated normals face that sensor.
+    const bool one_view = cloud->isOrganized () && !viewpoint_;
+    target_viewpoint_ =
+        one_view ? std::optional<Eigen::Vector3d> (cloud->sensor_origin_.template head<3> ().template cast<double> ())
+                 : viewpoint_;
+    target_surface_->setViewpoint (target_viewpoint_);
     target_prepared_ = true;
   }
   chain_ = this->correspondence_rejectors_;
   if (chain_.empty () && reject_boundary_)
     chain_.push_back (boundary_rejector_);
+  if (this->correspondence_rejectors_.empty () && reject_incompatible_normals_)
+    chain_.push_back (normal_rejector_);
   pcl::PCLPointCloud2::Ptr target_blob;
   for (const auto& rejector : chain_) {
     if (rejector->requiresTargetNormals () && !pcl::traits::has_normal_v<PointTarget>)
@@ -671,6 +695,8 @@ MorphableICP<PointTarget, Scalar>::finish (PoseShapeState state, const PoseShape
   for (size_t c = 0; c < final_ev.kept.size (); ++c)
     vertex_residuals_[final_ev.kept[c].index_query] = final_ev.distances[c];
   report_.correspondences = static_cast<int> (final_ev.kept.size ());
+  report_.target_smoothing = target_surface_->getSmoothing ();
+  report_.target_noise_ratio = target_surface_->getNoiseRatio ();
   if (!final_ev.distances.empty ()) {
     const Eigen::Map<const Eigen::VectorXd> d (final_ev.distances.data (), final_ev.distances.size ());
     report_.fitness_mean = d.mean ();

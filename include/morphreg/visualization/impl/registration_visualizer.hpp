@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/visualization/registration_visualizer.h>
