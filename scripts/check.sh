@@ -19,7 +19,7 @@ export LSAN_OPTIONS="suppressions=$ROOT/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 
 FUZZ_TARGETS=(model_h5 mesh_ply mesh_obj mesh_pcd mesh_vtk mesh_stl mesh_off landmarks_pp landmarks_json
-              landmarks_csv landmarks_pts photo_json npy skeleton_json photo_png photo_jpeg model_contents)
+              landmarks_csv landmarks_pts photo_json npy skeleton_json photo_png photo_jpeg model_contents mesh_glb mesh_gltf)
 
 install_missing() {
   local missing=()

@@ -14,8 +14,9 @@ PACKAGES=(
   libcli11-dev          # the command line
   libtinyxml2-dev       # MeshLab .pp landmark files
   libembree-dev         # Intel Embree: the scan resampler's ray casting
-  libpng-dev            # 16-bit depth images (register --depth), PNG photos
-  libjpeg-dev           # JPEG photos (fit-photos --photo)
+  libtinygltf-dev       # glTF 2.0 / GLB scans and meshes (a shared library in Debian, with its header)
+  libdraco-dev          # Draco-compressed glTF meshes (KHR_draco_mesh_compression)
+  libpng-dev libjpeg-dev  # PNG and JPEG images: photos, scan textures, 16-bit depth images (register --depth)
   xvfb xauth            # headless rendering for the visualiser and its tests
   python3 python3-h5py python3-numpy  # independent HDF5 writer used as a test fixture
   python3-dev pybind11-dev python3-pytest python3-open3d  # the Python module, its tests and its Open3D example

@@ -55,12 +55,13 @@ readMeshFolder (const std::string& directory)
   }
   for (const auto& entry : std::filesystem::directory_iterator (directory)) {
     const std::string ext = fileExtension (entry.path ().string ());
-    if (entry.is_regular_file () && (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl"))
+    if (entry.is_regular_file () &&
+        (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl" || ext == ".gltf" || ext == ".glb"))
       folder.files.push_back (entry.path ().string ());
   }
   std::sort (folder.files.begin (), folder.files.end ());
   if (folder.files.empty ())
-    throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl) in the folder");
+    throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl .gltf .glb) in the folder");
   return folder;
 }
 
@@ -292,7 +293,8 @@ registerBuildModelCommand (CLI::App& app)
   auto options = std::make_shared<BuildModelOptions> ();
   CLI::App* command =
       app.add_subcommand ("build-model", "build a (multi-region) PCA model from meshes in correspondence");
-  auto* meshes = command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable");
+  auto* meshes =
+      command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl .gltf .glb), repeatable");
   auto* directory = command->add_option ("-d,--dir", options->directory,
                                          "folder of meshes (the heads of its population.json if present)");
   command->add_option (

@@ -18,7 +18,7 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/frontal_texture.h>
 #include <morphreg/photo/photo_view_io.h>
-#include <morphreg/photo/rgb_image.h>
+#include <morphreg/io/rgb_image.h>
 #include <morphreg/photo/two_view_fitting.h>
 #include <morphreg/common/colour_map.h>
 

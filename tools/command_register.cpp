@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
-// optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
+// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours: the scan's or the residual; vertex
+// quality: the residual), a JSON report and optionally a screenshot of the fit; with --truth, the fit's vertex error
+// against the true mesh.
 #include "commands.h"
 #include "mesh_output.h"
 #include "option_checks.h"
@@ -8,6 +9,7 @@
 #include "progress.h"
 #include "display_inputs.h"
 #include "provenance.h"
+#include "scan_colours.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
@@ -15,6 +17,7 @@
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/depth_image_io.h>
+#include <morphreg/io/file_format.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
@@ -187,7 +190,9 @@ loadScan (const RegisterOptions& options)
   pcl::PointCloud<pcl::PointNormal>::Ptr scan;
   if (options.intrinsics.empty ())
     scan = loadCloud<pcl::PointNormal> (path);
-  else { // a depth image: its organised cloud in mm, no normals
+  else { // a depth image: its organised cloud in mm, no normals, no colours
+    if (options.colours == "scan")
+      throw InvalidInputError ("--colours scan with --depth " + path + ": a depth image has no colours");
     const DepthImage image = loadDepthPng (path);
     DepthIntrinsics camera = loadDepthIntrinsics (options.intrinsics);
     if (camera.width != image.width || camera.height != image.height)
@@ -218,6 +223,11 @@ convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const
 {
   if (!options.intrinsics.empty () && options.units != "auto" && options.units != "mm")
     throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    out << "units: " << options.scan << " is " << fileFormatName (format) << ", whose unit is the "
+        << toString (*file_unit) << " by specification: converted to mm on reading (x" << millimetresPer (*file_unit)
+        << ")\n";
   const std::string units = options.intrinsics.empty () ? options.units : "mm";
   const LengthUnitGuess unit =
       morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
@@ -306,9 +316,28 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
 nlohmann::json
 scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
 {
-  return {{"file", options.scan},          {"points", scan_points},
-          {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
-          {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  nlohmann::json scan = {
+      {"file", options.scan},          {"points", scan_points},
+      {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
+      {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    scan["file_unit"] = {{"unit", toString (*file_unit)},
+                         {"scale_to_mm", millimetresPer (*file_unit)},
+                         {"reason", fileFormatName (format) + "'s unit by specification, converted on reading; units "
+                                                              "and scale_to_mm apply after it"}};
+  return scan;
+}
+
+/** The scan's colours at the fitted \a vertices as options.colours asks (scanColoursAt); none for a depth image,
+ *  which has no colours (loadScan refuses --colours scan with it). */
+std::optional<VertexColours>
+fittedScanColours (const RegisterOptions& options, const LengthUnitGuess& unit, const Eigen::Matrix3Xd& vertices,
+                   std::ostream& warnings)
+{
+  if (!options.intrinsics.empty ())
+    return std::nullopt;
+  return scanColoursAt (options.scan, millimetresPer (unit.unit), options.colours, vertices, warnings);
 }
 
 /** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
@@ -333,7 +362,10 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
 {
   const std::string report_path = reportPath (options);
   std::ostringstream colours;
-  colours << "residual, 0-" << colour_scale << " mm";
+  if (report["fitted_mesh_colours"] == "scan")
+    colours << kScanColoursText;
+  else
+    colours << "residual, 0-" << colour_scale << " mm";
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
@@ -393,11 +425,14 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = residualColourScale (residuals, options.colour_max);
-  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale), residuals);
-  savePolygonMesh (options.out, coloured);
+  const auto scan_colours = fittedScanColours (options, unit, fitted.vertices, warnings);
+  savePolygonMesh (
+      options.out,
+      toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale), residuals));
   const double write_seconds = secondsSince (write_start);
 
   nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
+  report["fitted_mesh_colours"] = scan_colours ? "scan" : "residual";
   if (!options.truth.empty ())
     report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
   const double figure_seconds = saveFigures (viewer, options, icp, *scan, fitted, scale, report);
@@ -440,6 +475,26 @@ addRobustnessOptions (CLI::App* command, RegisterOptions& options)
       ->add_option ("--reject-trimmed", options.reject_trimmed,
                     "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
       ->check (inRange (0.01, 1.0));
+}
+
+/** The scan's unit and smoothing (--units, --target-smoothing) of addRegistrationOptions. */
+void
+addScanTreatmentOptions (CLI::App* command, RegisterOptions& options)
+{
+  command
+      ->add_option ("--target-smoothing", options.target_smoothing,
+                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
+                    "such as depth-camera frames; the report's target_surface says what was done)")
+      ->check (CLI::IsMember ({"auto", "on", "off"}))
+      ->capture_default_str ();
+  command->add_flag_callback (
+      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
+  command
+      ->add_option ("--units", options.units,
+                    "the scan's length unit: auto (from its size), mm, cm, m or in (glTF/GLB scans: the unit after "
+                    "reading, which converts glTF's metres to mm)")
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
+      ->capture_default_str ();
 }
 } // namespace
 
@@ -497,17 +552,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
                     "start)")
       ->check (nonNegative ())
       ->capture_default_str ();
-  command
-      ->add_option ("--target-smoothing", options.target_smoothing,
-                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
-                    "such as depth-camera frames; the report's target_surface says what was done)")
-      ->check (CLI::IsMember ({"auto", "on", "off"}))
-      ->capture_default_str ();
-  command->add_flag_callback (
-      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
-  command->add_option ("--units", options.units, "the scan's length unit: auto (from its size), mm, cm, m or in")
-      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
-      ->capture_default_str ();
+  addScanTreatmentOptions (command, options);
   command->add_flag ("--area-weighting", options.area_weighting,
                      "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
   addRobustnessOptions (command, options);
@@ -519,7 +564,8 @@ registerRegisterCommand (CLI::App& app)
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
   auto* scan =
-      command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
+      command->add_option ("-s,--scan", options->scan,
+                           "scan (.pcd .ply .obj .stl .off .gltf .glb); its unit: see --units; its colours: --colours");
   auto* depth = command->add_option ("--depth", options->scan,
                                      "a depth camera's image as the scan: a 16-bit PNG of depths in mm (needs "
                                      "--intrinsics)");
@@ -529,7 +575,16 @@ registerRegisterCommand (CLI::App& app)
   depth->excludes (scan)->needs (intrinsics);
   intrinsics->needs (depth);
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, meshOutputHelp ("fitted mesh to write", "residual", "residual in mm"))
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("fitted mesh to write", "see --colours", "residual in mm"))
+      ->capture_default_str ();
+  command
+      ->add_option ("--colours", options->colours,
+                    "the fitted mesh's vertex colours: auto (the scan's when it has any, else residual), scan (the "
+                    "colour of the nearest scan surface point: vertex colours, or the texture of a textured OBJ or "
+                    "glTF; not with --depth), residual (the residual map, as --screenshot shows it)")
+      ->check (CLI::IsMember ({"auto", "scan", "residual"}))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,

@@ -117,9 +117,12 @@ registerRenderCommand (CLI::App& app)
   auto options = std::make_shared<RenderOptions> ();
   CLI::App* command =
       app.add_subcommand ("render", "write a PNG of meshes, clouds and landmarks (run under xvfb-run -a)");
-  command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable")
+  command
+      ->add_option (
+          "-m,--mesh", options->meshes,
+          "mesh file (.ply .obj .vtk .stl .off .gltf .glb; drawn with its vertex colours if it has any), repeatable")
       ->check (CLI::ExistingFile);
-  command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj), repeatable")
+  command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj .gltf .glb), repeatable")
       ->check (CLI::ExistingFile);
   command
       ->add_option ("-l,--landmarks", options->landmarks,

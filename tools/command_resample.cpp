@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `morphreg resample`: a scan + a model file -> the scan's surface in the model's topology. The scan is registered
 // exactly as `register` does it, then ScanResampler moves the fitted mesh's vertices onto the scan along their normals
-// and fills the holes; writes the resampled mesh (vertex colours: observed / filled), the fitted mesh and one JSON
-// report (the registration's, with the resampling's coverage and holes).
+// and fills the holes; writes the resampled mesh (vertex colours: the scan's, or observed / filled), the fitted mesh
+// and one JSON report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
 #include "mesh_output.h"
 #include "pipeline.h"
 #include "provenance.h"
+#include "scan_colours.h"
 #include "scan_resampling.h"
 
 #include <morphreg/common/cloud_matrix.h>
@@ -48,7 +49,11 @@ resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::Po
     std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
               << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
               << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
-              << options.out << ' ' << meshContents (options.out, "grey observed, orange filled", "") << '\n';
+              << options.out << ' '
+              << meshContents (
+                     options.out,
+                     report["resampled_mesh_colours"] == "scan" ? kScanColoursText : "grey observed, orange filled", "")
+              << '\n';
 }
 
 /** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
@@ -72,7 +77,11 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
       {"status", "ok"},
       {"checks", {{"passed", true}, {"failures", nlohmann::json::array ()}}},
       {"units", "mm"},
-      {"scan", {{"file", registration.scan}, {"points", scan->size ()}, {"units", toString (unit.unit)}}},
+      {"scan",
+       {{"file", registration.scan},
+        {"points", scan->size ()},
+        {"units", toString (unit.unit)},
+        {"scale_to_mm", millimetresPer (unit.unit)}}},
       {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
   resampleAndReport (options, *scan, reference, report);
   writeReport (registration.report, report);
@@ -83,6 +92,7 @@ void
 runResample (ResampleOptions options)
 {
   RegisterOptions& registration = options.registration;
+  registration.colours = options.resampling.colours == "state" ? "residual" : options.resampling.colours;
   if (registration.out.empty ())
     registration.out = std::filesystem::path (options.out).replace_extension ().string () + "_fit.ply";
   if (registration.report.empty ())
@@ -116,7 +126,9 @@ registerResampleCommand (CLI::App& app)
   registration.out.clear ();
   CLI::App* command =
       app.add_subcommand ("resample", "register a scan (as register does) and resample it into the model's topology");
-  command->add_option ("-s,--scan", registration.scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units")
+  command
+      ->add_option ("-s,--scan", registration.scan,
+                    "scan (.pcd .ply .obj .stl .off .gltf .glb); its unit: see --units; its colours: --colours")
       ->required ();
   command->add_option ("-m,--model", registration.model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-l,--landmarks", registration.landmarks,
@@ -127,9 +139,16 @@ registerResampleCommand (CLI::App& app)
                     "by a thin plate spline onto --landmarks, METHOD section 5; no registration)")
       ->check (CLI::IsMember ({"fit", "landmarks"}))
       ->capture_default_str ();
+  command->add_option ("-o,--out", options->out, meshOutputHelp ("resampled mesh to write", "see --colours", ""))
+      ->capture_default_str ();
+  options->resampling.colours = "auto";
   command
-      ->add_option ("-o,--out", options->out,
-                    meshOutputHelp ("resampled mesh to write", "grey observed, orange filled", ""))
+      ->add_option ("--colours", options->resampling.colours,
+                    "vertex colours of the resampled mesh and the fit: auto (the scan's when it has any, else "
+                    "state), scan (the colour of the nearest scan surface point: vertex colours, or the texture of a "
+                    "textured OBJ or glTF), state (resampled mesh grey where observed, orange where filled; the fit "
+                    "coloured by its residuals)")
+      ->check (CLI::IsMember ({"auto", "scan", "state"}))
       ->capture_default_str ();
   command->add_option ("--fit-out", registration.out,
                        "the reference (the fit, or the warped mean) to write (default: the --out path + _fit)");

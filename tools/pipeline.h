@@ -45,7 +45,8 @@ struct RegisterOptions : RegistrationSettings
   std::string landmarks, truth;
   /** With a depth image as the scan (a 16-bit PNG in mm): its camera's intrinsics (JSON; depth_image_io.h). */
   std::string intrinsics;
-  double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
+  double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
+  std::string colours = "auto"; ///< the fitted mesh's vertex colours: auto (the scan's if it has any), scan, residual
   bool quiet = false;
   /** Batch mode: what produces the outputs (inputs' content hashes, settings, version; batch_provenance.h),
    *  recorded in every report the registration writes as "provenance". Null: none recorded. */
@@ -68,6 +69,7 @@ fromScansRegistration ()
   RegisterOptions options;
   options.components = {60};
   options.refinement_prior = 0.2;
+  options.colours = "residual"; // the fits are a step towards the model: no time spent on the scans' colours
   return options;
 }
 

@@ -2,6 +2,7 @@
 #include "scan_resampling.h"
 
 #include "option_checks.h"
+#include "scan_colours.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
@@ -9,6 +10,7 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 
 #include <chrono>
+#include <iostream>
 
 namespace morphreg
 {
@@ -108,7 +110,10 @@ resampleFit (const ResamplingOptions& options, const std::string& scan_file, con
   catch (const InvalidInputError& e) {
     throw InvalidInputError (scan_file + ": cannot be resampled into the model's topology: " + e.what ());
   }
-  savePolygonMesh (out, toPolygonMesh (result.mesh, stateColours (result.state)));
+  const auto scan_colours = scanColoursAt (scan_file, report["scan"].value ("scale_to_mm", 1.0), options.colours,
+                                           result.mesh.vertices, std::cerr);
+  savePolygonMesh (out, toPolygonMesh (result.mesh, scan_colours ? *scan_colours : stateColours (result.state)));
+  report["resampled_mesh_colours"] = scan_colours ? "scan" : "state";
   report["resampling"] = statisticsJson (result.statistics);
   report["resampling"]["status"] = "ok";
   report["resampling"]["settings"] = {

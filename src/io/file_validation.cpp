@@ -6,6 +6,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
+#include <morphreg/io/gltf_reader.h>
 
 #include <cctype>
 #include <cstdint>
@@ -32,8 +33,10 @@ unknownContent (const std::string& path)
                         std::to_string (84 + 50 * triangles) + " bytes of a binary STL with the " +
                         std::to_string (triangles) + " triangles its header gives (the file is cut short or corrupt)");
   }
+  if (ext == ".glb")
+    return FormatError (path + ": not a GLB file: it does not start with the magic bytes 'glTF'");
   return FormatError (path + ": the content is none of the supported mesh and cloud formats (PLY, PCD, OBJ, STL, "
-                             "VTK legacy, OFF)");
+                             "VTK legacy, OFF, glTF, GLB)");
 }
 
 /** The formats PCL and VTK read: checked before their readers see the file. */
@@ -57,6 +60,8 @@ validateForLibraryReader (const std::string& path, FileFormat format)
   case FileFormat::Pcd: // read by morphreg's own readers, which check as they read
   case FileFormat::VtkLegacy:
   case FileFormat::Off:
+  case FileFormat::Gltf:
+  case FileFormat::Glb:
   case FileFormat::Unknown:
     break;
   }
@@ -72,6 +77,8 @@ validateGeometryFile (const std::string& path)
     throw unknownContent (path);
   if (format == FileFormat::Off)
     readOffMesh (path);
+  else if (format == FileFormat::Gltf || format == FileFormat::Glb)
+    readGltfFile (path);
   else if (format == FileFormat::VtkLegacy)
     readVtkFile (path);
   else if (format == FileFormat::Pcd)

@@ -17,7 +17,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-const char* const kScanExtensions = ".pcd .ply .obj .stl .off";
+const char* const kScanExtensions = ".pcd .ply .obj .stl .off .gltf .glb";
 
 /** True if \a path has one of kScanExtensions. */
 bool

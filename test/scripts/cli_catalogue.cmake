@@ -132,6 +132,29 @@ morphreg_bad_input(ScanIsAFolder 1 TEXT "${bad}: is a directory" SETUP ${model} 
 morphreg_bad_input(ScanMissing 1 TEXT "missing.ply: no such file" SETUP ${model}
   ARGS register --scan @CASE@/missing.ply ${register_args})
 
+# --- Broken glTF files, written by the tests' glTF writer (gltf_test_files, test/scripts/gltf.cmake) ------------------
+set(gltf_bad ${CMAKE_CURRENT_BINARY_DIR}/cli/gltf)
+foreach(case "cut.glb;the GLB header gives a length of" "magic.glb;not a GLB file: it does not start with the magic bytes"
+        "chunk_past_end.glb;the JSON chunk claims" "accessor_out_of_range.glb;POSITION: the accessor claims 5000000 elements"
+        "index_out_of_range.glb;index 7 is 100000, beyond the primitive's 121 vertices"
+        "bad_draco.glb;bad Draco payload: it cannot be decoded"
+        "missing_buffer.gltf;buffer 0: its file 'missing_buffer.bin' does not exist"
+        "absurd_counts.gltf;POSITION: the accessor claims 1000000000000000 elements")
+  list(GET case 0 file)
+  list(GET case 1 text)
+  string(REPLACE "." "_" name ${file})
+  morphreg_bad_input(Gltf_${name} 1 TEXT "${file}: " "${text}" SETUP copy,${gltf_bad}/${file},@CASE@/${file} ${model}
+    ARGS register --scan @CASE@/${file} ${register_args})
+  set_property(TEST CliTest.BadInput.Gltf_${name} APPEND PROPERTY FIXTURES_REQUIRED cli_gltf)
+endforeach()
+morphreg_bad_input(RenderGltfCut 1 TEXT "cut.glb: " "the GLB header gives a length of" XVFB
+  SETUP copy,${gltf_bad}/cut.glb,@CASE@/cut.glb
+  ARGS render --mesh @CASE@/cut.glb --width 64 --height 64 --out @CASE@/render.png)
+morphreg_bad_input(ResampleGltfBadDraco 1 TEXT "bad_draco.glb: " "bad Draco payload" SETUP copy,${gltf_bad}/bad_draco.glb,@CASE@/bad_draco.glb ${model}
+  ARGS resample --scan @CASE@/bad_draco.glb --model @CASE@/model.h5 --out @CASE@/resampled.ply)
+set_property(TEST CliTest.BadInput.RenderGltfCut CliTest.BadInput.ResampleGltfBadDraco APPEND PROPERTY
+             FIXTURES_REQUIRED cli_gltf)
+
 # --- Scans that cannot be registered (degenerate geometry) ------------------------------------------------------------
 set(one "1 2 3")
 set(three "0 0 0" "10 0 0" "0 10 5")

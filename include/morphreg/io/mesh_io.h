@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mesh_io.h
- *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL; OFF read) on top of PCL's readers, with errors that name
- *  the file.
- *  Files are taken to be in millimetres; convert data in other units after loading.
+ *  \brief Reading and writing meshes (PLY, OBJ, VTK, STL; OFF, glTF and GLB read) on top of PCL's readers and
+ *  morphreg's own, with errors that name the file.
+ *  Files are taken to be in millimetres, except glTF, whose metres are converted to mm on reading (gltf_reader.h);
+ *  convert data in other units after loading.
  */
 #include <morphreg/mesh/triangle_mesh.h>
 
@@ -13,9 +14,9 @@
 
 namespace morphreg
 {
-/** \brief Loads a polygon mesh (.ply, .obj, .vtk, .stl, ASCII .off). Throws IoError if the file is missing or
- *  unreadable, FormatError if it holds no vertices or no polygons (or, for OFF, naming the line of a bad count,
- *  coordinate or corner index).
+/** \brief Loads a polygon mesh (.ply, .obj, .vtk, .stl, ASCII .off, .gltf, .glb). Throws IoError if the file is
+ *  missing or unreadable, FormatError if it holds no vertices or no polygons (or, for OFF, naming the line of a bad
+ *  count, coordinate or corner index).
  *  \param[in] path the mesh file
  *  \return the mesh as read
  */

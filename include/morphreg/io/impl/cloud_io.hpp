@@ -6,6 +6,7 @@
 #include <morphreg/io/field_precision.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
+#include <morphreg/io/gltf_reader.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/pcd_reader.h>
 
@@ -21,7 +22,7 @@ template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr
 loadCloud (const std::string& path)
 {
-  const FileFormat format = checkGeometryFile (path, ".pcd .ply .obj .stl .off", "point cloud");
+  const FileFormat format = checkGeometryFile (path, ".pcd .ply .obj .stl .off .gltf .glb", "point cloud");
   typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
   if (format == FileFormat::Obj) { // its vertices, faces or not
     pcl::fromPCLPointCloud2 (readObjFile (path).cloud, *cloud);
@@ -30,6 +31,10 @@ loadCloud (const std::string& path)
   if (format == FileFormat::StlAscii || format == FileFormat::StlBinary || format == FileFormat::Off) {
     // mesh formats: the mesh's vertices are the cloud (an OFF file of points alone too)
     pcl::fromPCLPointCloud2 (loadMeshFile (path).cloud, *cloud);
+    return cloud;
+  }
+  if (format == FileFormat::Gltf || format == FileFormat::Glb) { // its triangles' and points' vertices, in mm
+    pcl::fromPCLPointCloud2 (toPolygonMesh (readGltfFile (path)).cloud, *cloud);
     return cloud;
   }
   if (format == FileFormat::Pcd) { // morphreg's own reader: PCL's crashes on some malformed files
