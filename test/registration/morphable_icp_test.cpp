@@ -172,8 +172,8 @@ TEST_F (MorphableIcpTest, UnseenHeadsFitCloseToTheirModelFloor)
     icp.setComponentSelection (selection);
     icp.setTargetLandmarks (scan.landmarks);
     const double rms = fit (icp, scan);
-    std::printf ("[ unseen ] head %d: RMS %.3f mm (floor %.3f mm), %zu iterations, divergence %d\n", head, rms,
-                 floor, icp.getRegistrationReport ().history.size (),
+    std::printf ("[ unseen ] head %d: RMS %.3f mm (floor %.3f mm), %zu iterations, divergence %d\n", head, rms, floor,
+                 icp.getRegistrationReport ().history.size (),
                  static_cast<int> (icp.getRegistrationReport ().divergence));
     within_twice_floor += rms <= 2.0 * floor ? 1 : 0;
     errors.push_back (rms);

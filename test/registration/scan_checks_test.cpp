@@ -105,13 +105,13 @@ TEST (FitPlausibilityTest, MeasuresTheFoldedShareByArea)
 {
   const morphreg::TriangleMesh sheet = flatSheet (8);
   const Eigen::VectorXd mean = Eigen::Map<const Eigen::VectorXd> (sheet.vertices.data (), sheet.vertices.size ());
-  const auto model = morphreg::MorphableModel::fromGlobalPca (sheet.triangles, mean,
-                                                              Eigen::MatrixXd::Zero (mean.size (), 0), Eigen::VectorXd ());
+  const auto model = morphreg::MorphableModel::fromGlobalPca (
+      sheet.triangles, mean, Eigen::MatrixXd::Zero (mean.size (), 0), Eigen::VectorXd ());
   const Eigen::VectorXd residuals = Eigen::VectorXd::Constant (sheet.numVertices (), 0.5);
   auto foldedShare = [&] (const Eigen::Matrix3Xd& fitted) {
-    const auto measures = morphreg::measureFit (*model, model->firstComponents (0), Eigen::VectorXd (),
-                                                Eigen::Matrix4d::Identity (), fitted, residuals, Eigen::Matrix3Xd (),
-                                                morphreg::IcpReport (), 5);
+    const auto measures =
+        morphreg::measureFit (*model, model->firstComponents (0), Eigen::VectorXd (), Eigen::Matrix4d::Identity (),
+                              fitted, residuals, Eigen::Matrix3Xd (), morphreg::IcpReport (), 5);
     EXPECT_EQ (measures.explained_share, 1.0) << "no scan: nothing to explain";
     return measures.folded_share;
   };

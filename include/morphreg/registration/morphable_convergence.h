@@ -16,7 +16,9 @@ namespace morphreg
  *  mean squared vertex motion of an update below the motion epsilon or the change of the cost per row below the
  *  fitness epsilon (converged); and the divergence rules: the normal equations could not be solved, a coefficient
  *  left the prior (more than max_sigma standard deviations) or, where the phase checks it, the cost per row stayed
- *  above 1.05 times the phase's best for rising_iterations iterations in a row.
+ *  above 1.05 times the phase's best for rising_iterations iterations in a row. Where the best is scored on the
+ *  current rows (checkCost's second argument), a phase whose cost has not improved on its best by 0.1 % for
+ *  rising_iterations iterations in a row has settled: fitness_converged.
  *
  *  Per iteration: checkCost with the cost at the current state and at the phase's best on the same rows (improved()
  *  then says whether the current state is the better one), the step, update; hasConverged() ends the phase.
@@ -154,6 +156,7 @@ private:
   bool check_rising_ = false;
   Eigen::VectorXd sigma_;
   int rising_ = 0;
+  int stalled_ = 0; ///< iterations in a row without progress on the best, compared on the same rows
   bool improved_ = false;
   double best_cost_ = std::numeric_limits<double>::infinity ();
   double previous_cost_ = std::numeric_limits<double>::infinity ();
