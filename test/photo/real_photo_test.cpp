@@ -111,7 +111,7 @@ TEST (RealPhotoTest, RealHeadScan)
   fitAndScore ("Lee Perry-Smith", leeHeadMesh (), LandmarkVertices (landmarks.begin (), landmarks.end ()),
                {{{0.7}, {0.7}, {0.85}}});
   // Hair (12 mm on everything 60 mm above the nose tip) traced as the outline, and the same photo traced from the
-  // hairline down, as the README advises. With the hair the fits reach 0.85x, 0.82x, 1.02x: the profile fit takes the
+  // hairline down, as docs/formats.md says. With the hair the fits reach 0.85x, 0.82x, 1.02x: the profile fit takes the
   // hair for the skull and is no better than the mean head, so its bound only guards against it getting worse (the
   // profile fit traced from the hairline, below, must beat the mean head). From the hairline 0.55x, 0.81x, 0.67x
   // (TPS-ICP loses the crown the outline leaves out); the bounds there are 1.2x the joint and profile ratios.

@@ -379,7 +379,7 @@ morphreg_cli_test(RenderQuietPrintsNothingOnStderr FIXTURES_REQUIRED cli_synth X
   LOG ${cli_dir}/RenderQuietPrintsNothingOnStderr.log EMPTY_STDERR FILES ${cli_dir}/render_quiet.png
   ARGS render --mesh ${cli_dir}/synth/head_000.ply --width 320 --height 240 -q --out ${cli_dir}/render_quiet.png)
 morphreg_cli_expect_exit(RenderMissingFileIsNamed 2 "no_such_mesh.ply" render --mesh ${cli_dir}/no_such_mesh.ply)
-# --side-by-side: two meshes in a left and a right viewport (a fit and its resampled scan in the README).
+# --side-by-side: two meshes in a left and a right viewport (a fit and its resampled scan in docs/accuracy.md).
 morphreg_cli_test(RenderSideBySide FIXTURES_REQUIRED cli_synth XVFB OUTPUT "wrote .*render_sides.png \\(320x240\\)"
   FILES ${cli_dir}/render_sides.png CHECKS ${cli_scripts}/check_png.cmake
   DEFINE PNG=${cli_dir}/render_sides.png WIDTH=320 HEIGHT=240

@@ -2,7 +2,8 @@
 # StyleTest: the layout rules a reviewer would otherwise check by hand. No function in src/, include/ or python/src/ is longer
 # than 60 lines (scripts/check_function_length.py), every C++ file is formatted by the project's .clang-format
 # (clang-format from scripts/install-deps.sh), and every source file names its licence in an SPDX line
-# (scripts/check_spdx.py looks at every file of the tree, so files added later are checked too).
+# (scripts/check_spdx.py looks at every file of the tree, so files added later are checked too). docs/cli.md is the
+# built command line's help, as scripts/cli_reference.py writes it.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 add_test(NAME StyleTest.SpdxLicenceLines
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_spdx.py ${PROJECT_SOURCE_DIR})
@@ -36,3 +37,11 @@ add_test(NAME StyleTest.CitationAndChangelogNameTheVersion
 assert re.search('^version: ' + v + '$', open(sys.argv[2]).read(), re.M), 'CITATION.cff: no version ' + sys.argv[1]; \
 assert re.search('^## ' + v + ' ', open(sys.argv[3]).read(), re.M), 'CHANGELOG.md: no section ' + sys.argv[1]"
           ${PROJECT_VERSION} ${PROJECT_SOURCE_DIR}/CITATION.cff ${PROJECT_SOURCE_DIR}/CHANGELOG.md)
+
+# docs/cli.md, the command line reference, is the help of the built executable; the test names the first line that
+# differs and how to regenerate the file.
+if(TARGET morphreg_cli)
+  add_test(NAME StyleTest.CliReferenceIsCurrent
+    COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/cli_reference.py --check $<TARGET_FILE:morphreg_cli>
+            ${PROJECT_SOURCE_DIR}/docs/cli.md)
+endif()
