@@ -117,10 +117,10 @@ runMerge (const MergeOptions& options)
     plan.addInput (file, "a shard summary");
   plan.addOutput (base + ".csv", "the merged summary");
   plan.addOutput (base + ".json", "the merged summary");
+  OutputTransaction outputs (plan.outputs (), {options.out_dir}); // creates --out-dir; a refused run removes it
   plan.check ();
   nlohmann::json run;
   const std::vector<ScanSummary> rows = mergeShards (files, run);
-  OutputTransaction outputs (plan.outputs ());
   writeSummary (base, rows, "all", run);
   outputs.commit ();
   const auto failed =

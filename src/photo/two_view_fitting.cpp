@@ -484,7 +484,7 @@ TwoViewFitting::fitTpsIcp (const ProfileView& profile, const FrontalView& fronta
   state.log_scale = std::log (result.scale);
   state.rotation = result.rotation;
   state.translation = result.translation;
-  state.coefficients = result.coefficients;
+  state.coefficients = result.coefficients_mm;
   state.vertices = whole.vertices (state.coefficients);
   PoseShapeState best = state;
   double best_error = std::numeric_limits<double>::infinity ();

@@ -17,9 +17,9 @@ constexpr int kMaxPhotoSide = 16384;
  *  converted, 16-bit samples reduced to 8 bits). */
 struct PhotoPixels
 {
-  int width = 0;
-  int height = 0;
-  std::vector<unsigned char> rgb;
+  int width = 0;                  ///< pixels per row
+  int height = 0;                 ///< rows
+  std::vector<unsigned char> rgb; ///< width x height x 3 bytes, row by row from the top
 };
 
 /** \brief Reads the PNG or JPEG photo \a path (recognised by its content). Throws IoError if it is missing or not a

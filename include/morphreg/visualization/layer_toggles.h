@@ -26,7 +26,9 @@ namespace morphreg
 class LayerToggles
 {
 public:
-  /** \brief Layers over \a viewer's shapes; \a viewer must outlive this object. */
+  /** \brief Layers over \a viewer's shapes; \a viewer must outlive this object.
+   *  \param[in] viewer the visualiser whose shapes the layers show and hide
+   */
   explicit LayerToggles (RegistrationVisualizer& viewer);
 
   /** \brief Disconnects the keys. */

@@ -515,8 +515,7 @@ MorphableICP<PointTarget, Scalar>::runPhase (const Phase& phase, const PoseShape
                            " found) and " + std::to_string (landmark_rows_.size ()) + " landmarks",
                        "the max correspondence distance, the rejectors and the initial alignment");
     visualize (ev);
-    const double per_row = 1.0 / static_cast<double> (rows.size ());
-    if (!convergence.checkCost (per_row * solver.cost (state, rows), per_row * solver.cost (best, rows)))
+    if (!convergence.checkCost (solver.cost (state, rows) / static_cast<double> (rows.size ())))
       break;
     if (convergence.improved ())
       best = state;
