@@ -6,8 +6,8 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
-#include <morphreg/photo/frontal_texture.h>
-#include <morphreg/photo/two_view_fitting.h>
+#include <morphreg/photo/photo_texture.h>
+#include <morphreg/photo/photo_fitting.h>
 #include <morphreg/synthetic/photo_simulator.h>
 
 #include <gtest/gtest.h>
@@ -121,8 +121,8 @@ TEST (FrontalTextureTest, FittedHeadTakesTheColoursAtItsLandmarks)
   morphreg::synthetic::PhotoSimulator::Parameters camera;
   const auto photos = morphreg::synthetic::PhotoSimulator (camera).photograph (
       truth, morphreg::test::frontalLandmarks (), generator.profileLine (), 3);
-  const morphreg::TwoViewFit fit =
-      morphreg::TwoViewFitting (morphreg::test::photoTestModel ().model).fitJoint (photos.profile, photos.frontal);
+  const morphreg::PhotoFit fit =
+      morphreg::PhotoFitting (morphreg::test::photoTestModel ().model).fitJoint (photos.profile, photos.frontal);
   const RgbImage image = gradientImage (camera.width, camera.height, 5);
   const morphreg::VertexTexture texture =
       morphreg::frontalTexture (fit.image_mesh, photos.frontal.normalisation (), image);
