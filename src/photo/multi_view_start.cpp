@@ -56,11 +56,10 @@ MultiViewProblem::viewLandmarks (size_t view, const PoseShapeState& state) const
   return {points, pixels};
 }
 
-bool
-MultiViewProblem::estimateCameras (const std::optional<PoseShapeState>& state)
+void
+MultiViewProblem::estimateCameras ()
 {
-  const PoseShapeState at = state ? *state : initialState ();
-  bool estimated = false;
+  const PoseShapeState at = initialState ();
   for (size_t v = 0; v < views_.size (); ++v) {
     ViewData& data = views_[v];
     if (data.view.camera ())
@@ -71,11 +70,10 @@ MultiViewProblem::estimateCameras (const std::optional<PoseShapeState>& state)
     const CameraEstimate estimate =
         estimateCamera (points, pixels, data.view.width (), data.view.height (), range, data.view.source ());
     data.camera = estimate.camera;
-    data.estimated = estimated = true;
+    data.estimated = true;
     data.focal_source = range.source;
     data.camera_rms = estimate.rms_pixels;
   }
-  return estimated;
 }
 
 PoseShapeState

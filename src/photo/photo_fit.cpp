@@ -105,7 +105,6 @@ photoFitJson (const PhotoFit& fit)
           {"method", fit.method},
           {"returned", fit.returned},
           {"tps_rounds", fit.tps_rounds},
-          {"camera_rounds", fit.camera_rounds},
           {"max_coefficient_sigma", fit.maxCoefficientSigma ()},
           {"coefficients_beyond_3_sigma", (fit.coefficient_sigmas.array ().abs () > 3.0).count ()},
           {"shape_distance_sigma", fit.shapeDistance ()},

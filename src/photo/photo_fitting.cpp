@@ -108,7 +108,7 @@ PhotoFit
 PhotoFitting::fit (std::vector<PhotoView> views, const PhotoFitMethod& method) const
 {
   MultiViewProblem problem (model_, std::move (views), settings_);
-  problem.estimateCameras (std::nullopt);
+  problem.estimateCameras ();
   ShapePriorChoice prior;
   if (fixed_prior_) {
     prior.weight = *fixed_prior_;
@@ -118,12 +118,8 @@ PhotoFitting::fit (std::vector<PhotoView> views, const PhotoFitMethod& method) c
   else
     prior = ShapePriorSelection (landmark_noise_).choose (problem, method.rows ());
   PhotoFit fit = method.fit (problem, problem.initialState ());
-  int rounds = 0;
-  for (; rounds < kCameraRounds && problem.estimateCameras (fittedState (problem, fit)); ++rounds)
-    fit = method.fit (problem, fittedState (problem, fit));
   fit.method = method.name ();
   fit.prior = prior;
-  fit.camera_rounds = rounds;
   return fit;
 }
 

@@ -202,10 +202,8 @@ TEST (RealPhotoTest, JamesTwoRealPhotosWithGivenAndEstimatedCameras)
   const double baseline = faceMedian (mean, scan, landmarks, *model);
   PhotoFitting fitting (model);
   // Issue 34's targets: <= 0.8x the mean head with the given cameras (measured 0.79x: 2.12 mm against 2.69 mm),
-  // <= 0.85x with the cameras estimated. The latter is not met: each estimated camera is posed on the model's head
-  // by its own photo's landmarks, so the two photos' relative pose is off by what the head's shape moves them, and
-  // the fit cannot triangulate the shape (measured 0.98x; 1.01x even with the true focal length from EXIF). The bound
-  // for estimated cameras only guards against getting worse than the mean head.
+  // <= 0.85x with the cameras estimated from the landmarks on the mean head (measured 0.84x; the focal lengths found,
+  // 1770 and 8101 px against the true 6300 and 6500, are loosely fixed by a face seen from 1.4 m).
   for (const bool given : {true, false}) {
     const PhotoFit fit = fitting.fit (jamesViews (given), "joint");
     const double median = faceMedian (fit.model_mesh, scan, landmarks, *model);
@@ -225,12 +223,9 @@ TEST (RealPhotoTest, JamesTwoRealPhotosWithGivenAndEstimatedCameras)
     std::printf ("[ real photo ]   the mean head: left-out landmarks %.3f mm\n", fit.prior.mean_head_error_mm);
     EXPECT_EQ (fit.views[0].camera_estimated, !given);
     EXPECT_TRUE (isPlausibleShape (fit.coefficient_sigmas)) << given;
-    const double bound = given ? 0.8 : 1.05;
+    const double bound = given ? 0.8 : 0.85;
     EXPECT_PRED_FORMAT2 (tightUpperBound, median, bound * baseline) << "cameras given " << given;
-    if (given)
-      EXPECT_PRED_FORMAT2 (noOpFailsUpperBound, baseline, bound * baseline);
-    else
-      EXPECT_GT (fit.views[0].camera_rms_pixels, 0.0); // estimated, and its reprojection reported
+    EXPECT_PRED_FORMAT2 (noOpFailsUpperBound, baseline, bound * baseline) << "cameras given " << given;
   }
 }
 

@@ -93,7 +93,6 @@ struct PhotoFit
   std::vector<std::string> ignored_landmarks; ///< outline landmarks left out (PhotoFitting::setOutlineLandmarkWeight)
   std::vector<PhotoFitView> views;            ///< per photo: camera, constraints, hair
   ShapePriorChoice prior;                     ///< how lambda_2 was chosen
-  int camera_rounds = 0;                      ///< rounds of re-estimating the estimated cameras on the fitted head
 
   /** \brief The largest |coefficient| in prior standard deviations (0 without components).
    *  \return the largest |coefficient_sigmas| entry

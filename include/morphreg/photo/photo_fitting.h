@@ -46,7 +46,6 @@ public:
   static constexpr double kDefaultLandmarkWeight = 0.5;   ///< default landmark weight (setLandmarkWeight)
   static constexpr double kDefaultSagittalWeight = 1.0;   ///< default sagittal row weight (setSagittalWeight)
   static constexpr double kDefaultLandmarkNoise = 1.0;    ///< default landmark noise, pixels (setLandmarkNoise)
-  static constexpr int kCameraRounds = 2; ///< times estimated cameras are re-estimated on the fitted head
 
   /** \brief Selects kDefaultComponents per region (or all a region has). Throws InvalidInputError for a null model,
    *  one without a profile line (MorphableModel::setProfileLine) or without a nose_tip landmark.
@@ -129,8 +128,8 @@ public:
   void
   setIterations (int similarity, int shape);
 
-  /** \brief Fits \a views with \a method: estimates the missing cameras, chooses the prior, fits, and re-estimates
-   *  the estimated cameras on the fitted head kCameraRounds times (fitting again each time). Throws
+  /** \brief Fits \a views with \a method: estimates the missing cameras (MultiViewProblem::estimateCameras),
+   *  chooses the prior and fits. Throws
    *  InvalidInputError naming the problem for views the method cannot fit (MultiViewProblem, the method).
    *  \param[in] views the photos
    *  \param[in] method the fitting method
