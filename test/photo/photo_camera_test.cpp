@@ -3,6 +3,7 @@
 // projection matrix, camera files (K, R, t or P; a list by image, as menpo3d_james's james_cameras.json), the EXIF
 // focal length, the camera estimated from landmarks, and the bad cameras and files each names.
 #include "photo_test_model.h"
+#include "support/expect_error.h"
 #include "support/temp_directory.h"
 
 #include <morphreg/common/error.h>
@@ -26,6 +27,7 @@ using morphreg::FocalRange;
 using morphreg::FormatError;
 using morphreg::InvalidInputError;
 using morphreg::PhotoCamera;
+using morphreg::test::expectErrorContaining;
 
 /** A camera 1 m in front of the model's origin, turned \a degrees about Y (to the subject's side), f 3000 px on a
  *  1200 x 1600 px photo with a slightly off-centre principal point and a little skew. */
@@ -38,19 +40,6 @@ sideCamera (double degrees)
   const Eigen::Matrix3d look = Eigen::Vector3d (1.0, -1.0, -1.0).asDiagonal ();
   const Eigen::Matrix3d R = look * Eigen::AngleAxisd (degrees * M_PI / 180.0, Eigen::Vector3d::UnitY ()).matrix ();
   return PhotoCamera::perspective (K, R, Eigen::Vector3d (5.0, -20.0, 1000.0), "side camera");
-}
-
-template <class F>
-void
-expectError (F f, const std::string& text)
-{
-  try {
-    f ();
-    ADD_FAILURE () << "no error; expected one containing \"" << text << "\"";
-  }
-  catch (const morphreg::Error& error) {
-    EXPECT_NE (std::string (error.what ()).find (text), std::string::npos) << error.what ();
-  }
 }
 
 TEST (PhotoCameraTest, ProjectionAndItsDerivativeAgreeWithFiniteDifferences)
@@ -102,17 +91,25 @@ TEST (PhotoCameraTest, DegenerateCamerasAreNamed)
   lower (2, 0) = 0.1;
   reflected.row (2) *= -1.0;
   sheared (0, 1) += 0.01;
-  expectError ([&] { PhotoCamera::perspective (zero_focal, R, t, "cam.json"); }, "cam.json: K's focal lengths");
-  expectError ([&] { PhotoCamera::perspective (lower, R, t, "cam.json"); }, "cam.json: K must be finite, upper");
-  expectError ([&] { PhotoCamera::perspective (K, reflected, t, "cam.json"); }, "cam.json: R is not a rotation");
-  expectError ([&] { PhotoCamera::perspective (K, sheared, t, "cam.json"); }, "cam.json: R is not a rotation");
-  expectError ([&] { PhotoCamera::perspective (K, R, Eigen::Vector3d (0, NAN, 0), "cam.json"); }, "t is not finite");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::perspective (zero_focal, R, t, "cam.json"); },
+                                          "cam.json: K's focal lengths");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::perspective (lower, R, t, "cam.json"); },
+                                          "cam.json: K must be finite, upper");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::perspective (K, reflected, t, "cam.json"); },
+                                          "cam.json: R is not a rotation");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::perspective (K, sheared, t, "cam.json"); },
+                                          "cam.json: R is not a rotation");
+  expectErrorContaining<morphreg::Error> (
+      [&] { PhotoCamera::perspective (K, R, Eigen::Vector3d (0, NAN, 0), "cam.json"); }, "t is not finite");
   Eigen::Matrix<double, 3, 4> P = Eigen::Matrix<double, 3, 4>::Zero ();
   P.block<2, 3> (0, 0) = K.topRows<2> (); // rank 2: every point on one line of sight
-  expectError ([&] { PhotoCamera::fromProjection (P, "p.json"); }, "p.json: P's left 3 x 3 block is singular");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::fromProjection (P, "p.json"); },
+                                          "p.json: P's left 3 x 3 block is singular");
   P (2, 3) = INFINITY;
-  expectError ([&] { PhotoCamera::fromProjection (P, "p.json"); }, "p.json: P is not finite");
-  expectError ([&] { PhotoCamera::orthographic (R, 0.0, Eigen::Vector2d::Zero ()); }, "scale must be finite and > 0");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::fromProjection (P, "p.json"); },
+                                          "p.json: P is not finite");
+  expectErrorContaining<morphreg::Error> ([&] { PhotoCamera::orthographic (R, 0.0, Eigen::Vector2d::Zero ()); },
+                                          "scale must be finite and > 0");
 }
 
 /** A JSON matrix of \a matrix's rows. */
@@ -158,7 +155,7 @@ TEST (PhotoCameraTest, CameraFilesTakeKRtOrPAndPickTheCameraByImage)
   // Bad files: each error names the file, the camera and what is wrong.
   const auto expectFormat = [&] (const nlohmann::json& document, const std::string& image, const std::string& text) {
     morphreg::writeJsonFile (file, document);
-    expectError ([&] { morphreg::loadPhotoCamera (file, image, 1200, 1600); }, text);
+    expectErrorContaining<morphreg::Error> ([&] { morphreg::loadPhotoCamera (file, image, 1200, 1600); }, text);
   };
   nlohmann::json no_t = krt;
   no_t.erase ("t");
@@ -179,7 +176,8 @@ TEST (PhotoCameraTest, CameraFilesTakeKRtOrPAndPickTheCameraByImage)
   nlohmann::json reflected = krt;
   reflected["R"] = rows (-left.rotation ());
   expectFormat (reflected, "a.jpg", "R is not a rotation");
-  expectError ([&] { morphreg::loadPhotoCamera (directory.file ("absent.json"), "a.jpg", 1200, 1600); }, "absent.json");
+  expectErrorContaining<morphreg::Error> (
+      [&] { morphreg::loadPhotoCamera (directory.file ("absent.json"), "a.jpg", 1200, 1600); }, "absent.json");
 }
 
 TEST (PhotoCameraTest, JamesCamerasProjectTheScansLandmarksOntoThePhotos)
@@ -289,18 +287,23 @@ TEST (CameraEstimationTest, TooFewFlatOrMismatchedLandmarksAreNamed)
   const PhotoCamera truth = sideCamera (10.0);
   const Eigen::Matrix2Xd pixels = projected (truth, points, 0.0, 1);
   const FocalRange range = FocalRange::forImage (1200, 1600, 0.0);
-  expectError ([&] { morphreg::estimateCamera (points.leftCols (5), pixels.leftCols (5), 1200, 1600, range, "p.jpg"); },
-               "p.jpg: a camera is estimated from at least 6 landmarks");
-  expectError ([&] { morphreg::estimateCamera (points, pixels.leftCols (10), 1200, 1600, range, "p.jpg"); },
-               "at least 6 landmarks");
+  expectErrorContaining<morphreg::Error> (
+      [&] { morphreg::estimateCamera (points.leftCols (5), pixels.leftCols (5), 1200, 1600, range, "p.jpg"); },
+      "p.jpg: a camera is estimated from at least 6 landmarks");
+  expectErrorContaining<morphreg::Error> (
+      [&] { morphreg::estimateCamera (points, pixels.leftCols (10), 1200, 1600, range, "p.jpg"); },
+      "at least 6 landmarks");
   Eigen::Matrix3Xd flat = points;
   flat.row (2).setConstant (50.0);
-  expectError ([&] { morphreg::estimateCamera (flat, pixels, 1200, 1600, range, "p.jpg"); }, "lie on one plane");
+  expectErrorContaining<morphreg::Error> ([&] { morphreg::estimateCamera (flat, pixels, 1200, 1600, range, "p.jpg"); },
+                                          "lie on one plane");
   Eigen::Matrix2Xd bad = pixels;
   bad (0, 3) = NAN;
-  expectError ([&] { morphreg::estimateCamera (points, bad, 1200, 1600, range, "p.jpg"); }, "not finite");
-  expectError ([&] { morphreg::estimateCamera (points, pixels, 0, 1600, range, "p.jpg"); }, "image size");
-  expectError (
+  expectErrorContaining<morphreg::Error> ([&] { morphreg::estimateCamera (points, bad, 1200, 1600, range, "p.jpg"); },
+                                          "not finite");
+  expectErrorContaining<morphreg::Error> ([&] { morphreg::estimateCamera (points, pixels, 0, 1600, range, "p.jpg"); },
+                                          "image size");
+  expectErrorContaining<morphreg::Error> (
       [&] {
         morphreg::estimateCamera (points, pixels, 1200, 1600, FocalRange{0.0, 10.0, ""}, "p.jpg");
       },
