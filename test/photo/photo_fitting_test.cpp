@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // PhotoFitting on photos simulated from synthetic heads with a known pose: accuracy against the true head, the
 // recovered similarity, the profile fit against the joint fit (approach 1), and bad input.
 #include "photo_test_model.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Texture from the frontal photo: the PNG/JPEG reader, visibility (facing, occlusion) on meshes whose answer is
 // known, and the colours of a fitted synthetic head.
 #include "photo_test_model.h"

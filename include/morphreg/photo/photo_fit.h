@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_fit.h
  *  \brief The result of fitting a morphable model to photos (PhotoFitting), and its JSON report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_fit_options.h
  *  \brief The settings of a photo fit by their command-line names (`morphreg fit-photos --approach ...`), applied in

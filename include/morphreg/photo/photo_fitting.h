@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_fitting.h
  *  \brief Fitting a morphable model to photos (docs/method.md, "Fitting to photographs"): any number of views with

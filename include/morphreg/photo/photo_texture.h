@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_texture.h
  *  \brief Per-vertex colours of a fitted head from its photos (docs/method.md, "Texture"): each photo projected onto
