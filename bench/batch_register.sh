@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Batch registration against a shell loop of single `register` calls, in the same run (issue 17):
 #   bench/batch_register.sh [SCANS=200] [BUILD_DIR=build] [WORK_DIR=/tmp/morphreg_batch_bench]
 # Makes SCANS synthetic scans (one per head, 3458-vertex heads) and a model of those heads, then times

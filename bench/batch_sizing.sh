@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The figures docs/cluster.md's sizing example rests on (issue 37): per-scan time, memory and output size of
 # `register --scans` on a real scan, and the time a resumed run spends checking what is done.
 #   bench/batch_sizing.sh [SCANS=8] [BUILD_DIR=build] [WORK_DIR=/tmp/morphreg_batch_sizing] [DATA=../shared/data]

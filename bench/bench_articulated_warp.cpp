@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Re-posturing the MakeHuman bodies standing -> seated from their 51 major joints: morphreg::ArticulatedWarp (bone
 // motions, geodesic skinning weights, linear blend skinning, as-rigid-as-possible refinement with its factorisation)
 // next to the blended segmented thin plate spline (morphreg::SegmentedWarp, the settings of its test) in one run, on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Model building: ModelBuilder (global PCA + 7 region PCAs + blending) against a plain Eigen BDCSVD of
 // the same centred data matrix, for 200 synthetic heads (9602 vertices) and 200 ICT samples (11248 vertices).
 // Counters: peak_MiB = growth of the resident set's high-water mark during the timed runs (Linux clear_refs).

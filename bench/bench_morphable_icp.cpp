@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // MorphableICP against pcl::IterativeClosestPoint on the same simulated scan: full align() and time per iteration.
 // Model: the built-in synthetic population (120 heads, 9602 vertices, 7 regions x 10 components); scan: the
 // ScanSimulator at about 100k points, both registrations started from the same similarity guess; PCL's ICP also with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Python module's overhead on a full registration: morphreg.register (numpy in, result and report dict out)
 // against the same fit through the C++ API, in one process (the interpreter is embedded), on the demo's data: the
 // 150-head population (seed 1, 9602 vertices), its 7-region model with 20 components, and the scan of the held-out

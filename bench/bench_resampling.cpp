@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // ScanResampler: an 11618-vertex reference (HeadGenerator resolution 44, smoothly offset from the truth by up to
 // 1.5 mm) resampled onto a ScanSimulator scan of about 80k points, as a point cloud (weighted local planes) and as its
 // triangulated range image (ray casting through Intel Embree); the search structures' build timed apart; and the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Thin plate splines: morphreg::ThinPlateSpline against VTK's vtkThinPlateSplineTransform (SetBasisToR) in one run.
 // Fit at n = 66, 500, 1000 landmarks (both), 2000 and 5000 (ours only: VTK's O(n^3) Jacobi takes many minutes);
 // evaluation of 16k and 1M points at n = 66, 500, 1000. Wall-clock times (ours runs on all OpenMP threads, VTK on

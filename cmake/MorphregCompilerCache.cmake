@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Use ccache automatically when it is installed: PCL's templates make rebuilds slow. ccache caches compiles that use
 # the precompiled headers (cmake/MorphregPrecompiledHeaders.cmake) only with the pch_defines and time_macros
 # sloppiness, set here for morphreg's compiles whatever the user's ccache configuration.

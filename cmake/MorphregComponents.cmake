@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 set(MORPHREG_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/morphreg")
 
 # morphreg_add_component(<name> FOLDERS <src folders> [PUBLIC <deps>] [PRIVATE <deps>]): the shared library
@@ -24,10 +25,11 @@ function(morphreg_add_component name)
   if(MORPHREG_NATIVE)
     target_compile_options(${target} PUBLIC -march=native)
   endif()
+  # Each library is its own install component, so the Python wheel (setup.py) takes only the ones the module needs.
   install(TARGETS ${target} EXPORT morphreg_${name}Targets
-    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
-    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ${name}
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ${name}
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT ${name}
     INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT morphreg_${name}Targets NAMESPACE morphreg:: DESTINATION ${MORPHREG_CMAKE_DIR})
 endfunction()

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The `docs` target: the Doxygen reference of the public headers, with docs/method.md as its main page, in
 # <build>/docs/html. Doxygen fails on any warning (docs/Doxyfile.in), so the target and the `doxygen_docs` test
 # fail on an undocumented public member, a missing \param or \return, or a broken reference.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Precompiled headers: the Eigen and PCL headers most translation units include, parsed once per kind of target
 # instead of once per file (a larger set, e.g. with Eigen/Dense or nlohmann/json, makes the files that do not use it
 # slower to compile than they gain). GCC accepts a precompiled header only with the same code-generation flags and

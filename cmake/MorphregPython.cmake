@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The Python module (python/), on by default when Python 3's headers and pybind11 are found. Debian's interpreter
 # (/usr/bin/python3) is preferred over others on the PATH: numpy, pytest and Open3D come from Debian's packages.
 if(NOT MORPHREG_BUILD_PYTHON)

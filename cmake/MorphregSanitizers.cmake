@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Instrumented builds (scripts/check.sh, docs/FUZZING.md).
 # MORPHREG_SANITIZE (e.g. "address,undefined"): every target compiled and linked with -fsanitize=<list>, for the
 # sanitizer run of the whole test suite with GCC.

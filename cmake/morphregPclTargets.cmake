@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # PCL's imported targets pcl_io and pcl_2d (linked by pcl_features, linked by pcl_registration) link every VTK module
 # PCL uses, rendering included, though those libraries need only VTK's data model, filters and readers. morphreg
 # links trimmed copies, morphreg::pcl_<name>, without VTK's rendering, views, interaction, charts and Qt modules, so

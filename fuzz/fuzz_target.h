@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file fuzz_target.h
  *  \brief The fuzz targets: each feeds one input, written to a temporary file with the extension its loaders

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz targets landmarks_<format>: the 3D landmark, named point and pixel landmark loaders on each landmark file
 // format (PickedPoints files hold 3D points only).
 #include "fuzz_target.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The libFuzzer entry point of one fuzz executable: runs the target named by MORPHREG_FUZZ_TARGET (set per
 // executable in fuzz/CMakeLists.txt).
 #include "fuzz_target.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz targets mesh_<format>: the mesh loader and the cloud loader on one file of each format they read (the
 // mesh loader does not read PCD, the cloud loader does not read VTK).
 #include "fuzz_target.h"

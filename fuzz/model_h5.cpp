@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target model_h5: model files, read as loadModel() does (morphreg's layout, statismo's at the root, or the
 // Basel Face Model 2017's under "shape/") and as a BFM-2017 file explicitly.
 #include "fuzz_target.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target npy: the validating .npy reader.
 #include "fuzz_target.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target photo_json: the profile and frontal photo annotation loaders.
 #include "fuzz_target.h"
 

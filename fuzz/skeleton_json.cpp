@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fuzz target skeleton_json: the skeleton file loader of the articulated warp.
 #include "fuzz_target.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Builds a multi-region morphable model (one PCA per region, blended at the borders, plus the global PCA) from
 // meshes in correspondence and writes it as a model file (HDF5, statismo layout + morphreg regions).
 // Prints, per region, its vertices, its components and how much shape variance the leading components explain.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fits a morphable head model to a profile photo (the silhouette) and a frontal photo (named landmarks) with
 // PhotoFitting (docs/method.md, "Fitting to photographs": approach 1, "joint", or approach 2, "tps", on the
 // orthographic pair), writes the fitted head as PLY and the fit's report as JSON.

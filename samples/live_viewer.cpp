@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Watch MorphableICP's align() converge: a RegistrationVisualizer plugged into the pcl::Registration visualisation
 // callback shows the deformed model, the scan and the accepted correspondences after every iteration.
 // The model and the scan come from the built-in synthetic population (a head not in the model, laser-scanned).

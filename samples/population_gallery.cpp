@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Renders a few heads of the built-in synthetic population, front and side views, into one PNG.
 // Usage (headless): xvfb-run -a ./sample_population_gallery heads.png [count] [seed]
 #include <morphreg/synthetic/head_generator.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Registers a scan to a morphable head model with MorphableICP (a pcl::Registration) behind a chain of PCL
 // correspondence rejectors, writes the fitted mesh as PLY coloured by residual (viridis, 0 to --scale mm) and
 // prints the registration report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Shared by the samples that run without any files: the built-in synthetic head population, a small multi-region
 // model built from it, and a simulated laser scan of a head that is not in that population.

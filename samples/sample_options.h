@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Shared by the samples: "--name value" options and flags over defaults, positional arguments, and a main() wrapper
 // that turns a bad argument into the usage text with exit code 2 and any other error into its message with exit 1.

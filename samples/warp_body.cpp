@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The thin plate spline use cases of the seed paper on the MakeHuman bodies (three subjects, standing and seated,
 // one vertex numbering; ../shared/data/makehuman_bodies, read in mm):
 //  - re-posturing: each standing body warped to its seated pose on the 51 major joint centres (plus, with

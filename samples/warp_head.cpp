@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A thin plate spline warps one synthetic head onto another head's landmarks (the built-in population, ids of
 // docs/landmarks.md). Landmarks land exactly; between them the warped head stays as close to the source shape as the smoothest
 // spline allows. Prints the mean / max vertex error against the other head before and after the warp and writes the

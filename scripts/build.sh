@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs dependencies, configures and builds morphreg (Release) into build/: every target, or only the targets
 # given as arguments (scripts/demo.sh builds just the command line, morphreg_cli).
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Slow checks that run outside CI (docs/FUZZING.md says when):
 #   scripts/check.sh sanitize                        GCC build with -fsanitize=address,undefined into build-asan/,
 #                                                    then the whole test suite under the sanitizers
@@ -18,7 +19,7 @@ export LSAN_OPTIONS="suppressions=$ROOT/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 
 FUZZ_TARGETS=(model_h5 mesh_ply mesh_obj mesh_pcd mesh_vtk mesh_stl mesh_off landmarks_pp landmarks_json
-              landmarks_csv landmarks_pts photo_json npy skeleton_json)
+              landmarks_csv landmarks_pts photo_json npy skeleton_json photo_png photo_jpeg model_contents mesh_glb mesh_gltf)
 
 install_missing() {
   local missing=()

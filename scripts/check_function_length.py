@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Lists the functions in the given folders whose bodies are longer than a limit; exits 1 if there are any.
 
 The project's layout (.clang-format) puts a function's opening brace on a line of its own, after the signature;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Quick start command 1: dependencies, a build of the command line alone (build/tools/morphreg, not the tests),
 # then the demo on the built-in synthetic data, into out/demo/.
 # The demo's PNG overlay renders through X: without a display it runs under a virtual X server (xvfb-run, installed

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # A one-node Slurm cluster on this machine, for the test of `register --scans` as a job array (docs/cluster.md):
 # its own munge key and munged, its own slurm.conf, state, spool and logs, all in one folder; two CPUs; the
 # controller's and the node daemon's ports picked free.

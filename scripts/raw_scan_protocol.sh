@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The raw-scan model protocol of README.md ("A model from raw scans"), through the command line: a model of 200
+# SPDX-License-Identifier: BSD-3-Clause
+# The raw-scan model protocol of docs/accuracy.md ("A model from raw scans"), by the command line: a model of 200
 # synthetic heads (seeds 1-200) registers simulated laser scans of 100 unseen heads (seeds 1001-1100; point clouds,
 # sigma 0.2 mm, the scanner's holes and random pose, true size), `build-model --from-scans` builds a model from them,
 # and `evaluate-model` compares it with the model of the same heads' true meshes on 20 further heads (1101-1120).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The real-scan zoo: every scan of ../shared/data/real_head_scans registered with `morphreg register`'s defaults only
 # (the ICT-FaceKit model built as the README builds it; --landmarks where a case has them), from its own pose, from
 # random poses (any rotation, scale 0.85-1.15, in mm and in m) and as simulated depth-camera frames (Kinect v1 class,
@@ -71,7 +72,10 @@ for mesh in lps_mesh:$LPS_MESH james:$SCANS/menpo3d_james/james.obj demoface:$SC
     for kind in crop scene; do
       frame=$OUT/${name}_depth_${view}_$kind.pcd
       "$TOOL" depth "$file" "$frame" $view 1000 7 $([ $kind = scene ] && echo scene) || exit 1
-      add_job "${name}_depth_${view}_$kind|$frame|$file|2.0||$frame.pose.json"
+      # The crops as organised PCDs in metres (PCL's grabbers), the scenes as depth images in mm (--depth)
+      scan=$frame
+      [ $kind = scene ] && scan=depth:${frame%.pcd}.png
+      add_job "${name}_depth_${view}_$kind|$scan|$file|2.0||$frame.pose.json"
     done
   done
 done
@@ -81,7 +85,9 @@ run_case () {
   IFS='|' read -r name scan truth target landmarks pose <<< "$1"
   local fit=$OUT/$name.fit.ply report=$OUT/$name.fit.json log=$OUT/$name.log start end code status score median
   start=$(date +%s.%N)
-  OMP_NUM_THREADS=1 "$MORPHREG" register --scan "$scan" --model "$MODEL" ${landmarks:+--landmarks "$landmarks"} \
+  local input=(--scan "$scan") image=${scan#depth:}
+  [[ $scan == depth:* ]] && input=(--depth "$image" --intrinsics "${image%.png}.intrinsics.json")
+  OMP_NUM_THREADS=1 "$MORPHREG" register "${input[@]}" --model "$MODEL" ${landmarks:+--landmarks "$landmarks"} \
     --out "$fit" --quiet > "$log" 2>&1
   code=$?
   end=$(date +%s.%N)

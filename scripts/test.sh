@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Quick start command 2: dependencies, configure, build, then every test through ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."

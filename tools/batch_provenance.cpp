@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "batch_provenance.h"
 #include "file_fingerprint.h"
 

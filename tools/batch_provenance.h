@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What produced a batch registration's outputs: each scan's report records the content hashes of its scan,
 // landmarks and model, the settings and morphreg's version, so that a resumed run redoes (and names) every scan

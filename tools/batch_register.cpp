@@ -1,17 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg register --scans`: a study's scans registered to one model, loaded once, several at a time;
 // resumable (a scan's report on disk, made from the same scan, landmarks, model, settings and version, means it is
 // done), shardable over a job array (a lock per shard), summarised.
+#include "option_checks.h"
 #include "batch_provenance.h"
 #include "batch_summary.h"
 #include "batch_test_hold.h"
 #include "output_lock.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/json_file.h>
-#include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
 #include <morphreg/io/scan_manifest.h>
 
 #include <omp.h>
@@ -198,30 +201,50 @@ runTasks (const std::vector<Task>& tasks, const MorphableModel::Ptr& model, int 
 }
 } // namespace
 
+namespace
+{
+/** The report of a scan that could not be registered: why, and what produced it. */
 nlohmann::json
-registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up)
+failureReport (const RegisterOptions& options, const std::string& why, Clock::time_point start)
+{
+  nlohmann::json failure = {{"status", "failed"},
+                            {"failure", why},
+                            {"scan", {{"file", options.scan}, {"landmarks", options.landmarks}}},
+                            {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
+  addProvenance (options, failure);
+  return failure;
+}
+} // namespace
+
+nlohmann::json
+registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up,
+                   const std::vector<std::string>& follow_up_outputs)
 {
   const auto start = Clock::now ();
-  for (const std::string& output : {options.out, reportPath (options)})
+  std::vector<std::string> files = {options.out, reportPath (options)};
+  files.insert (files.end (), follow_up_outputs.begin (), follow_up_outputs.end ());
+  for (const std::string& output : files)
     std::remove (partialPath (output).c_str ()); // left by a run killed mid-write
-  std::ostringstream log;                        // per-scan chatter would interleave between threads
-  try {
-    return registerScan (options, model, nullptr, 0.0, log, log, follow_up);
-  }
-  catch (const FitCheckFailure&) {
-    return readJsonFile (reportPath (options)); // written, and marked failed
-  }
-  catch (const std::exception& e) {
-    nlohmann::json failure = {
-        {"status", "failed"},
-        {"failure", e.what ()},
-        {"scan", {{"file", options.scan}, {"landmarks", options.landmarks}}},
-        {"timings_s", {{"total", std::chrono::duration<double> (Clock::now () - start).count ()}}}};
-    addProvenance (options, failure);
-    const std::string path = reportPath (options);
-    writeJsonFile (path, failure);
-    return failure;
-  }
+  std::string why;
+  {
+    OutputTransaction outputs (files);
+    std::ostringstream log; // per-scan chatter would interleave between threads
+    try {
+      nlohmann::json report = registerScan (options, model, nullptr, 0.0, log, log, follow_up);
+      outputs.commit ();
+      return report;
+    }
+    catch (const FitCheckFailure& e) {
+      outputs.commit (); // written, and marked failed
+      return e.report ();
+    }
+    catch (const std::exception& e) {
+      why = e.what ();
+    }
+  } // the scan's outputs rolled back: its report records the failure alone
+  const nlohmann::json failure = failureReport (options, why, start);
+  writeReport (reportPath (options), failure);
+  return failure;
 }
 
 CLI::Option*
@@ -240,7 +263,7 @@ addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batc
       ->add_option ("--jobs", batch.jobs,
                     "batch mode: scans registered at once (0: one per core this process may run on, its CPU "
                     "affinity; each fit gets cores/jobs threads)")
-      ->check (CLI::Range (0, 4096))
+      ->check (inRange (0, 4096))
       ->needs (scans)
       ->capture_default_str ();
   command
@@ -261,14 +284,74 @@ requireBatchOptions (const RegisterOptions& options, const BatchOptions& batch)
 {
   if (batch.out_dir.empty ())
     throw InvalidInputError ("register --scans: give --out-dir, the folder of the outputs");
-  if (!options.screenshot.empty () || !options.truth.empty () || !options.landmarks.empty () ||
-      !options.report.empty ())
-    throw InvalidInputError ("register --scans: --screenshot, --truth, --landmarks and --report are for one scan "
-                             "(landmark files go in the manifest's second column)");
+  if (!options.screenshot.empty () || !options.convergence_plot.empty () || !options.truth.empty () ||
+      !options.landmarks.empty () || !options.report.empty ())
+    throw InvalidInputError ("register --scans: --screenshot, --convergence-plot, --truth, --landmarks and --report "
+                             "are for one scan (landmark files go in the manifest's second column)");
+}
+
+/** The summary files' path without extension: summary, or summary.shard-I-of-N for one shard. */
+std::string
+summaryBase (const BatchOptions& batch, const Shard& shard)
+{
+  return (fs::path (batch.out_dir) / (shard.count > 1 ? "summary." + shard.tag () : std::string ("summary"))).string ();
+}
+
+/** Refuses an id that names the summaries' files (summary, summary.shard-I-of-N, ...): a scan's report would
+ *  overwrite a summary, or a summary the report, in this run or a sharded one. */
+void
+requireOwnId (const ScanEntry& entry)
+{
+  if (entry.id == "summary" || entry.id.rfind ("summary.", 0) == 0)
+    throw InvalidInputError (entry.where + ": the scan id '" + entry.id +
+                             "' would name files of the run's summaries (summary.csv, summary.json, "
+                             "summary.shard-I-of-N.*): give the scan another id (the manifest's third column)");
+}
+
+/** Every file the run reads and writes, for every scan of the study (whatever the shard), checked before any work
+ *  (OutputPlan): no output on an input or in the folder of scans, no two scans' outputs on one file. */
+OutputPlan
+batchPlan (const RegisterOptions& options, const BatchOptions& batch, const ScanManifest& study, const Shard& shard)
+{
+  OutputPlan plan;
+  plan.addInput (options.model, "--model");
   std::error_code ec;
-  fs::create_directories (batch.out_dir, ec);
-  if (!fs::is_directory (batch.out_dir, ec))
-    throw IoError (batch.out_dir + ": cannot create the output folder");
+  if (fs::is_directory (options.scans, ec))
+    plan.addInputFolder (options.scans, "--scans");
+  else
+    plan.addInput (options.scans, "--scans");
+  for (const ScanEntry& entry : study) {
+    requireOwnId (entry);
+    plan.addInput (entry.scan, "the scan of id '" + entry.id + "'");
+    plan.addInput (entry.landmarks, "the landmarks of id '" + entry.id + "'");
+  }
+  for (const ScanEntry& entry : study) {
+    const fs::path base = fs::path (batch.out_dir) / entry.id;
+    plan.addOutput (base.string () + ".ply", "the fitted mesh of scan '" + entry.id + "'");
+    plan.addOutput (base.string () + ".json", "the report of scan '" + entry.id + "'");
+  }
+  plan.addOutput (summaryBase (batch, shard) + ".csv", "the summary");
+  plan.addOutput (summaryBase (batch, shard) + ".json", "the summary");
+  return plan;
+}
+
+/** Creates the output folder and checks the run's plan there; a folder created for a run refused is removed. */
+void
+prepareOutputFolder (const OutputPlan& plan, const std::string& out_dir)
+{
+  std::error_code ec;
+  const bool existed = fs::exists (out_dir, ec);
+  fs::create_directories (out_dir, ec);
+  if (!fs::is_directory (out_dir, ec))
+    throw IoError (out_dir + ": cannot create the output folder");
+  try {
+    plan.check ();
+  }
+  catch (const Error&) {
+    if (!existed)
+      fs::remove (out_dir, ec);
+    throw;
+  }
 }
 
 /** What a run does with the scans of its share: those to register, the summary rows of those done, and why some
@@ -316,13 +399,6 @@ planTasks (const ScanManifest& scans, const RegisterOptions& options, const Batc
       plan.done.push_back (summaryFromReport (entry.id, entry.scan, report));
   }
   return plan;
-}
-
-/** The summary files' path without extension: summary, or summary.shard-I-of-N for one shard. */
-std::string
-summaryBase (const BatchOptions& batch, const Shard& shard)
-{
-  return (fs::path (batch.out_dir) / (shard.count > 1 ? "summary." + shard.tag () : std::string ("summary"))).string ();
 }
 
 /** The closing line of a batch run; exits 130 after an interrupt, throws FitCheckFailure if a scan failed. */
@@ -399,13 +475,14 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
   const Shard shard = parseShard (batch.shard);
   const ScanManifest study = loadScanList (options.scans);
   const ScanManifest scans = manifestShard (study, shard.index, shard.count);
+  prepareOutputFolder (batchPlan (options, batch, study, shard), batch.out_dir);
   const RunRecord run = runRecord (options, study);
   const OutputLock lock (batch.out_dir, shard.index, shard.count, run.fingerprint, std::cout);
   std::signal (SIGTERM, onTerminate); // from here on, a cancelled run releases its lock
   const Plan plan = planTasks (scans, options, batch, run);
 
   const auto start = Clock::now ();
-  const MorphableModel::Ptr model = loadModel (options.model);
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   const int cores = usableCores ();
   const int jobs =
       std::max (1, std::min<int> (batch.jobs > 0 ? batch.jobs : cores, static_cast<int> (plan.tasks.size ())));
@@ -413,7 +490,9 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch)
   announcePlan (plan, scans.size (), shard, jobs, threads_per_fit);
   const std::vector<ScanSummary> rows = runPlan (plan, model, jobs, threads_per_fit, options.quiet, shard);
   const std::string base = summaryBase (batch, shard);
+  OutputTransaction summary ({base + ".csv", base + ".json"});
   writeSummary (base, rows, shard.count > 1 ? shard.text () : "all", run.summary ());
+  summary.commit ();
   concludeBatch (rows, plan.tasks.size (), std::chrono::duration<double> (Clock::now () - start).count (), base);
 }
 

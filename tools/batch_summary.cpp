@@ -1,4 +1,6 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "batch_summary.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -134,7 +136,7 @@ writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std:
               const nlohmann::json& run)
 {
   std::sort (rows.begin (), rows.end (), [] (const ScanSummary& a, const ScanSummary& b) { return a.id < b.id; });
-  writeJsonFile (base + ".json", summaryJson (rows, shard, run));
+  writeReport (base + ".json", summaryJson (rows, shard, run));
   writeFileAtomically (base + ".csv", csvText (rows));
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The summary of a batch registration (one row per scan, from its report) and the merging of shard summaries.
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "batch_test_hold.h"
 
 #include <morphreg/common/error.h>

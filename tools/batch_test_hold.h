@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // TEST-ONLY fault-injection point of `register --scans`, so that the batch tests (test/scripts/cli/batch.sh, the
 // Slurm test) kill, interrupt or cancel a run at a known scan instead of racing it against a timer. Not a user

@@ -1,13 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model --from-scans`: every raw scan of a study registered with a given model and resampled into its
 // topology (as `resample` does), the scans that fail reported and left out, and the model built from the rest.
 #include "batch_summary.h"
 #include "mesh_annotations.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/io/scan_manifest.h>
 
 #include <cmath>
@@ -69,7 +69,8 @@ registerAndResample (const BuildModelOptions& options, const ScanEntry& entry, c
             resampleFit (options.resampling, entry.scan, resampled, scan, fitted, report);
         if (result)
           mesh = std::move (result->mesh);
-      });
+      },
+      {resampled});
 }
 
 /** The summary row of one scan: status, why it failed, fit RMS, coverage and holes. */
@@ -123,21 +124,17 @@ MorphableModel::Ptr
 buildFromScans (const BuildModelOptions& options, const std::string& report_dir, nlohmann::json& summary)
 {
   const ScanManifest scans = loadScanList (options.from_scans);
-  std::error_code ec;
-  fs::create_directories (report_dir, ec);
-  if (!fs::is_directory (report_dir, ec))
-    throw IoError (report_dir + ": cannot create the report folder");
-  const MorphableModel::Ptr registering = loadModel (options.registration.model);
+  const MorphableModel::Ptr registering = loadModelFile (options.registration.model, std::cout);
   nlohmann::json rows = nlohmann::json::array ();
   const std::vector<TriangleMesh> meshes = resampleScans (options, scans, report_dir, registering, rows);
   const std::string counts = std::to_string (meshes.size ()) + " of " + std::to_string (scans.size ()) +
                              " scans registered and resampled, " + std::to_string (scans.size () - meshes.size ()) +
                              " left out";
-  writeJsonFile ((fs::path (report_dir) / "summary.json").string (), {{"scans", scans.size ()},
-                                                                      {"included", meshes.size ()},
-                                                                      {"left_out", scans.size () - meshes.size ()},
-                                                                      {"model", options.registration.model},
-                                                                      {"rows", rows}});
+  writeReport ((fs::path (report_dir) / "summary.json").string (), {{"scans", scans.size ()},
+                                                                    {"included", meshes.size ()},
+                                                                    {"left_out", scans.size () - meshes.size ()},
+                                                                    {"model", options.registration.model},
+                                                                    {"rows", rows}});
   if (meshes.size () < 2)
     throw InvalidInputError (options.from_scans + ": " + counts + "; a model needs at least two");
   const Eigen::Index num_vertices = registering->numVertices ();

@@ -1,17 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
 #include "commands.h"
 #include "mesh_annotations.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/common/memory_budget.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/ict_facekit.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
 #include <morphreg/io/scan_manifest.h>
 #include <morphreg/model/ict_region_model.h>
 
@@ -52,12 +55,13 @@ readMeshFolder (const std::string& directory)
   }
   for (const auto& entry : std::filesystem::directory_iterator (directory)) {
     const std::string ext = fileExtension (entry.path ().string ());
-    if (entry.is_regular_file () && (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl"))
+    if (entry.is_regular_file () &&
+        (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl" || ext == ".gltf" || ext == ".glb"))
       folder.files.push_back (entry.path ().string ());
   }
   std::sort (folder.files.begin (), folder.files.end ());
   if (folder.files.empty ())
-    throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl) in the folder");
+    throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl .gltf .glb) in the folder");
   return folder;
 }
 
@@ -120,6 +124,9 @@ buildFromIct (const BuildModelOptions& options, nlohmann::json& summary)
     std::cerr << "loading the ICT-FaceKit model from " << options.ict_directory << " and sampling "
               << options.ict_samples << " heads\n";
   const MorphableModel::Ptr ict = loadIctFaceKit (options.ict_directory);
+  requireMemory (ModelBuilder::memoryEstimate (static_cast<std::size_t> (options.ict_samples), ict->numVertices ()),
+                 "build-model --samples " + std::to_string (options.ict_samples) + " (heads of the ICT model's " +
+                     std::to_string (ict->numVertices ()) + " vertices)");
   summary["source"] = {
       {"ict_facekit", options.ict_directory}, {"samples", options.ict_samples}, {"seed", options.seed}};
   return buildIctRegionModel (*ict, options.ict_samples, options.seed, options.settings);
@@ -134,23 +141,59 @@ runBuildModel (const BuildModelOptions& options)
             << " landmarks (" << summary["seconds"] << " s)\n";
 }
 
-/** The files build-model reads, which its output must not overwrite. */
-std::vector<std::string>
-inputFiles (const BuildModelOptions& options)
+/** The files and folders build-model reads, which its outputs must not overwrite. */
+void
+addInputs (const BuildModelOptions& options, OutputPlan& plan)
 {
-  std::vector<std::string> inputs = options.meshes;
+  for (const std::string& mesh : options.meshes)
+    plan.addInput (mesh, "--mesh");
   if (!options.directory.empty ()) {
-    const std::vector<std::string> folder_files = readMeshFolder (options.directory).files;
-    inputs.insert (inputs.end (), folder_files.begin (), folder_files.end ());
-    inputs.push_back (options.directory + "/population.json");
+    plan.addInputFolder (options.directory, "--dir");
+    for (const std::string& file : readMeshFolder (options.directory).files)
+      plan.addInput (file, "a mesh of --dir");
   }
   if (!options.from_scans.empty ()) {
-    for (const ScanEntry& entry : loadScanList (options.from_scans))
-      inputs.insert (inputs.end (), {entry.scan, entry.landmarks});
-    inputs.insert (inputs.end (), {options.from_scans, options.registration.model});
+    for (const ScanEntry& entry : loadScanList (options.from_scans)) {
+      plan.addInput (entry.scan, "the scan of id '" + entry.id + "'");
+      plan.addInput (entry.landmarks, "the landmarks of id '" + entry.id + "'");
+    }
+    std::error_code ec;
+    if (std::filesystem::is_directory (options.from_scans, ec))
+      plan.addInputFolder (options.from_scans, "--from-scans");
+    else
+      plan.addInput (options.from_scans, "--from-scans");
+    plan.addInput (options.registration.model, "--model");
   }
-  inputs.insert (inputs.end (), {options.regions, options.landmark_vertices, options.ict_directory});
-  return inputs;
+  plan.addInput (options.regions, "--regions");
+  plan.addInput (options.landmark_vertices, "--landmark-vertices");
+  plan.addInputFolder (options.ict_directory, "--from-ict");
+}
+
+/** The outputs of --from-scans in \a report_dir: each scan's report, fit and resampled mesh, and the summary. */
+void
+addScanOutputs (const BuildModelOptions& options, const std::string& report_dir, OutputPlan& plan)
+{
+  for (const ScanEntry& entry : loadScanList (options.from_scans)) {
+    const std::string base = (std::filesystem::path (report_dir) / entry.id).string ();
+    plan.addOutput (base + ".json", "the report of scan '" + entry.id + "'");
+    plan.addOutput (base + "_fit.ply", "the fit of scan '" + entry.id + "'");
+    plan.addOutput (base + ".ply", "the resampled mesh of scan '" + entry.id + "'");
+  }
+  plan.addOutput ((std::filesystem::path (report_dir) / "summary.json").string (), "the summary of --report-dir");
+}
+
+/** The summary of the model written: regions, components, vertices, landmarks. */
+void
+summariseModel (const MorphableModel& model, nlohmann::json& summary)
+{
+  std::vector<int> components;
+  for (const ModelRegion& region : model.regions ()) {
+    summary["regions"].push_back (region.name);
+    components.push_back (static_cast<int> (region.variances.size ()));
+  }
+  summary["components"] = components;
+  summary["vertices"] = model.numVertices ();
+  summary["landmarks"] = model.landmarks ().size ();
 }
 } // namespace
 
@@ -158,14 +201,18 @@ nlohmann::json
 buildModelFile (const BuildModelOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
-  const std::vector<std::string> inputs = inputFiles (options);
-  OutputFiles outputs ({options.out}, inputs);
   const std::string report_dir = options.report_dir.empty ()
                                      ? std::filesystem::path (options.out).replace_extension ().string () + "_scans"
                                      : options.report_dir;
-  std::optional<OutputFolder> reports;
+  OutputPlan plan;
+  addInputs (options, plan);
+  plan.addOutput (options.out, "--out");
   if (!options.from_scans.empty ())
-    reports.emplace (report_dir, inputs);
+    addScanOutputs (options, report_dir, plan);
+  // The report folder is made (and removed again on failure) by the transaction before the plan checks it.
+  OutputTransaction outputs ({options.out}, options.from_scans.empty () ? std::vector<std::string> ()
+                                                                        : std::vector<std::string>{report_dir});
+  plan.check ();
   nlohmann::json summary = {{"file", options.out},
                             {"settings",
                              {{"max_components", options.settings.max_components},
@@ -175,20 +222,14 @@ buildModelFile (const BuildModelOptions& options)
   const MorphableModel::Ptr model = !options.from_scans.empty ()      ? buildFromScans (options, report_dir, summary)
                                     : !options.ict_directory.empty () ? buildFromIct (options, summary)
                                                                       : buildFromMeshes (options, summary);
-  model->setMetadata ({{"builder", "morphreg build-model"}, {"source", summary["source"].dump ()}});
+  model->setMetadata ({{"builder", "morphreg build-model"},
+                       {"source", summary["source"].dump ()},
+                       {"morphreg_version", MORPHREG_VERSION},
+                       {"command_line", commandLine ()}});
   saveModel (options.out, *model);
-  std::vector<int> components;
-  for (const ModelRegion& region : model->regions ()) {
-    summary["regions"].push_back (region.name);
-    components.push_back (static_cast<int> (region.variances.size ()));
-  }
-  summary["components"] = components;
-  summary["vertices"] = model->numVertices ();
-  summary["landmarks"] = model->landmarks ().size ();
+  summariseModel (*model, summary);
   summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
-  outputs.keep ();
-  if (reports)
-    reports->keep ();
+  outputs.commit ((std::filesystem::path (report_dir) / "summary.json").string ());
   return summary;
 }
 
@@ -202,7 +243,7 @@ addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
   command
       ->add_option ("--variance", settings.explained_variance,
                     "keep the fewest components explaining this fraction of each region's variance")
-      ->check (CLI::Range (1e-6, 1.0))
+      ->check (inRange (1e-6, 1.0))
       ->capture_default_str ();
   command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
       ->check (nonNegative ())
@@ -252,7 +293,8 @@ registerBuildModelCommand (CLI::App& app)
   auto options = std::make_shared<BuildModelOptions> ();
   CLI::App* command =
       app.add_subcommand ("build-model", "build a (multi-region) PCA model from meshes in correspondence");
-  auto* meshes = command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable");
+  auto* meshes =
+      command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl .gltf .glb), repeatable");
   auto* directory = command->add_option ("-d,--dir", options->directory,
                                          "folder of meshes (the heads of its population.json if present)");
   command->add_option (
@@ -269,7 +311,7 @@ registerBuildModelCommand (CLI::App& app)
   addFromScansOptions (command, *options, scans);
   addResamplingOptions (command, options->resampling);
   command->add_option ("--samples", options->ict_samples, "heads drawn from the ICT model (with --from-ict)")
-      ->check (CLI::Range (2, 100000))
+      ->check (inRange (2, 100000))
       ->capture_default_str ();
   command->add_option ("--seed", options->seed, "seed of the ICT samples")->capture_default_str ();
   command->add_option ("-o,--out", options->out, "model file to write (HDF5, statismo layout)")->capture_default_str ();

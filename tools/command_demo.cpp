@@ -1,9 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg demo`: the main job end to end on the built-in data. Generates the synthetic population, builds a
 // 7-region model from it, simulates a scan of a head not in the population, registers the model to the scan and
 // writes the fitted mesh, the JSON report and a PNG overlay, with the fit's error against the true head.
 #include "commands.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
@@ -30,6 +30,7 @@ struct DemoOptions
   std::uint64_t seed = 1;
   int model_components = 20;
   bool screenshot = true;
+  bool convergence_plot = false;
   bool use_landmarks = false;
   bool quiet = false;
   synthetic::ScanSimulator::Parameters scanner;
@@ -55,14 +56,17 @@ runDemo (DemoOptions options)
 {
   const auto start = std::chrono::steady_clock::now ();
   const synthetic::ScanSimulator check_scanner (options.scanner); // bad scanner settings fail before any work
-  if (options.screenshot && !std::getenv ("DISPLAY"))
-    throw InvalidInputError ("demo: the overlay screenshot renders through X and $DISPLAY is unset; run under "
-                             "`xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
-  OutputFolder output (options.out, {});
+  if ((options.screenshot || options.convergence_plot) && !std::getenv ("DISPLAY"))
+    throw InvalidInputError ("demo: the overlay screenshot and the convergence plot render through X and $DISPLAY is "
+                             "unset; run under `xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
+  // Each step's outputs are committed when the step is complete (each later step reads them); report.json, written
+  // last, marks a complete demo.
   const synthetic::HeadGenerator generator (options.resolution);
   const std::string population = options.out + "/population";
+  OutputTransaction population_output ({}, {population});
   writePopulation (population, generator, generator.population (options.count, options.seed), options.seed,
                    options.quiet);
+  population_output.commit (population + "/population.json");
 
   BuildModelOptions model;
   model.directory = population;
@@ -75,7 +79,9 @@ runDemo (DemoOptions options)
 
   // The scanned subject is not in the population: head seed + count, the next one drawn.
   const std::uint64_t subject_seed = options.seed + static_cast<std::uint64_t> (options.count);
+  OutputTransaction scan_output ({}, {options.out + "/scan"});
   writeSubjectScan (options, generator, subject_seed);
+  scan_output.commit ();
 
   RegisterOptions& fit = options.registration;
   fit.scan = options.out + "/scan/scan.pcd";
@@ -85,8 +91,9 @@ runDemo (DemoOptions options)
   fit.out = options.out + "/fitted.ply";
   fit.report = options.out + "/report.json";
   fit.screenshot = options.screenshot ? options.out + "/overlay.png" : "";
+  fit.convergence_plot = options.convergence_plot ? options.out + "/convergence.png" : "";
   fit.quiet = options.quiet;
-  const nlohmann::json report = keepOnSuccessOrFitFailure (output, [&] { return registerScanFile (fit); });
+  const nlohmann::json report = registerScanFile (fit);
 
   const nlohmann::json& truth = report["truth_vertex_error_mm"];
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
@@ -108,16 +115,18 @@ registerDemoCommand (CLI::App& app)
       app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out");
   command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
   command->add_option ("-n,--count", options->count, "population size")
-      ->check (CLI::Range (2, 5000))
+      ->check (inRange (2, 5000))
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "population seed")->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
-      ->check (CLI::Range (20, 44))
+      ->check (inRange (20, 44))
       ->capture_default_str ();
   command->add_option ("--model-components", options->model_components, "components per region kept in the model")
       ->check (positive ())
       ->capture_default_str ();
   command->add_flag ("--no-screenshot{false}", options->screenshot, "skip the PNG overlay (runs without X)");
+  command->add_flag ("--convergence-plot", options->convergence_plot,
+                     "plot the fit's RMS per iteration into <out>/convergence.png (needs X)");
   command->add_flag ("--use-landmarks", options->use_landmarks,
                      "start the registration from the scan's true landmarks instead of the coarse alignment");
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");

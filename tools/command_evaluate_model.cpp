@@ -1,12 +1,14 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg evaluate-model`: a model's compactness, generalisation (on held-out meshes) and specificity (against its
 // training meshes), per number of components, as text or JSON.
+#include "option_checks.h"
 #include "commands.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
 #include <morphreg/model/model_quality.h>
 
 #include <nlohmann/json.hpp>
@@ -154,7 +156,7 @@ registerEvaluateModelCommand (CLI::App& app)
   command->add_option ("--training", options->training,
                        "the model's training meshes, folders or files (for specificity; without it none)");
   command->add_option ("--samples", options->samples, "random model shapes for specificity")
-      ->check (CLI::Range (1, 10000000))
+      ->check (inRange (1, 10000000))
       ->capture_default_str ();
   command->add_option ("--seed", options->seed, "seed of the random shapes")->capture_default_str ();
   command
@@ -166,10 +168,10 @@ registerEvaluateModelCommand (CLI::App& app)
   command->footer ("Distances are mean vertex distances in correspondence (mm), each mesh moved rigidly onto the "
                    "model's mean first; the measures use the model's global PCA (its statismo part).");
   command->callback ([options] () {
-    const MorphableModel::Ptr model = loadModel (options->model);
+    const MorphableModel::Ptr model = loadModelFile (options->model, std::cerr);
     const nlohmann::json result = evaluate (*options, *model);
     if (options->json)
-      std::cout << result.dump (2) << '\n';
+      std::cout << stamped (result).dump (2) << '\n';
     else
       printTable (result);
   });

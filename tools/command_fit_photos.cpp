@@ -1,20 +1,25 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg fit-photos`: a head model fitted to photos (docs/method.md, "Fitting to photographs"): any number of
 // `--view` photos with their landmarks, cameras and outlines, or the orthographic `--profile` and `--frontal` pair;
 // written as PLY (coloured by the photos, or by the error against a known truth) with a JSON report.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
-#include "output_files.h"
+#include "pipeline.h"
+#include "provenance.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/photo_fit_options.h>
 #include <morphreg/photo/photo_texture.h>
 #include <morphreg/photo/photo_view_io.h>
+#include <morphreg/io/rgb_image.h>
 
 #include <chrono>
 #include <cmath>
@@ -112,6 +117,9 @@ Photos
 pairPhotos (const FitPhotosOptions& options)
 {
   const ProfileView profile = loadProfileView (options.profile);
+  if (options.frontal.empty () && options.approach != "profile")
+    throw InvalidInputError ("fit-photos --approach " + options.approach +
+                             " needs --frontal (the frontal landmarks); only --approach profile fits without them");
   const std::optional<FrontalView> frontal =
       options.frontal.empty () ? std::nullopt : std::optional<FrontalView> (loadFrontalView (options.frontal));
   if (!options.photo.empty () && !frontal)
@@ -210,14 +218,14 @@ printFitSummary (const FitPhotosOptions& options, const PhotoFit& fit)
               << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
 }
 
-/** Writes the fitted mesh coloured by its error against --truth, by the photos, or plain; returns what the colours
+/** Writes the fitted mesh coloured by its error against --truth (with the error as its quality), by the photos, or plain; returns what the colours
  *  show. */
 std::string
 writeFittedMesh (const FitPhotosOptions& options, const PhotoFit& fit, const Photos& photos, nlohmann::json& report)
 {
   if (!options.truth.empty ()) {
     const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
-    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max)));
+    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max), errors));
     return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
   }
   std::vector<TexturePhoto> textured;
@@ -238,17 +246,26 @@ void
 runFitPhotos (const FitPhotosOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
-  std::vector<std::string> inputs{options.model, options.profile, options.frontal, options.photo, options.truth};
+  OutputPlan plan;
+  for (const auto& [input, role] : {std::pair (options.model, "--model"), std::pair (options.profile, "--profile"),
+                                    std::pair (options.frontal, "--frontal"), std::pair (options.photo, "--photo"),
+                                    std::pair (options.truth, "--truth")})
+    plan.addInput (input, role);
   for (const PhotoViewFiles& view : options.views)
-    inputs.insert (inputs.end (), {view.image, view.landmarks, view.camera, view.outline});
-  OutputFiles outputs ({options.out, options.report}, inputs);
-  const MorphableModel::ConstPtr model = loadModel (options.model);
+    for (const std::string& input : {view.image, view.landmarks, view.camera, view.outline})
+      plan.addInput (input, "--view");
+  plan.addOutput (options.out, "--out");
+  plan.addOptionalOutput (options.report, "--report");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
+  const MorphableModel::ConstPtr model = loadModelFile (options.model, std::cout);
   const Photos photos = loadPhotos (options);
   const PhotoFit fit = fitViews (options, model, photos);
 
   nlohmann::json report = photoFitJson (fit);
   report["status"] = "ok";
-  report["units"] = "mm (residuals, coefficients); the similarity maps model mm into the views' frame";
+  report["units"] = "mm (residuals, coefficients_mm; coefficients in prior standard deviations); the similarity maps "
+                    "model mm into the views' frame";
   report["inputs"] = {{"model", options.model}, {"photos", photos.sources}};
   report["warnings"] = fitWarnings (fit);
   report["settings"] = toJson (static_cast<const PhotoFitOptions&> (options));
@@ -257,9 +274,13 @@ runFitPhotos (const FitPhotosOptions& options)
   report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
   report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
-    writeJsonFile (options.report, report);
-  outputs.keep ();
-  std::cout << "wrote " << options.out << " (model frame, mm; colours: " << colouring << ")\n";
+    writeReport (options.report, report);
+  outputs.commit ();
+  std::cout << "wrote " << options.out << " (model frame, mm) "
+            << (colouring == "none" ? "(no colours)"
+                                    : meshContents (options.out, colouring,
+                                                    options.truth.empty () ? "" : "error against the truth in mm"))
+            << '\n';
 }
 
 /** Groups the --view, --landmarks, --camera and --outline values in the order given: each of the last three belongs
@@ -331,7 +352,7 @@ addFitSettingOptions (CLI::App* command, const std::shared_ptr<FitPhotosOptions>
   command
       ->add_option ("--coefficient-limit", options->coefficient_limit,
                     "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
-      ->check (positive ())
+      ->check (positiveOrInfinite ())
       ->capture_default_str ();
   command->add_option ("--landmark-weight", options->landmark_weight, "weight of each landmark's rows (> 0)")
       ->check (positive ())
@@ -380,7 +401,11 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--colour-max", options->colour_max, "error (mm) at the top of the colour scale with --truth")
       ->check (positive ())
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "fitted head to write (PLY, model frame, mm)")->capture_default_str ();
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("fitted head to write (model frame, mm); with --truth or --photo",
+                                    "error against the truth, or the frontal photo", "with --truth, the error in mm"))
+      ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write");
   command->add_flag ("-q,--quiet", options->quiet, "less output");
   command->callback ([options, view_groups] () {

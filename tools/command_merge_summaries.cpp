@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg merge-summaries`: the summaries of the shards of a batch registration (register --scans --shard I/N,
 // e.g. a Slurm job array) combined into the summary one run over every scan writes.
 #include "batch_provenance.h"
@@ -5,6 +6,8 @@
 #include "commands.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -108,10 +111,18 @@ runMerge (const MergeOptions& options)
 {
   const std::vector<std::string> files =
       options.summaries.empty () ? shardSummariesIn (options.out_dir) : options.summaries;
+  const std::string base = (fs::path (options.out_dir) / "summary").string ();
+  OutputPlan plan;
+  for (const std::string& file : files)
+    plan.addInput (file, "a shard summary");
+  plan.addOutput (base + ".csv", "the merged summary");
+  plan.addOutput (base + ".json", "the merged summary");
+  plan.check ();
   nlohmann::json run;
   const std::vector<ScanSummary> rows = mergeShards (files, run);
-  const std::string base = (fs::path (options.out_dir) / "summary").string ();
+  OutputTransaction outputs (plan.outputs ());
   writeSummary (base, rows, "all", run);
+  outputs.commit ();
   const auto failed =
       std::count_if (rows.begin (), rows.end (), [] (const ScanSummary& r) { return r.status != "ok"; });
   std::cout << "merged " << files.size () << " shard summaries: " << rows.size () << " scans, " << failed

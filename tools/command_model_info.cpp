@@ -1,5 +1,8 @@
-// `morphreg model-info`: what a model file holds (regions, components, variances, landmarks), as text or JSON.
+// SPDX-License-Identifier: BSD-3-Clause
+// `morphreg model-info`: what a model file holds (regions, components, variances, landmarks, the file's unit), as
+// text or JSON.
 #include "commands.h"
+#include "provenance.h"
 
 #include <morphreg/io/model_io.h>
 
@@ -39,9 +42,11 @@ describeModel (const std::string& path, const MorphableModel& model)
                         {"vertices", region.vertices.size ()},
                         {"components", region.variances.size ()},
                         {"variances_mm2", toStdVector (region.variances)}});
+  const auto file_units = model.metadata ().find (kFileUnitsKey);
   return {
       {"file", path},
       {"units", model.units ()},
+      {"file_units", file_units == model.metadata ().end () ? std::string ("mm") : file_units->second},
       {"vertices", model.numVertices ()},
       {"triangles", model.triangles ().cols ()},
       {"regions", regions},
@@ -83,7 +88,7 @@ printText (const nlohmann::json& info)
             << "landmarks (" << info["landmarks"].size () << "):";
   for (const auto& [id, vertex] : info["landmarks"].items ())
     std::cout << ' ' << id << '=' << vertex;
-  std::cout << '\n';
+  std::cout << "\nthe file's unit: " << info["file_units"].get<std::string> () << '\n';
 }
 } // namespace
 
@@ -99,7 +104,7 @@ registerModelInfoCommand (CLI::App& app)
   command->callback ([options] () {
     const nlohmann::json info = describeModel (options->model, *loadModel (options->model));
     if (options->json)
-      std::cout << info.dump (2) << '\n';
+      std::cout << stamped (info).dump (2) << '\n';
     else
       printText (info);
   });

@@ -1,20 +1,28 @@
-// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours = residual), a JSON report and
-// optionally a screenshot of the fit; with --truth, the fit's vertex error against the true mesh.
+// SPDX-License-Identifier: BSD-3-Clause
+// `morphreg register`: a scan + a model file -> the fitted mesh (vertex colours: the scan's or the residual; vertex
+// quality: the residual), a JSON report and optionally a screenshot of the fit; with --truth, the fit's vertex error
+// against the true mesh.
 #include "commands.h"
+#include "mesh_output.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "pipeline.h"
 #include "progress.h"
+#include "display_inputs.h"
+#include "provenance.h"
+#include "scan_colours.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/depth_image_io.h>
+#include <morphreg/io/file_format.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/registration/iteration_progress.h>
 #include <morphreg/registration/morphable_icp.h>
@@ -23,10 +31,15 @@
 #include <morphreg/registration/scan_units.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/common/colour_map.h>
+#include <morphreg/visualization/convergence_plot.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
+#include <pcl/common/io.h>
+
 #include <algorithm>
+#include <limits>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -48,17 +61,6 @@ double
 secondsSince (Clock::time_point start)
 {
   return std::chrono::duration<double> (Clock::now () - start).count ();
-}
-
-/** The colour scale (mm) of the residual map: the given maximum, else the 95th percentile of the residuals. */
-double
-colourScale (const Eigen::VectorXd& residuals, double requested)
-{
-  if (requested > 0.0)
-    return requested;
-  const std::vector<double> finite = sortedFinite (residuals);
-  const double percentile = finite.empty () ? 0.0 : finite[(finite.size () * 95) / 100];
-  return std::max (percentile, 1e-3);
 }
 
 /** \a scan without its missing points (PCL marks them NaN). An infinite coordinate is no such mark but a broken
@@ -131,18 +133,43 @@ truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const E
   return report;
 }
 
-/** Scan points and the fitted model coloured by residual, seen from the fitted face's front-left. */
+/** The fitted model coloured by residual under a sparse sample of the scan's points (small, grey: no moiré), seen
+ *  from the fitted face's front-left, the head filling the picture. */
 void
 saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options,
              const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
              const Eigen::VectorXd& residuals, double scale, const Eigen::Matrix4d& pose)
 {
-  viewer.addTargetCloud (scan, "scan", 0, 1.0);
-  viewer.addResidualHeatMap (fitted, residuals, scale);
+  const std::size_t scan_points = static_cast<std::size_t> (options.width) * options.height / 60;
+  viewer.addScanOverlay (scan, scan_points, "scan");
+  viewer.addResidualHeatMap (fitted, residuals, scale, "residuals");
+  viewer.setFramedShapes ({"residuals"});
   const Eigen::Matrix3d linear = pose.topLeftCorner<3, 3> ();
   const Eigen::Matrix3d rotation = linear / std::cbrt (linear.determinant ());
   viewer.resetCamera (rotation * Eigen::Vector3d (0.5, 0.15, 1.0).normalized (), rotation * Eigen::Vector3d::UnitY ());
   viewer.saveScreenshot (options.screenshot, options.width, options.height);
+}
+
+/** The overlay (with a viewer) and the convergence plot (if asked), recorded in \a report; returns the seconds. */
+double
+saveFigures (RegistrationVisualizer* viewer, const RegisterOptions& options, Icp& icp,
+             const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted, double scale,
+             nlohmann::json& report)
+{
+  const auto start = Clock::now ();
+  if (viewer) {
+    saveOverlay (*viewer, options, scan, fitted, icp.getVertexResiduals (), scale,
+                 icp.getFinalTransformation ().cast<double> ());
+    report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
+  }
+  if (!options.convergence_plot.empty ()) {
+    const int width = 800, height = 500;
+    saveConvergencePlot (options.convergence_plot, icp.getRegistrationReport (),
+                         "registration of " + std::filesystem::path (options.scan).filename ().string (), width,
+                         height);
+    report["convergence_plot"] = {{"file", options.convergence_plot}, {"width", width}, {"height", height}};
+  }
+  return secondsSince (start);
 }
 
 void
@@ -156,27 +183,69 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
 } // namespace
 
 /** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path)
+ScanCloud
+loadScan (const RegisterOptions& options)
 {
-  auto scan = loadCloud<pcl::PointNormal> (path);
+  const std::string& path = options.scan;
+  pcl::PointCloud<pcl::PointNormal>::Ptr scan;
+  if (options.intrinsics.empty ())
+    scan = loadCloud<pcl::PointNormal> (path);
+  else { // a depth image: its organised cloud in mm, no normals, no colours
+    if (options.colours == "scan")
+      throw InvalidInputError ("--colours scan with --depth " + path + ": a depth image has no colours");
+    const DepthImage image = loadDepthPng (path);
+    DepthIntrinsics camera = loadDepthIntrinsics (options.intrinsics);
+    if (camera.width != image.width || camera.height != image.height)
+      throw InvalidInputError (path + ": the depth image is " + std::to_string (image.width) + " x " +
+                               std::to_string (image.height) + " pixels, the camera of " + options.intrinsics + " " +
+                               std::to_string (camera.width) + " x " + std::to_string (camera.height));
+    scan.reset (new pcl::PointCloud<pcl::PointNormal>);
+    pcl::copyPointCloud (*depthImageToCloud (image.depth, camera), *scan);
+    for (auto& point : *scan)
+      point.normal_x = point.normal_y = point.normal_z = std::numeric_limits<float>::quiet_NaN ();
+  }
+  const std::optional<Eigen::Vector3d> viewpoint =
+      scan->isOrganized () ? std::optional<Eigen::Vector3d> (scan->sensor_origin_.head<3> ().cast<double> ())
+                           : std::nullopt;
   dropMissingPoints (*scan);
   if (scan->empty ())
     throw FormatError (path + ": the scan has no valid (finite) points");
   requireRegistrableScan (pointsOf (*scan), path);
+  requireUnitNormals (normalsOf (*scan), path);
   scan->is_dense = true;
-  return scan;
+  return {scan, viewpoint};
 }
 
 /** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out)
+convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out)
 {
-  const LengthUnitGuess unit = morphreg::convertScanToMillimetres (scan, options.units, model, options.scan);
+  if (!options.intrinsics.empty () && options.units != "auto" && options.units != "mm")
+    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    out << "units: " << options.scan << " is " << fileFormatName (format) << ", whose unit is the "
+        << toString (*file_unit) << " by specification: converted to mm on reading (x" << millimetresPer (*file_unit)
+        << ")\n";
+  const std::string units = options.intrinsics.empty () ? options.units : "mm";
+  const LengthUnitGuess unit =
+      morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
+  if (scan.viewpoint)
+    *scan.viewpoint *= millimetresPer (unit.unit);
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   return unit;
+}
+
+void
+addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan)
+{
+  plan.addInput (options.scan, options.intrinsics.empty () ? "--scan" : "--depth");
+  plan.addInput (options.intrinsics, "--intrinsics");
+  plan.addInput (options.model, "--model");
+  plan.addInput (options.landmarks, "--landmarks");
+  plan.addInput (options.truth, "--truth");
 }
 
 std::string
@@ -186,18 +255,40 @@ reportPath (const RegisterOptions& options)
                                  : options.report;
 }
 
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out)
+{
+  MorphableModel::Ptr model = loadModel (path);
+  const auto file_units = model->metadata ().find (kFileUnitsKey);
+  if (file_units != model->metadata ().end () && file_units->second.rfind ("mm ", 0) != 0)
+    out << "units: the model file " << path << " is in " << file_units->second << '\n';
+  return model;
+}
+
 nlohmann::json
 registerScanFile (const RegisterOptions& options)
 {
   const auto start = Clock::now ();
-  OutputFiles outputs ({options.out, reportPath (options), options.screenshot},
-                       {options.scan, options.model, options.landmarks, options.truth});
+  OutputPlan plan;
+  addRegistrationInputs (options, plan);
+  plan.addOutput (options.out, "--out");
+  plan.addOutput (reportPath (options), options.report.empty () ? "the report, --out with .json" : "--report");
+  if (!options.screenshot.empty ())
+    plan.addOutput (options.screenshot, "--screenshot");
+  if (!options.convergence_plot.empty ())
+    plan.addOutput (options.convergence_plot, "--convergence-plot");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   // Without X the screenshot would fail after the fit: open the offscreen viewer first.
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const MorphableModel::Ptr model = loadModel (options.model);
-  return keepOnSuccessOrFitFailure (outputs, [&] {
+  const char* x_display = std::getenv ("DISPLAY");
+  if (!options.convergence_plot.empty () && (x_display == nullptr || *x_display == '\0'))
+    throw InvalidInputError ("register --convergence-plot " + options.convergence_plot +
+                             ": the plot renders through X and $DISPLAY is unset; run under `xvfb-run -a`");
+  const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
+  return commitUnlessBadInput (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
   });
 }
@@ -217,17 +308,36 @@ reportLostFit (const RegisterOptions& options, std::size_t scan_points, const To
                            {"settings", settingsJson (options)},
                            {"fitted_mesh", nullptr}};
   addProvenance (options, report);
-  writeJsonFile (report_path, report);
-  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")");
+  writeReport (report_path, report);
+  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")", report);
 }
 
 /** The report's description of the scan and how its unit was found. */
 nlohmann::json
 scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
 {
-  return {{"file", options.scan},          {"points", scan_points},
-          {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
-          {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  nlohmann::json scan = {
+      {"file", options.scan},          {"points", scan_points},
+      {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
+      {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    scan["file_unit"] = {{"unit", toString (*file_unit)},
+                         {"scale_to_mm", millimetresPer (*file_unit)},
+                         {"reason", fileFormatName (format) + "'s unit by specification, converted on reading; units "
+                                                              "and scale_to_mm apply after it"}};
+  return scan;
+}
+
+/** The scan's colours at the fitted \a vertices as options.colours asks (scanColoursAt); none for a depth image,
+ *  which has no colours (loadScan refuses --colours scan with it). */
+std::optional<VertexColours>
+fittedScanColours (const RegisterOptions& options, const LengthUnitGuess& unit, const Eigen::Matrix3Xd& vertices,
+                   std::ostream& warnings)
+{
+  if (!options.intrinsics.empty ())
+    return std::nullopt;
+  return scanColoursAt (options.scan, millimetresPer (unit.unit), options.colours, vertices, warnings);
 }
 
 /** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
@@ -248,20 +358,26 @@ fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model
 /** The fit's one-paragraph summary on \a out; throws FitCheckFailure when the report failed its checks. */
 void
 concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const nlohmann::json& report,
-             double fit_seconds, double colour_scale, bool screenshot, std::ostream& out)
+             double fit_seconds, double colour_scale, std::ostream& out)
 {
   const std::string report_path = reportPath (options);
+  std::ostringstream colours;
+  if (report["fitted_mesh_colours"] == "scan")
+    colours << kScanColoursText;
+  else
+    colours << "residual, 0-" << colour_scale << " mm";
   out << "registered " << options.scan << " in " << icp_report.history.size () << " iterations ("
       << toString (icp_report.termination) << ", " << fit_seconds << " s): scan-to-model RMS " << icp_report.fitness_rms
       << " mm over " << icp_report.correspondences << " correspondences\n"
-      << "wrote " << options.out << " (vertex colours: residual, 0-" << colour_scale << " mm), " << report_path
-      << (screenshot ? ", " + options.screenshot : std::string ()) << '\n';
+      << "wrote " << options.out << ' ' << meshContents (options.out, colours.str (), "residual in mm") << ", "
+      << report_path << (report.contains ("screenshot") ? ", " + options.screenshot : std::string ())
+      << (report.contains ("convergence_plot") ? ", " + options.convergence_plot : std::string ()) << '\n';
   if (report["checks"]["passed"].get<bool> ())
     return;
   std::string reasons;
   for (const nlohmann::json& failure : report["checks"]["failures"])
     reasons += (reasons.empty () ? "" : "; ") + failure.get<std::string> ();
-  throw FitCheckFailure (reasons + " (see " + report_path + ")");
+  throw FitCheckFailure (reasons + " (see " + report_path + ")", report);
 }
 
 /** Runs \a icp's fit with progress shown unless quiet; a lost scan is reported and thrown (reportLostFit). */
@@ -290,10 +406,12 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const auto scan = loadScan (options.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, options, *model, out);
+  ScanCloud loaded = loadScan (options);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, options, *model, out);
   Icp icp;
   configureRegistration (icp, options, model);
+  icp.setTargetViewpoint (loaded.viewpoint);
   if (!options.landmarks.empty ())
     icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
   icp.setInputTarget (scan);
@@ -306,31 +424,28 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   const auto write_start = Clock::now ();
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
-  const double scale = colourScale (residuals, options.colour_max);
-  const pcl::PolygonMesh coloured = toPolygonMesh (fitted, residualColours (residuals, scale));
-  savePolygonMesh (options.out, coloured);
+  const double scale = residualColourScale (residuals, options.colour_max);
+  const auto scan_colours = fittedScanColours (options, unit, fitted.vertices, warnings);
+  savePolygonMesh (
+      options.out,
+      toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale), residuals));
   const double write_seconds = secondsSince (write_start);
 
   nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
+  report["fitted_mesh_colours"] = scan_colours ? "scan" : "residual";
   if (!options.truth.empty ())
     report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
-  double screenshot_seconds = 0.0;
-  if (viewer) {
-    const auto shot_start = Clock::now ();
-    saveOverlay (*viewer, options, *scan, fitted, residuals, scale, icp.getFinalTransformation ().cast<double> ());
-    screenshot_seconds = secondsSince (shot_start);
-    report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
-  }
+  const double figure_seconds = saveFigures (viewer, options, icp, *scan, fitted, scale, report);
   if (follow_up)
     follow_up (*scan, fitted, report);
   report["timings_s"] = {{"load", load_seconds},
                          {"fit", fit_seconds},
                          {"write_mesh", write_seconds},
-                         {"screenshot", screenshot_seconds},
+                         {"figures", figure_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeJsonFile (reportPath (options), report);
-  concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, viewer != nullptr, out);
+  writeReport (reportPath (options), report);
+  concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, out);
   return report;
 }
 
@@ -359,7 +474,27 @@ addRobustnessOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--reject-trimmed", options.reject_trimmed,
                     "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
-      ->check (CLI::Range (0.01, 1.0));
+      ->check (inRange (0.01, 1.0));
+}
+
+/** The scan's unit and smoothing (--units, --target-smoothing) of addRegistrationOptions. */
+void
+addScanTreatmentOptions (CLI::App* command, RegisterOptions& options)
+{
+  command
+      ->add_option ("--target-smoothing", options.target_smoothing,
+                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
+                    "such as depth-camera frames; the report's target_surface says what was done)")
+      ->check (CLI::IsMember ({"auto", "on", "off"}))
+      ->capture_default_str ();
+  command->add_flag_callback (
+      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
+  command
+      ->add_option ("--units", options.units,
+                    "the scan's length unit: auto (from its size), mm, cm, m or in (glTF/GLB scans: the unit after "
+                    "reading, which converts glTF's metres to mm)")
+      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
+      ->capture_default_str ();
 }
 } // namespace
 
@@ -367,18 +502,18 @@ void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options)
 {
   command->add_option ("--width", options.width, "screenshot width (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--height", options.height, "screenshot height (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--iterations", options.iterations, "ICP iterations, similarity and shape stages together")
-      ->check (CLI::Range (1, 10000))
+      ->check (inRange (1, 10000))
       ->capture_default_str ();
   command
       ->add_option ("--similarity-iterations", options.similarity_iterations,
                     "at most this many iterations fit the similarity alone before the shape joins")
-      ->check (CLI::Range (1, 10000))
+      ->check (inRange (1, 10000))
       ->capture_default_str ();
   command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
       ->check (nonNegative ())
@@ -393,7 +528,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command
       ->add_option ("--tangential-weight", options.tangential_weight,
                     "share of the point-to-point term kept along the tangent plane (point-to-plane)")
-      ->check (CLI::Range (0.0, 1.0))
+      ->check (inRange (0.0, 1.0))
       ->capture_default_str ();
   command
       ->add_option ("--shape-prior", options.shape_prior,
@@ -417,17 +552,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
                     "start)")
       ->check (nonNegative ())
       ->capture_default_str ();
-  command
-      ->add_option ("--target-smoothing", options.target_smoothing,
-                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
-                    "such as depth-camera frames; the report's target_surface says what was done)")
-      ->check (CLI::IsMember ({"auto", "on", "off"}))
-      ->capture_default_str ();
-  command->add_flag_callback (
-      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
-  command->add_option ("--units", options.units, "the scan's length unit: auto (from its size), mm, cm, m or in")
-      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
-      ->capture_default_str ();
+  addScanTreatmentOptions (command, options);
   command->add_flag ("--area-weighting", options.area_weighting,
                      "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
   addRobustnessOptions (command, options);
@@ -439,13 +564,33 @@ registerRegisterCommand (CLI::App& app)
   auto options = std::make_shared<RegisterOptions> ();
   CLI::App* command = app.add_subcommand ("register", "fit a model file to a scan (MorphableICP)");
   auto* scan =
-      command->add_option ("-s,--scan", options->scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units");
+      command->add_option ("-s,--scan", options->scan,
+                           "scan (.pcd .ply .obj .stl .off .gltf .glb); its unit: see --units; its colours: --colours");
+  auto* depth = command->add_option ("--depth", options->scan,
+                                     "a depth camera's image as the scan: a 16-bit PNG of depths in mm (needs "
+                                     "--intrinsics)");
+  auto* intrinsics =
+      command->add_option ("--intrinsics", options->intrinsics,
+                           "the depth camera of --depth: JSON with width, height, fx, fy, cx, cy (pixels)");
+  depth->excludes (scan)->needs (intrinsics);
+  intrinsics->needs (depth);
   command->add_option ("-m,--model", options->model, "model file (.h5, from build-model or statismo)")->required ();
-  command->add_option ("-o,--out", options->out, "fitted mesh to write (PLY; vertex colours = residual)")
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("fitted mesh to write", "see --colours", "residual in mm"))
+      ->capture_default_str ();
+  command
+      ->add_option ("--colours", options->colours,
+                    "the fitted mesh's vertex colours: auto (the scan's when it has any, else residual), scan (the "
+                    "colour of the nearest scan surface point: vertex colours, or the texture of a textured OBJ or "
+                    "glTF; not with --depth), residual (the residual map, as --screenshot shows it)")
+      ->check (CLI::IsMember ({"auto", "scan", "residual"}))
       ->capture_default_str ();
   command->add_option ("--report", options->report, "JSON report to write (default: the --out path with .json)");
   command->add_option ("--screenshot", options->screenshot,
                        "PNG of the scan and the fit's residual map (needs X: xvfb-run -a)");
+  command->add_option ("--convergence-plot", options->convergence_plot,
+                       "PNG plot of the RMS distance to the scan at each iteration (needs X: xvfb-run -a)");
   command->add_option ("-l,--landmarks", options->landmarks,
                        "landmarks on the scan (.pp .json .csv .pts) to start from (Umeyama on >= 3)");
   command->add_option ("--truth", options->truth, "true mesh in the model topology and scan frame: report the error");
@@ -459,9 +604,9 @@ registerRegisterCommand (CLI::App& app)
                    "report's status \"failed\"; a fit that loses the scan (too few correspondences) exits 4 with "
                    "the report alone.");
   auto batch = std::make_shared<BatchOptions> ();
-  addBatchOptions (command, *options, *batch)->excludes (scan);
-  command->callback ([options, batch, command, scan] () {
-    if (options->scans.empty () && scan->count () == 0)
+  addBatchOptions (command, *options, *batch)->excludes (scan)->excludes (depth);
+  command->callback ([options, batch, command, scan, depth] () {
+    if (options->scans.empty () && scan->count () == 0 && depth->count () == 0)
       throw CLI::RequiredError ("--scan or --scans");
     runRegister (*options, *batch);
   });

@@ -1,16 +1,22 @@
-// `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a).
+// SPDX-License-Identifier: BSD-3-Clause
+// `morphreg render`: a PNG screenshot of meshes, clouds and landmarks, rendered offscreen (needs X: xvfb-run -a). A
+// mesh with a per-vertex "quality" (register's fitted meshes: the residual in mm) is coloured by it, with a colour bar.
 #include "commands.h"
-#include "output_files.h"
+#include "option_checks.h"
+#include "display_inputs.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace morphreg
 {
@@ -28,6 +34,7 @@ struct RenderOptions
   int height = 960;
   std::string view = "front";
   double opacity = 1.0;
+  double colour_max = 0.0;               ///< the residual colour scale's top (mm); 0: the 95th percentile
   std::vector<std::string> side_by_side; ///< two captions: the two meshes in a left and a right viewport
 };
 
@@ -52,6 +59,18 @@ sideBySide (const RenderOptions& options, RegistrationVisualizer& viewer)
   return {left, right};
 }
 
+/** Adds the meshes (those with residuals coloured by them, with the colour bar); returns their ids. */
+std::vector<std::string>
+addMeshes (const RenderOptions& options, const std::vector<int>& viewports, RegistrationVisualizer& viewer)
+{
+  std::vector<std::string> ids;
+  for (std::size_t i = 0; i < options.meshes.size (); ++i) {
+    ids.push_back ("mesh_" + std::to_string (i));
+    addMeshFile (viewer, options.meshes[i], options.colour_max, options.opacity, ids.back (), viewports[i]);
+  }
+  return ids;
+}
+
 void
 runRender (const RenderOptions& options)
 {
@@ -61,19 +80,25 @@ runRender (const RenderOptions& options)
       (options.meshes.size () != 2 || !options.clouds.empty () || !options.landmarks.empty ()))
     throw InvalidInputError ("render --side-by-side shows two --mesh files, the first on the left, and nothing else (" +
                              std::to_string (options.meshes.size ()) + " meshes given)");
-  std::vector<std::string> inputs = options.meshes;
-  inputs.insert (inputs.end (), options.clouds.begin (), options.clouds.end ());
-  inputs.insert (inputs.end (), options.landmarks.begin (), options.landmarks.end ());
-  OutputFiles outputs ({options.out}, inputs);
+  OutputPlan plan;
+  for (const std::string& mesh : options.meshes)
+    plan.addInput (mesh, "--mesh");
+  for (const std::string& cloud : options.clouds)
+    plan.addInput (cloud, "--cloud");
+  for (const std::string& landmarks : options.landmarks)
+    plan.addInput (landmarks, "--landmarks");
+  plan.addOutput (options.out, "--out");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
   std::vector<int> viewports (options.meshes.size (), 0);
   if (!options.side_by_side.empty ())
     viewports = sideBySide (options, viewer);
-  for (std::size_t i = 0; i < options.meshes.size (); ++i)
-    viewer.addModelMesh (loadPolygonMesh (options.meshes[i]), options.opacity, "mesh_" + std::to_string (i),
-                         viewports[i]);
+  const std::vector<std::string> meshes = addMeshes (options, viewports, viewer);
   for (std::size_t i = 0; i < options.clouds.size (); ++i)
-    viewer.addTargetCloud (*loadCloud<pcl::PointXYZ> (options.clouds[i]), "cloud_" + std::to_string (i));
+    addScanFile (viewer, options.clouds[i], !meshes.empty (), options.width, options.height,
+                 "cloud_" + std::to_string (i));
+  viewer.setFramedShapes (meshes); // the head, not the shoulders a scan may hold
   for (std::size_t i = 0; i < options.landmarks.size (); ++i)
     viewer.addLandmarks (loadLandmarks (options.landmarks[i]),
                          i == 0 ? RegistrationVisualizer::LandmarkRole::Target
@@ -81,7 +106,7 @@ runRender (const RenderOptions& options)
                          2.5, true, "landmarks_" + std::to_string (i) + "_");
   viewer.resetCamera (viewDirection (options.view));
   viewer.saveScreenshot (options.out, options.width, options.height);
-  outputs.keep ();
+  outputs.commit ();
   std::cout << "wrote " << options.out << " (" << options.width << "x" << options.height << ")\n";
 }
 } // namespace
@@ -92,9 +117,12 @@ registerRenderCommand (CLI::App& app)
   auto options = std::make_shared<RenderOptions> ();
   CLI::App* command =
       app.add_subcommand ("render", "write a PNG of meshes, clouds and landmarks (run under xvfb-run -a)");
-  command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl), repeatable")
+  command
+      ->add_option (
+          "-m,--mesh", options->meshes,
+          "mesh file (.ply .obj .vtk .stl .off .gltf .glb; drawn with its vertex colours if it has any), repeatable")
       ->check (CLI::ExistingFile);
-  command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj), repeatable")
+  command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj .gltf .glb), repeatable")
       ->check (CLI::ExistingFile);
   command
       ->add_option ("-l,--landmarks", options->landmarks,
@@ -102,17 +130,22 @@ registerRenderCommand (CLI::App& app)
       ->check (CLI::ExistingFile);
   command->add_option ("-o,--out", options->out, "PNG to write")->capture_default_str ();
   command->add_option ("--width", options->width, "image width (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--height", options->height, "image height (pixels)")
-      ->check (CLI::Range (16, 8192))
+      ->check (inRange (16, 8192))
       ->capture_default_str ();
   command->add_option ("--view", options->view, "camera: front, back, left, right, oblique")
       ->check (CLI::IsMember ({"front", "back", "left", "right", "oblique"}))
       ->capture_default_str ();
-  command->add_option ("--opacity", options->opacity, "mesh opacity")
-      ->check (CLI::Range (0.0, 1.0))
+  command->add_option ("--opacity", options->opacity, "mesh opacity (meshes without residuals)")
+      ->check (inRange (0.0, 1.0))
       ->capture_default_str ();
+  command
+      ->add_option ("--colour-max", options->colour_max,
+                    "top of the residual colour bar (mm) for meshes with a per-vertex quality (register's fits); 0: "
+                    "the 95th percentile")
+      ->check (nonNegative ());
   command
       ->add_option ("--side-by-side", options->side_by_side,
                     "two captions: the two --mesh files side by side (left, right) under one camera")

@@ -1,18 +1,21 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg resample`: a scan + a model file -> the scan's surface in the model's topology. The scan is registered
 // exactly as `register` does it, then ScanResampler moves the fitted mesh's vertices onto the scan along their normals
-// and fills the holes; writes the resampled mesh (vertex colours: observed / filled), the fitted mesh and one JSON
-// report (the registration's, with the resampling's coverage and holes).
+// and fills the holes; writes the resampled mesh (vertex colours: the scan's, or observed / filled), the fitted mesh
+// and one JSON report (the registration's, with the resampling's coverage and holes).
 #include "commands.h"
-#include "output_files.h"
+#include "mesh_output.h"
 #include "pipeline.h"
+#include "provenance.h"
+#include "scan_colours.h"
 #include "scan_resampling.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/model_io.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/resampling/landmark_reference.h>
 
@@ -46,7 +49,11 @@ resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::Po
     std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
               << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
               << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
-              << options.out << " (vertex colours: grey observed, orange filled)\n";
+              << options.out << ' '
+              << meshContents (
+                     options.out,
+                     report["resampled_mesh_colours"] == "scan" ? kScanColoursText : "grey observed, orange filled", "")
+              << '\n';
 }
 
 /** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
@@ -58,8 +65,9 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
   const RegisterOptions& registration = options.registration;
   if (registration.landmarks.empty ())
     throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
-  const auto scan = loadScan (registration.scan);
-  const LengthUnitGuess unit = convertScanToMillimetres (*scan, registration, model, std::cout);
+  ScanCloud loaded = loadScan (registration);
+  const auto& scan = loaded.cloud;
+  const LengthUnitGuess unit = convertScanToMillimetres (loaded, registration, model, std::cout);
   const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);
   requireLandmarksOnScan (landmarks, pointsOf (*scan), registration.landmarks);
   const TriangleMesh reference =
@@ -69,10 +77,14 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
       {"status", "ok"},
       {"checks", {{"passed", true}, {"failures", nlohmann::json::array ()}}},
       {"units", "mm"},
-      {"scan", {{"file", registration.scan}, {"points", scan->size ()}, {"units", toString (unit.unit)}}},
+      {"scan",
+       {{"file", registration.scan},
+        {"points", scan->size ()},
+        {"units", toString (unit.unit)},
+        {"scale_to_mm", millimetresPer (unit.unit)}}},
       {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
   resampleAndReport (options, *scan, reference, report);
-  writeJsonFile (registration.report, report);
+  writeReport (registration.report, report);
   return report;
 }
 
@@ -80,18 +92,24 @@ void
 runResample (ResampleOptions options)
 {
   RegisterOptions& registration = options.registration;
+  registration.colours = options.resampling.colours == "state" ? "residual" : options.resampling.colours;
   if (registration.out.empty ())
     registration.out = std::filesystem::path (options.out).replace_extension ().string () + "_fit.ply";
   if (registration.report.empty ())
     registration.report = std::filesystem::path (options.out).replace_extension (".json").string ();
-  OutputFiles outputs ({options.out, registration.out, registration.report},
-                       {registration.scan, registration.model, registration.landmarks});
-  const MorphableModel::Ptr model = loadModel (registration.model);
+  OutputPlan plan;
+  addRegistrationInputs (registration, plan);
+  plan.addOutput (options.out, "--out");
+  plan.addOutput (registration.out, "--fit-out");
+  plan.addOutput (registration.report, "--report");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
+  const MorphableModel::Ptr model = loadModelFile (registration.model, std::cout);
   if (options.reference == "landmarks") {
-    keepOnSuccessOrFitFailure (outputs, [&] { return resampleFromLandmarks (options, *model); });
+    commitUnlessBadInput (outputs, [&] { return resampleFromLandmarks (options, *model); });
     return;
   }
-  keepOnSuccessOrFitFailure (outputs, [&] {
+  commitUnlessBadInput (outputs, [&] {
     return registerScan (registration, model, nullptr, 0.0, std::cout, std::cerr,
                          [&] (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
                               nlohmann::json& report) { resampleAndReport (options, scan, fitted, report); });
@@ -108,7 +126,9 @@ registerResampleCommand (CLI::App& app)
   registration.out.clear ();
   CLI::App* command =
       app.add_subcommand ("resample", "register a scan (as register does) and resample it into the model's topology");
-  command->add_option ("-s,--scan", registration.scan, "scan (.pcd .ply .obj .stl .off); its unit: see --units")
+  command
+      ->add_option ("-s,--scan", registration.scan,
+                    "scan (.pcd .ply .obj .stl .off .gltf .glb); its unit: see --units; its colours: --colours")
       ->required ();
   command->add_option ("-m,--model", registration.model, "model file (.h5, from build-model or statismo)")->required ();
   command->add_option ("-l,--landmarks", registration.landmarks,
@@ -119,7 +139,16 @@ registerResampleCommand (CLI::App& app)
                     "by a thin plate spline onto --landmarks, METHOD section 5; no registration)")
       ->check (CLI::IsMember ({"fit", "landmarks"}))
       ->capture_default_str ();
-  command->add_option ("-o,--out", options->out, "resampled mesh to write (PLY; colours: observed / filled)")
+  command->add_option ("-o,--out", options->out, meshOutputHelp ("resampled mesh to write", "see --colours", ""))
+      ->capture_default_str ();
+  options->resampling.colours = "auto";
+  command
+      ->add_option ("--colours", options->resampling.colours,
+                    "vertex colours of the resampled mesh and the fit: auto (the scan's when it has any, else "
+                    "state), scan (the colour of the nearest scan surface point: vertex colours, or the texture of a "
+                    "textured OBJ or glTF), state (resampled mesh grey where observed, orange where filled; the fit "
+                    "coloured by its residuals)")
+      ->check (CLI::IsMember ({"auto", "scan", "state"}))
       ->capture_default_str ();
   command->add_option ("--fit-out", registration.out,
                        "the reference (the fit, or the warped mean) to write (default: the --out path + _fit)");

@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg synth`: the built-in synthetic head population and simulated scans of it, written to disk.
 #include "commands.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "progress.h"
 #include "scanner_options.h"
 #include "synthetic_output.h"
 
 #include <morphreg/common/landmarks.h>
+#include <morphreg/io/output_transaction.h>
 
 #include <cmath>
 #include <iostream>
@@ -52,7 +53,8 @@ void
 runSynth (const SynthOptions& options)
 {
   const synthetic::ScanSimulator scanner (options.scanner); // bad scanner settings fail before anything is written
-  OutputFolder output (options.out, {});
+  // Every file goes into the folder at the end, the manifest population.json last: a folder with it is complete.
+  OutputTransaction output ({}, {options.out});
   const synthetic::HeadGenerator generator (options.resolution);
   const std::vector<synthetic::SyntheticHead> heads = generator.population (options.count, options.seed);
   writePopulation (options.out, generator, heads, options.seed, options.quiet);
@@ -66,7 +68,7 @@ runSynth (const SynthOptions& options)
   if (options.scans > 0)
     progress.finish ();
   writeHeadPhotos (options, generator, heads);
-  output.keep ();
+  output.commit (options.out + "/population.json");
   std::cout << "wrote " << options.count << " heads, " << options.scans << " scans and " << options.photos
             << " photo pairs to " << options.out << '\n';
 }
@@ -80,12 +82,12 @@ registerSynthCommand (CLI::App& app)
       app.add_subcommand ("synth", "generate synthetic heads (PLY + population.json) and scans of them");
   command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
   command->add_option ("-n,--count", options->count, "number of heads")
-      ->check (CLI::Range (1, 5000))
+      ->check (inRange (1, 5000))
       ->capture_default_str ();
   command->add_option ("-s,--seed", options->seed, "seed of the first head (head i uses seed + i)")
       ->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
-      ->check (CLI::Range (20, 44))
+      ->check (inRange (20, 44))
       ->capture_default_str ();
   command->add_option ("--scans", options->scans, "simulate scans of the first N heads")
       ->check (nonNegative ())

@@ -1,16 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `morphreg warp`: a mesh warped from source to target landmarks by a thin plate spline, globally or by segments
 // with blended seams, by moving least squares (--method mls), or re-postured with rigid bones (--method
 // articulated); with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
 #include "mesh_annotations.h"
+#include "mesh_output.h"
 #include "option_checks.h"
-#include "output_files.h"
 #include "progress.h"
+#include "provenance.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
-#include <morphreg/io/json_file.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
@@ -27,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <tuple>
 
@@ -255,16 +259,17 @@ loadMeshInMillimetres (const std::string& path, double millimetres_per_unit)
   return mesh;
 }
 
-/** The error against the truth: vertex colours, the report's figures (with the limb parts for the articulated
- *  method) and a line on stdout. */
-void
+/** The error against the truth: vertex colours and quality, the report's figures (with the limb parts for the
+ *  articulated method) and a line on stdout; returns what the written mesh carries (meshContents). */
+std::string
 evaluateAgainstTruth (const WarpOptions& options, const WarpInputs& inputs, const TriangleMesh& warped,
                       nlohmann::json& report)
 {
   const TriangleMesh truth = loadMeshInMillimetres (options.truth, millimetresPer (parseLengthUnit (options.units)));
   requireSameTopology (inputs.mesh, truth, options.truth);
   const Eigen::VectorXd errors = (warped.vertices - truth.vertices).colwise ().norm ().transpose ();
-  savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, std::max (errors.maxCoeff (), 1e-9))));
+  const double colour_max = std::max (errors.maxCoeff (), 1e-9);
+  savePolygonMesh (options.out, toPolygonMesh (warped, residualColours (errors, colour_max), errors));
   std::vector<int> labels (static_cast<std::size_t> (inputs.mesh.numVertices ()), 0);
   if (!options.labels.empty ())
     labels = loadRegionLabels (options.labels, inputs.mesh.numVertices ()).labels;
@@ -280,14 +285,24 @@ evaluateAgainstTruth (const WarpOptions& options, const WarpInputs& inputs, cons
           {"bones", part.bones + "*"}, {"vertices", part.vertices}, {"max_error_mm", part.max_error}};
   if (!options.quiet)
     std::cout << "error against " << options.truth << ": mean " << quality.mean_error << " mm, max "
-              << quality.max_error << " mm (vertex colours of " << options.out << ")\n";
+              << quality.max_error << " mm\n";
+  std::ostringstream colours;
+  colours << "error against the truth, 0-" << colour_max << " mm";
+  return meshContents (options.out, colours.str (), "error against the truth in mm");
 }
 
 void
 runWarp (const WarpOptions& options)
 {
-  OutputFiles outputs ({options.out, options.report},
-                       {options.mesh, options.source, options.target, options.labels, options.truth, options.skeleton});
+  OutputPlan plan;
+  for (const auto& [input, role] : {std::pair (options.mesh, "--mesh"), std::pair (options.source, "--source"),
+                                    std::pair (options.target, "--target"), std::pair (options.labels, "--labels"),
+                                    std::pair (options.truth, "--truth"), std::pair (options.skeleton, "--skeleton")})
+    plan.addInput (input, role);
+  plan.addOutput (options.out, "--out");
+  plan.addOptionalOutput (options.report, "--report");
+  plan.check ();
+  OutputTransaction outputs (plan.outputs ());
   const double millimetres_per_unit = millimetresPer (parseLengthUnit (options.units));
   WarpInputs inputs{loadMeshInMillimetres (options.mesh, millimetres_per_unit), {}, {}};
   std::tie (inputs.source, inputs.target) = namedLandmarkPairs (options.source, options.target, millimetres_per_unit);
@@ -299,14 +314,37 @@ runWarp (const WarpOptions& options)
                            {"mesh", options.mesh},
                            {"output", options.out}};
   const TriangleMesh warped = warpMesh (options, inputs, report);
+  std::string contents;
   if (options.truth.empty ())
     saveTriangleMesh (options.out, warped);
   else
-    evaluateAgainstTruth (options, inputs, warped, report);
+    contents = ' ' + evaluateAgainstTruth (options, inputs, warped, report);
   if (!options.report.empty ())
-    writeJsonFile (options.report, report);
-  outputs.keep ();
-  std::cout << "wrote " << options.out << '\n';
+    writeReport (options.report, report);
+  outputs.commit ();
+  std::cout << "wrote " << options.out << contents << '\n';
+}
+
+/** The articulated and moving least squares warps' settings, each in the range where its result means something. */
+void
+addArticulatedOptions (CLI::App* command, WarpOptions& options)
+{
+  command
+      ->add_option ("--rigidity", options.rigidity,
+                    "articulated: weight of the as-rigid-as-possible refinement (0 to 1000; beyond, the bones no "
+                    "longer follow the landmarks)")
+      ->check (inRange (0.0, 1000.0))
+      ->capture_default_str ();
+  command
+      ->add_option ("--skinning-width", options.skinning_width,
+                    "articulated: how fast a bone's weight falls along the mesh (mm, 0.1 to 10000)")
+      ->check (inRange (0.1, 10000.0))
+      ->capture_default_str ();
+  command
+      ->add_option ("--mls-falloff", options.mls_falloff,
+                    "mls: landmark weights fall as 1 / distance^(2 a); larger a is more local (0.1 to 10)")
+      ->check (inRange (0.1, 10.0))
+      ->capture_default_str ();
 }
 } // namespace
 
@@ -316,10 +354,14 @@ registerWarpCommand (CLI::App& app)
   auto options = std::make_shared<WarpOptions> ();
   CLI::App* command = app.add_subcommand (
       "warp", "warp a mesh with a 3D thin plate spline (global or segmented) or re-posture it with rigid bones");
-  command->add_option ("-m,--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl)")->required ();
+  command->add_option ("-m,--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl .off .gltf .glb)")->required ();
   command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
-  command->add_option ("-o,--out", options->out, "warped mesh to write")->capture_default_str ();
+  command
+      ->add_option ("-o,--out", options->out,
+                    meshOutputHelp ("warped mesh to write; with --truth", "error against the truth",
+                                    "error against the truth in mm"))
+      ->capture_default_str ();
   command->add_option ("--labels", options->labels,
                        "segment per vertex, JSON {\"regions\": [names], \"labels\": [...]}: segmented warp");
   command
@@ -350,19 +392,7 @@ registerWarpCommand (CLI::App& app)
   command->add_option ("--skeleton", options->skeleton,
                        "articulated: skeleton JSON {\"bones\": [{\"name\", \"head\", \"tail\", \"segment\", "
                        "\"twist\": [from, to]}]} (default: MakeHuman's 51 major joints)");
-  command->add_option ("--rigidity", options->rigidity, "articulated: weight of the as-rigid-as-possible refinement")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--skinning-width", options->skinning_width,
-                    "articulated: how fast a bone's weight falls along the mesh (mm)")
-      ->check (positive ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--mls-falloff", options->mls_falloff,
-                    "mls: landmark weights fall as 1 / distance^(2 a); larger a is more local")
-      ->check (positive ())
-      ->capture_default_str ();
+  addArticulatedOptions (command, *options);
   command
       ->add_option ("--units", options->units,
                     "unit of the mesh, landmark and truth files (mm, cm, dm, m, in); converted to mm, and the "

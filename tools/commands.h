@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Registration of the CLI's subcommands; each lives in its own tools/command_<name>.cpp.
 #include <CLI/CLI.hpp>
@@ -21,6 +22,8 @@ void
 registerRenderCommand (CLI::App& app);
 void
 registerWarpCommand (CLI::App& app);
+void
+registerViewCommand (CLI::App& app);
 void
 registerBuildModelCommand (CLI::App& app);
 void
@@ -50,6 +53,7 @@ registerCommands (CLI::App& app)
   registerEvaluateModelCommand (app);
   registerDemoCommand (app);
   registerRenderCommand (app);
+  registerViewCommand (app);
   registerWarpCommand (app);
 }
 } // namespace tools

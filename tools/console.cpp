@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CLI's verbosity: PCL's console level and a VTK output window that filters by message type.
 #include "console.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How much the CLI prints on stderr (-q, normal, --verbose), applied to PCL's console and VTK's messages too.
 #include <CLI/CLI.hpp>

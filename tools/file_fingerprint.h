@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Content hashes of input files (FNV-1a, 64 bits), so that a batch run can tell whether the scan, the landmarks or
 // the model behind an output on disk are still the ones it was made from.

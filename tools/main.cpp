@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The morphreg command line: subcommands are registered by the tools/command_*.cpp files.
 #include "commands.h"
 #include "console.h"
 #include "pipeline.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 
@@ -14,6 +16,7 @@ int
 main (int argc, char** argv)
 {
   // A file size limit (ulimit -f) then makes a write fail with an error the writers report, instead of killing us.
+  morphreg::tools::recordCommandLine (argc, argv);
   std::signal (SIGXFSZ, SIG_IGN);
   CLI::App app{"morphreg: morphable-model registration and thin plate spline warping for PCL"};
   app.set_version_flag ("--version", std::string ("morphreg ") + MORPHREG_VERSION);

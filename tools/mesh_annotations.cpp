@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh_annotations.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace morphreg
 {
@@ -21,7 +23,7 @@ loadRegionLabels (const std::string& path, Eigen::Index num_vertices)
   const nlohmann::json json = readJsonFile (path);
   RegionLabels regions;
   try {
-    regions.labels = json.at ("labels").get<std::vector<int>> ();
+    regions.labels = jsonWholeNumbers (json.at ("labels"), 0, std::numeric_limits<int>::max (), path + ": labels");
     if (json.contains ("regions"))
       regions.names = json.at ("regions").get<std::vector<std::string>> ();
     else if (json.contains ("segments")) // the body segment files of ../shared/data/makehuman_bodies
@@ -53,17 +55,20 @@ LandmarkVertices
 loadLandmarkVertices (const std::string& path, Eigen::Index num_vertices)
 {
   const nlohmann::json json = readJsonFile (path);
+  const auto found = json.find ("landmark_vertices");
+  if (!json.is_object () || found == json.end () || !found->is_object ())
+    throw FormatError (path + ": expected {\"landmark_vertices\": {\"id\": vertex index, ...}}");
   LandmarkVertices landmarks;
-  try {
-    landmarks = json.at ("landmark_vertices").get<LandmarkVertices> ();
+  for (const auto& [id, vertex] : found->items ()) {
+    try {
+      requireKnownLandmarkId (id, path);
+    }
+    catch (const InvalidInputError& e) {
+      throw FormatError (e.what ());
+    }
+    landmarks[id] = static_cast<int> (
+        jsonWholeNumber (vertex, 0, num_vertices - 1, path + ": the vertex of landmark '" + id + "'"));
   }
-  catch (const nlohmann::json::exception& e) {
-    throw FormatError (path + ": expected {\"landmark_vertices\": {\"id\": vertex index, ...}} (" + e.what () + ")");
-  }
-  for (const auto& [id, vertex] : landmarks)
-    if (vertex < 0 || vertex >= num_vertices)
-      throw FormatError (path + ": landmark '" + id + "' has vertex " + std::to_string (vertex) + ", valid are 0.." +
-                         std::to_string (num_vertices - 1));
   return landmarks;
 }
 } // namespace tools

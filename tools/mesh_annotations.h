@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Annotation files of meshes in correspondence (JSON): region labels per vertex and landmark vertex indices.
 // synth and demo write them next to the population; build-model and warp read them.

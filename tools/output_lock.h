@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A batch run's claim on its share of an output folder: a lock file per shard, so that the shards of one job array
 // work side by side while a second run on the same share, or an unrelated run on the same folder, is refused as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The build-model and register steps as functions on files, shared by their subcommands and by demo.
 #include "scan_resampling.h"
@@ -7,6 +8,8 @@
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/registration/registration_settings.h>
+#include <morphreg/io/output_plan.h>
+#include <morphreg/io/output_transaction.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -17,9 +20,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace morphreg
@@ -32,12 +37,16 @@ namespace tools
 struct RegisterOptions : RegistrationSettings
 {
   std::string scan, model, out = "fitted.ply";
-  std::string scans;      ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
-  std::string report;     ///< empty: next to out, with .json
-  std::string screenshot; ///< empty: none
+  std::string scans;            ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
+  std::string report;           ///< empty: next to out, with .json
+  std::string screenshot;       ///< empty: none
+  std::string convergence_plot; ///< PNG of the RMS distance per iteration; empty: none
   int width = 1280, height = 960;
   std::string landmarks, truth;
-  double colour_max = 0.0; ///< mm, 0 = the 95th percentile of the residuals
+  /** With a depth image as the scan (a 16-bit PNG in mm): its camera's intrinsics (JSON; depth_image_io.h). */
+  std::string intrinsics;
+  double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
+  std::string colours = "auto"; ///< the fitted mesh's vertex colours: auto (the scan's if it has any), scan, residual
   bool quiet = false;
   /** Batch mode: what produces the outputs (inputs' content hashes, settings, version; batch_provenance.h),
    *  recorded in every report the registration writes as "provenance". Null: none recorded. */
@@ -60,26 +69,71 @@ fromScansRegistration ()
   RegisterOptions options;
   options.components = {60};
   options.refinement_prior = 0.2;
+  options.colours = "residual"; // the fits are a step towards the model: no time spent on the scans' colours
   return options;
 }
 
-/** Thrown when a registration finished but failed its plausibility checks (exit code 4); the outputs are written. */
+/** Thrown when a registration finished but failed its plausibility checks (exit code 4); the outputs are written
+ *  (committed by the caller's OutputTransaction: commitUnlessBadInput). */
 class FitCheckFailure : public std::runtime_error
 {
 public:
-  using std::runtime_error::runtime_error;
+  /** \a report: the report written, marked failed (null where none is). */
+  FitCheckFailure (const std::string& message, nlohmann::json report = nullptr)
+    : std::runtime_error (message), report_ (std::move (report))
+  {}
+
+  const nlohmann::json&
+  report () const
+  {
+    return report_;
+  }
+
+private:
+  nlohmann::json report_;
 };
 
-/** The scan file as points with normals, without missing (NaN) points, checked to be registrable
- *  (requireRegistrableScan); in the file's unit. */
-pcl::PointCloud<pcl::PointNormal>::Ptr
-loadScan (const std::string& path);
+/** Runs \a run and commits \a outputs when it succeeds or throws FitCheckFailure (a fit that failed its checks has
+ *  its outputs written on purpose: the report says why it failed); on any other failure the outputs roll back. */
+template <typename Run>
+auto
+commitUnlessBadInput (OutputTransaction& outputs, Run run) -> decltype (run ())
+{
+  try {
+    auto result = run ();
+    outputs.commit ();
+    return result;
+  }
+  catch (const FitCheckFailure&) {
+    outputs.commit ();
+    throw;
+  }
+}
 
-/** Converts \a scan to mm, its unit given by options.units or guessed against \a model (see scan_units.h), and says
- *  so on \a out when it was not in mm; returns the unit and why. */
+/** A scan as loaded: its points and, for one sensor's organised view (a depth camera's frame), where the sensor
+ *  stood (the cloud's origin), which the fit turns estimated normals towards. */
+struct ScanCloud
+{
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud;
+  std::optional<Eigen::Vector3d> viewpoint;
+};
+
+/** options.scan as points with normals, without missing (NaN) points, checked to be registrable
+ *  (requireRegistrableScan); in the file's unit. With options.intrinsics, options.scan is a depth image (16-bit PNG,
+ *  mm): its points in the camera frame (mm), the camera the viewpoint. */
+ScanCloud
+loadScan (const RegisterOptions& options);
+
+/** Converts \a scan (its points and viewpoint) to mm, its unit given by options.units or guessed against \a model
+ *  (see scan_units.h), and says so on \a out when it was not in mm; returns the unit and why. */
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const RegisterOptions& options,
-                          const MorphableModel& model, std::ostream& out);
+convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out);
+
+/** Loads a model file (loadModel: in mm whatever the file's unit) and says on \a out when the file was in another
+ *  unit and converted. */
+MorphableModel::Ptr
+loadModelFile (const std::string& path, std::ostream& out);
 
 /** Registers the scan to the model and writes the fitted mesh, the report and the screenshot; returns the report. */
 nlohmann::json
@@ -100,17 +154,23 @@ nlohmann::json
 registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationVisualizer* viewer,
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up = {});
 
+/** Adds the files a registration reads (--scan, --model, --landmarks, --truth) to \a plan. */
+void
+addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan);
+
 /** The report file of a registration: --report, else the --out path with .json. */
 std::string
 reportPath (const RegisterOptions& options);
 
 /** registerScan() for one scan of a study: its progress kept off the console (several scans run at once), a fit
  *  that failed its checks returned as its written report, and any other failure (a bad file, a scan the follow-up
- *  refuses) recorded as a report {"status": "failed", "failure": why} written in the registration's place.
+ *  refuses) recorded as a report {"status": "failed", "failure": why} written in the registration's place. The
+ *  scan's outputs (with \a follow_up_outputs, the files \a follow_up writes) are committed together.
  *  \return the scan's report
  */
 nlohmann::json
-registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up = {});
+registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up = {},
+                   const std::vector<std::string>& follow_up_outputs = {});
 
 /** Settings of `register --scans` beyond the single-scan ones. */
 struct BatchOptions

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CLI's progress display: redrawn on a terminal, a few separate lines in a log.
 #include "progress.h"
 

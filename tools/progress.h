@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A progress display on stderr for long CLI work ("generating heads [12/200]"): one line redrawn in place on a
 // terminal; in a log, separate lines and only a few of them.

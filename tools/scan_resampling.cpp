@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "scan_resampling.h"
 
 #include "option_checks.h"
+#include "scan_colours.h"
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
@@ -8,6 +10,7 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 
 #include <chrono>
+#include <iostream>
 
 namespace morphreg
 {
@@ -61,15 +64,15 @@ addResamplingOptions (CLI::App* command, ResamplingOptions& options)
   command
       ->add_option ("--normal-agreement", options.normal_agreement,
                     "largest angle between a vertex normal and the scan's at the hit (degrees)")
-      ->check (CLI::Range (1.0, 180.0))
+      ->check (inRange (1.0, 180.0))
       ->capture_default_str ();
   command->add_option ("--ring-width", options.ring_width, "rings of observed vertices around a hole that fill it")
-      ->check (CLI::Range (1, 20))
+      ->check (inRange (1, 20))
       ->capture_default_str ();
   command
       ->add_option ("--max-hole-fraction", options.max_hole_fraction,
                     "largest share of the model's surface one hole may cover (else the scan is refused)")
-      ->check (CLI::Range (0.01, 1.0))
+      ->check (inRange (0.01, 1.0))
       ->capture_default_str ();
   command->add_option ("--fill-smoothing", options.fill_smoothing, "thin plate spline smoothing of the fills (mm)")
       ->check (nonNegative ())
@@ -77,7 +80,7 @@ addResamplingOptions (CLI::App* command, ResamplingOptions& options)
   command
       ->add_option ("--passes", options.passes,
                     "resampling passes; each after the first casts again from the previous one's fills")
-      ->check (CLI::Range (1, 10))
+      ->check (inRange (1, 10))
       ->capture_default_str ();
 }
 
@@ -107,7 +110,10 @@ resampleFit (const ResamplingOptions& options, const std::string& scan_file, con
   catch (const InvalidInputError& e) {
     throw InvalidInputError (scan_file + ": cannot be resampled into the model's topology: " + e.what ());
   }
-  savePolygonMesh (out, toPolygonMesh (result.mesh, stateColours (result.state)));
+  const auto scan_colours = scanColoursAt (scan_file, report["scan"].value ("scale_to_mm", 1.0), options.colours,
+                                           result.mesh.vertices, std::cerr);
+  savePolygonMesh (out, toPolygonMesh (result.mesh, scan_colours ? *scan_colours : stateColours (result.state)));
+  report["resampled_mesh_colours"] = scan_colours ? "scan" : "state";
   report["resampling"] = statisticsJson (result.statistics);
   report["resampling"]["status"] = "ok";
   report["resampling"]["settings"] = {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The resampling step after a registration, shared by `resample` and `build-model --from-scans`: the scan moved into
 // the fitted model's topology by ScanResampler, the mesh written and its statistics added to the scan's report.
@@ -27,6 +28,7 @@ struct ResamplingOptions
   double max_hole_fraction = 0.5;
   double fill_smoothing = 1.0;
   int passes = 3;
+  std::string colours = "state"; ///< the resampled mesh's vertex colours: auto, scan or state (observed / filled)
 };
 
 /** Adds --ray-distance, --normal-agreement, --ring-width, --max-hole-fraction, --fill-smoothing and --passes to
@@ -35,9 +37,11 @@ void
 addResamplingOptions (CLI::App* command, ResamplingOptions& options);
 
 /** Resamples \a scan (file \a scan_file, for messages) into the topology of \a fitted, writes the resampled mesh to
- *  \a out (PLY; vertex colours grey observed, orange filled) and adds "resampling" and "resampled_mesh" to
- *  \a report. A fit that failed its checks is not resampled (the report says so): returns nothing. Throws
- *  InvalidInputError naming the scan when the resampler refuses it (no overlap, another unit, too large a hole).
+ *  \a out (PLY; vertex colours as options.colours says: the scan's, see scanColoursAt, at report["scan"]
+ *  ["scale_to_mm"], or grey observed, orange filled) and adds "resampling", "resampled_mesh" and
+ *  "resampled_mesh_colours" to \a report. A fit that failed its checks is not resampled (the report says so):
+ *  returns nothing. Throws InvalidInputError naming the scan when the resampler refuses it (no overlap, another
+ *  unit, too large a hole).
  */
 std::optional<ResamplingResult>
 resampleFit (const ResamplingOptions& options, const std::string& scan_file, const std::string& out,

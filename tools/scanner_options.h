@@ -1,5 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scanner settings shared by every command that simulates scans.
+#include "option_checks.h"
+
 #include <morphreg/synthetic/scan_simulator.h>
 
 #include <CLI/CLI.hpp>
@@ -14,22 +17,22 @@ addScannerOptions (CLI::App* command, synthetic::ScanSimulator::Parameters& para
 {
   using synthetic::ScanSimulator;
   command->add_option ("--noise", parameters.noise_sigma, "scanner range noise sigma (mm)")
-      ->check (CLI::Range (0.0, 100.0))
+      ->check (inRange (0.0, 100.0))
       ->capture_default_str ();
   command->add_option ("--outliers", parameters.outlier_fraction, "fraction of outlier points")
-      ->check (CLI::Range (0.0, 0.5))
+      ->check (inRange (0.0, 0.5))
       ->capture_default_str ();
   command->add_option ("--angular-samples", parameters.angular_samples, "scanner rays per turn")
-      ->check (CLI::Range (8, ScanSimulator::kMaxAngularSamples))
+      ->check (inRange (8, ScanSimulator::kMaxAngularSamples))
       ->capture_default_str ();
   command->add_option ("--row-spacing", parameters.row_spacing, "scanner row spacing (mm)")
-      ->check (CLI::Range (ScanSimulator::kMinRowSpacing, 1000.0))
+      ->check (inRange (ScanSimulator::kMinRowSpacing, 1000.0))
       ->capture_default_str ();
   command
       ->add_option ("--scale-deviation", parameters.max_scale_deviation,
                     "the scan's random scale lies in [1 - D, 1 + D] (0: the scanner measures true size, as when "
                     "building models from the scans)")
-      ->check (CLI::Range (0.0, 0.5))
+      ->check (inRange (0.0, 0.5))
       ->capture_default_str ();
   command->add_flag ("--range-mesh", parameters.range_mesh, "also write the triangulated range image");
 }

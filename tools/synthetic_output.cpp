@@ -1,10 +1,11 @@
-#include "synthetic_output.h"
+// SPDX-License-Identifier: BSD-3-Clause
 #include "mesh_annotations.h"
 #include "progress.h"
+#include "provenance.h"
+#include "synthetic_output.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/photo/photo_view_io.h>
@@ -89,7 +90,7 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
     progress.step (static_cast<int> (i + 1));
   }
   progress.finish ();
-  writeJsonFile (directory + "/population.json", manifest);
+  writeReport (directory + "/population.json", manifest);
   return manifest;
 }
 
@@ -113,7 +114,7 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
                           {"source_triangle", scan.source_triangle},
                           {"barycentric", std::vector<double> (scan.barycentric.data (),
                                                                scan.barycentric.data () + scan.barycentric.size ())}};
-  writeJsonFile (directory + "/" + name + "_truth.json", truth);
+  writeReport (directory + "/" + name + "_truth.json", truth);
   if (!scan.range_mesh.polygons.empty ())
     savePolygonMesh (directory + "/" + name + "_range.ply", scan.range_mesh);
   return {{"cloud", name + ".pcd"},
@@ -140,7 +141,7 @@ writePhotos (const std::string& directory, const std::string& name, const synthe
                                 {"head_to_photo", std::vector<double> (pose.data (), pose.data () + 16)},
                                 {"head_to_photo_layout", "column-major 4x4"},
                                 {"scale", photos.scale}};
-  writeJsonFile (directory + "/" + name + "_truth.json", truth);
+  writeReport (directory + "/" + name + "_truth.json", truth);
   return {{"profile", name + "_profile.json"}, {"frontal", name + "_frontal.json"}, {"truth", name + "_truth.json"}};
 }
 

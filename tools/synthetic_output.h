@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Writing the synthetic population and simulated scans to disk, shared by the synth and demo commands.
 #include <morphreg/synthetic/head_generator.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Registers a morphreg head model to a scan read with Open3D, and writes the fitted mesh with Open3D.
 
 Usage: python3 register_open3d.py MODEL.h5 SCAN.ply FITTED.ply

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg: morphable-model registration and thin plate spline warping for point clouds (C++ on PCL).
 
 Points are (N, 3) float64 or float32 numpy arrays in millimetres; results are float64 arrays. Every

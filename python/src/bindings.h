@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The parts of the morphreg Python module, one file each; module.cpp calls them in order.
 #include <pybind11/pybind11.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg's exceptions as Python classes with the same names and messages. Each also derives from the Python
 // exception a caller would expect: InvalidInputError is a ValueError, IoError an OSError, NumericalError an
 // ArithmeticError.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesh, cloud and landmark files as numpy arrays, read and written by the library (format sniffed from the content,
 // validated before PCL or VTK see it, written atomically).
 #include "bindings.h"
@@ -55,12 +56,13 @@ void
 bindIo (py::module_& m)
 {
   m.def ("load_mesh", &loadMesh, py::arg ("path"),
-         "Reads a triangle mesh (PLY, OBJ, STL, VTK, OFF; the format is recognised from the content).\n"
+         "Reads a triangle mesh (PLY, OBJ, STL, VTK, OFF, glTF/GLB converted from metres to mm; the format is "
+         "recognised from the content).\n"
          "Returns (vertices, faces): (N, 3) float64 and (T, 3) int32.");
   m.def ("save_mesh", &saveMesh, py::arg ("path"), py::arg ("vertices"), py::arg ("faces"),
          "Writes a triangle mesh (format from the extension: .ply, .obj, .vtk), atomically.");
   m.def ("load_cloud", &loadPoints, py::arg ("path"),
-         "Reads a point cloud (PCD, PLY, or a mesh file's vertices).\n"
+         "Reads a point cloud (PCD, PLY, or a mesh file's vertices, glTF/GLB included).\n"
          "Returns (points, normals): (N, 3) float64, and normals (N, 3) or None if the file has none.");
   m.def ("save_cloud", &savePoints, py::arg ("path"), py::arg ("points"), py::arg ("normals") = py::none (),
          "Writes a point cloud (.pcd or .ply), with normals if given, atomically.");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reports (nlohmann JSON) as Python dicts and lists.
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg.Model: a multi-region PCA head model (statismo HDF5 files), its mean, regions, components, landmarks,
 // instances and random samples as numpy arrays.
 #include "bindings.h"
@@ -6,6 +7,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/model/model_builder.h>
 
 #include <pybind11/stl.h>
@@ -45,11 +47,13 @@ coefficientsFor (const ComponentSelection& selection, const py::handle& coeffici
   return toVector (coefficients, "coefficients (one per selected component)", selection.total ());
 }
 
+/** The shape of \a coefficients, in prior standard deviations or (\a in_mm) in mm. */
 py::array
-instance (const MorphableModel& model, const py::handle& coefficients, const py::handle& components)
+instance (const MorphableModel& model, const py::handle& coefficients, const py::handle& components, bool in_mm)
 {
   const ComponentSelection selection = componentSelection (model, components);
-  return toArray (model.generate (coefficientsFor (selection, coefficients), selection));
+  const Eigen::VectorXd given = coefficientsFor (selection, coefficients);
+  return toArray (model.generate (in_mm ? given : coefficientsInMillimetres (model, given, selection), selection));
 }
 
 py::array
@@ -60,11 +64,14 @@ sample (const MorphableModel& model, std::uint64_t seed, const py::handle& compo
   return toArray (model.generate (model.sampleCoefficients (rng, selection), selection));
 }
 
+/** The least-squares coefficients of \a vertices, in prior standard deviations or (\a in_mm) in mm. */
 py::array
-project (const MorphableModel& model, const py::handle& vertices, const py::handle& components)
+project (const MorphableModel& model, const py::handle& vertices, const py::handle& components, bool in_mm)
 {
   const PointsArgument shape = pointsArgument (vertices, "vertices");
-  return toArray (model.project (Eigen::Matrix3Xd (shape.points), componentSelection (model, components)).coefficients);
+  const ComponentSelection selection = componentSelection (model, components);
+  const Eigen::VectorXd mm = model.project (Eigen::Matrix3Xd (shape.points), selection).coefficients;
+  return toArray (in_mm ? mm : coefficientsInStandardDeviations (model, mm, selection));
 }
 
 /** A model from meshes in correspondence (a list of (N, 3) arrays sharing \a faces), as `morphreg build-model`. */
@@ -139,13 +146,64 @@ componentSelection (const MorphableModel& model, const py::handle& components)
   return counts.size () == 1 ? model.firstComponents (counts.front ()) : model.firstComponents (counts);
 }
 
+namespace
+{
+/** Model's instances, samples and projections, with coefficients in prior standard deviations or in mm. */
+void
+bindShapes (py::class_<MorphableModel, MorphableModel::Ptr>& cls)
+{
+  cls.def (
+         "standard_deviations",
+         [] (const MorphableModel& model, const py::handle& components) {
+           return toArray (Eigen::VectorXd (model.variances (componentSelection (model, components)).cwiseSqrt ()));
+         },
+         py::arg ("components") = py::none (),
+         "The selected components' prior standard deviations (mm), stacked by region: coefficients_mm / these = "
+         "coefficients.")
+      .def (
+          "instance",
+          [] (const MorphableModel& model, const py::handle& coefficients, const py::handle& components) {
+            return instance (model, coefficients, components, false);
+          },
+          py::arg ("coefficients"), py::arg ("components") = py::none (),
+          "The shape of the coefficients in prior standard deviations (statismo's unit): (N, 3) vertices.")
+      .def (
+          "instance_mm",
+          [] (const MorphableModel& model, const py::handle& coefficients, const py::handle& components) {
+            return instance (model, coefficients, components, true);
+          },
+          py::arg ("coefficients_mm"), py::arg ("components") = py::none (),
+          "The shape of coefficients given as lengths (mm along each selected component): (N, 3) vertices.")
+      .def ("sample", &sample, py::arg ("seed") = 0, py::arg ("components") = py::none (),
+            "A random shape, coefficients drawn from N(0, 1) standard deviations with the seed: (N, 3) vertices.")
+      .def (
+          "project",
+          [] (const MorphableModel& model, const py::handle& vertices, const py::handle& components) {
+            return project (model, vertices, components, false);
+          },
+          py::arg ("vertices"), py::arg ("components") = py::none (),
+          "The least-squares coefficients of a shape in the model's frame and topology, in prior standard "
+          "deviations.")
+      .def (
+          "project_mm",
+          [] (const MorphableModel& model, const py::handle& vertices, const py::handle& components) {
+            return project (model, vertices, components, true);
+          },
+          py::arg ("vertices"), py::arg ("components") = py::none (),
+          "The least-squares coefficients of a shape as lengths (mm along each selected component).");
+}
+} // namespace
+
 void
 bindModel (py::module_& m)
 {
-  py::class_<MorphableModel, MorphableModel::Ptr> (m, "Model",
-                                                   "A multi-region PCA shape model (mm), as `morphreg build-model` "
-                                                   "writes it; components: None (all), an int per region, or a list.")
-      .def_static ("load", &loadModel, py::arg ("path"), "Reads a model file (statismo HDF5, morphreg or BFM layout).")
+  py::class_<MorphableModel, MorphableModel::Ptr> model (
+      m, "Model",
+      "A multi-region PCA shape model (mm), as `morphreg build-model` writes it; components: None (all), an int per "
+      "region, or a list. Coefficients are in prior standard deviations (statismo's unit); the *_mm methods take "
+      "and give lengths (mm along each component).");
+  bindShapes (model);
+  model.def_static ("load", &loadModel, py::arg ("path"), "Reads a model file (statismo HDF5, morphreg or BFM layout).")
       .def (
           "save", [] (const MorphableModel& model, const std::string& path) { saveModel (path, model); },
           py::arg ("path"), "Writes the model as statismo HDF5, atomically.")
@@ -179,12 +237,6 @@ bindModel (py::module_& m)
           },
           py::arg ("components") = py::none (),
           "The selected components as the (3N, K) shape matrix (rows x, y, z per vertex; blended across regions).")
-      .def ("instance", &instance, py::arg ("coefficients"), py::arg ("components") = py::none (),
-            "The shape of the coefficients (mm along each selected component): (N, 3) vertices.")
-      .def ("sample", &sample, py::arg ("seed") = 0, py::arg ("components") = py::none (),
-            "A random shape, coefficients drawn from N(0, variance) with the seed: (N, 3) vertices.")
-      .def ("project", &project, py::arg ("vertices"), py::arg ("components") = py::none (),
-            "The least-squares coefficients of a shape in the model's frame and topology.")
       .def_static ("build", &buildModel, py::arg ("meshes"), py::arg ("faces"), py::arg ("regions") = py::none (),
                    py::arg ("components") = 0, py::arg ("variance") = 1.0, py::arg ("blend_rings") = 2,
                    py::arg ("procrustes") = true, py::arg ("landmarks") = LandmarkVertices (),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The morphreg Python module (_morphreg; the package morphreg re-exports it): numpy in and out, the library's
 // errors as Python exceptions.
 #include "bindings.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Conversions between numpy arrays and the library's Eigen and PCL types. Points are (N, 3) arrays: float64 arrays
 // in C order are read in place (their memory is the library's 3 x N column-major layout), other float layouts are

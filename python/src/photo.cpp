@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Fitting the model to two photographs: morphreg.ProfileView and morphreg.FrontalView (pixels, or the annotation
 // files of `morphreg fit-photos`), morphreg.fit_photos, and morphreg.PhotoSimulator for annotated synthetic photos.
 #include "bindings.h"
@@ -102,8 +103,12 @@ void
 bindResult (py::module_& m)
 {
   py::class_<PhotoFitResult> (m, "PhotoFitResult", "The outcome of morphreg.fit_photos.")
-      .def_property_readonly ("coefficients",
-                              [] (const PhotoFitResult& r) { return toArray (Eigen::VectorXd (r.fit.coefficients)); })
+      .def_property_readonly (
+          "coefficients", [] (const PhotoFitResult& r) { return toArray (Eigen::VectorXd (r.fit.coefficients)); },
+          "Shape coefficients in prior standard deviations (statismo's unit), stacked by region.")
+      .def_property_readonly (
+          "coefficients_mm", [] (const PhotoFitResult& r) { return toArray (Eigen::VectorXd (r.fit.coefficients_mm)); },
+          "The shape coefficients as lengths (mm along each selected component), stacked by region.")
       .def_property_readonly (
           "scale", [] (const PhotoFitResult& r) { return r.fit.scale; }, "Normalised photo units per model millimetre.")
       .def_property_readonly ("rotation",

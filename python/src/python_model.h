@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Model arguments shared by the parts of the module.
 #include <morphreg/model/morphable_model.h>

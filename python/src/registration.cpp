@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg.register: a MorphableICP fit of a model to points (numpy), configured and checked as `morphreg register`
 // does it, with the GIL released while it runs and an optional per-iteration progress callback.
 #include "bindings.h"
@@ -28,9 +29,10 @@ using Icp = MorphableICP<pcl::PointNormal>;
 /** What a fit returns to Python. */
 struct RegistrationResult
 {
-  Eigen::Matrix4d similarity;   ///< model to scan frame (mm)
-  Eigen::VectorXd coefficients; ///< stacked over the regions' selected components
-  Eigen::Matrix3Xd vertices;    ///< the fitted model, scan frame, mm
+  Eigen::Matrix4d similarity;      ///< model to scan frame (mm)
+  Eigen::VectorXd coefficients;    ///< stacked over the regions' selected components, prior standard deviations
+  Eigen::VectorXd coefficients_mm; ///< the same as lengths (mm)
+  Eigen::Matrix3Xd vertices;       ///< the fitted model, scan frame, mm
   TriangleMesh::Triangles faces;
   Eigen::VectorXd residuals; ///< per model vertex (mm), NaN without a correspondence
   nlohmann::json report;
@@ -106,6 +108,7 @@ registerPoints (const MorphableModel::Ptr& model, const py::handle& points, cons
   }
   RegistrationResult result{icp.getFinalTransformation ().cast<double> (),
                             icp.getShapeCoefficients (),
+                            icp.getShapeCoefficientsMm (),
                             icp.getFittedVertices (),
                             model->triangles (),
                             icp.getVertexResiduals (),
@@ -179,7 +182,10 @@ bindResult (py::module_& m)
           [] (const RegistrationResult& r) { return toArray (Eigen::VectorXd (r.similarity.topRightCorner<3, 1> ())); })
       .def_property_readonly (
           "coefficients", [] (const RegistrationResult& r) { return toArray (Eigen::VectorXd (r.coefficients)); },
-          "Shape coefficients (mm along each selected component), stacked by region.")
+          "Shape coefficients in prior standard deviations (statismo's unit), stacked by region.")
+      .def_property_readonly (
+          "coefficients_mm", [] (const RegistrationResult& r) { return toArray (Eigen::VectorXd (r.coefficients_mm)); },
+          "The shape coefficients as lengths (mm along each selected component), stacked by region.")
       .def_property_readonly (
           "vertices", [] (const RegistrationResult& r) { return toArray (Eigen::Matrix3Xd (r.vertices)); },
           "The fitted model's vertices, (N, 3), mm, in the scan's frame.")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The built-in synthetic data: morphreg.HeadGenerator (heads with known parameters, landmarks and regions) and
 // morphreg.ScanSimulator (laser scans of them with a known pose and per-point ground truth).
 #include "bindings.h"

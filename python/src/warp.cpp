@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Landmark warps from numpy landmarks: morphreg.ThinPlateSpline (3D), morphreg.SegmentedWarp (one spline per segment,
 // seams blended), morphreg.MovingLeastSquaresWarp and morphreg.evaluate_warp.
 #include "bindings.h"

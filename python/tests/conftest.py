@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures of the Python tests: a small synthetic model, an unseen head and its scan, and runners for the
 command line and the C++ reference program (their answers are what the equality checks compare against)."""
 import json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The C++ API's answers to the Python tests' requests, for their equality checks: reads a request (JSON) and writes
 // the results (JSON doubles keep every digit). Usage: morphreg_python_reference request.json result.json
 // Each key of the request present is answered under the same key:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The morphreg.Error hierarchy: the library's classes, each also the Python exception a caller expects."""
 import pytest
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Open3D example (python/examples/register_open3d.py) run as a user would, on a simulated scan."""
 import os
 import subprocess

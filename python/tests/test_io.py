@@ -1,4 +1,9 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Mesh, cloud and landmark files through the library's readers and writers."""
+import base64
+import json
+import struct
+
 import numpy as np
 import pytest
 
@@ -67,3 +72,40 @@ def test_bad_arrays_are_named(truth, tmp_path):
         morphreg.save_landmarks(str(tmp_path / "m.json"), {"nose_tip": [np.nan, 0, 0]})
     with pytest.raises(morphreg.IoError, match="no_such_folder"):
         morphreg.save_mesh(str(tmp_path / "no_such_folder" / "x.ply"), truth.vertices, truth.faces)
+
+
+def gltf_parts(vertices, faces):
+    """A one-primitive glTF of the mesh in metres: its JSON and its binary buffer (positions, then indices)."""
+    positions = (np.asarray(vertices) / 1000.0).astype("<f4").tobytes()
+    indices = np.asarray(faces).astype("<u4").tobytes()
+    document = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": len(vertices), "type": "VEC3"},
+                      {"bufferView": 1, "componentType": 5125, "count": faces.size, "type": "SCALAR"}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(positions)},
+                        {"buffer": 0, "byteOffset": len(positions), "byteLength": len(indices)}],
+        "buffers": [{"byteLength": len(positions) + len(indices)}]}
+    return document, positions + indices
+
+
+def test_gltf_and_glb_are_read_in_millimetres(truth, tmp_path):
+    document, buffer = gltf_parts(truth.vertices, truth.faces)
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    glb = tmp_path / "head.glb"
+    glb.write_bytes(b"glTF" + struct.pack("<II", 2, 28 + len(text) + len(buffer)) + struct.pack("<I", len(text))
+                    + b"JSON" + text + struct.pack("<I", len(buffer)) + b"BIN\0" + buffer)
+    document["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
+    embedded = tmp_path / "head.gltf"
+    embedded.write_text(json.dumps(document))
+    for path in (glb, embedded):
+        vertices, faces = morphreg.load_mesh(str(path))
+        assert np.array_equal(faces, truth.faces)
+        assert np.allclose(vertices, truth.vertices, rtol=1e-6, atol=1e-4)  # metres in float32, read in mm
+        points, normals = morphreg.load_cloud(str(path))
+        assert normals is None and np.allclose(points, truth.vertices, rtol=1e-6, atol=1e-4)
+    glb.write_bytes(glb.read_bytes()[:100])
+    with pytest.raises(morphreg.FormatError, match="head.glb: the GLB header gives a length of"):
+        morphreg.load_mesh(str(glb))
+

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.Model: files, mean, regions, components, instances, samples and projections; equal to the C++ API."""
 import numpy as np
 import pytest
@@ -35,19 +36,31 @@ def test_regions(model, generator):
 
 def test_instance_is_mean_plus_components(model):
     selection = [3] * 7
-    coefficients = np.random.default_rng(2).normal(size=21)
+    coefficients_mm = np.random.default_rng(2).normal(size=21)
     shape_matrix = model.components(selection)
     assert shape_matrix.shape == (3 * 3458, 21)
-    expected = model.mean + (shape_matrix @ coefficients).reshape(-1, 3)
-    assert relative_difference(model.instance(coefficients, selection), expected) <= 1e-12
+    expected = model.mean + (shape_matrix @ coefficients_mm).reshape(-1, 3)
+    assert relative_difference(model.instance_mm(coefficients_mm, selection), expected) <= 1e-12
     assert np.array_equal(model.instance(np.zeros(21), 3), model.mean)
     assert model.variances(3).shape == (21,)
 
 
+def test_coefficients_are_in_prior_standard_deviations(model):
+    """statismo's convention: instance(c) = mean + components @ (c * sqrt(variances))."""
+    sd = model.standard_deviations(4)
+    assert np.allclose(sd, np.sqrt(model.variances(4)), rtol=1e-12)
+    coefficients = np.random.default_rng(5).normal(size=28)
+    expected = model.mean + (model.components(4) @ (coefficients * sd)).reshape(-1, 3)
+    assert relative_difference(model.instance(coefficients, 4), expected) <= 1e-12
+    assert relative_difference(model.instance(coefficients, 4), model.instance_mm(coefficients * sd, 4)) <= 1e-12
+
+
 def test_project_recovers_coefficients(model):
-    coefficients = np.random.default_rng(3).normal(size=35) * np.sqrt(model.variances(5))
+    coefficients = np.random.default_rng(3).normal(size=35)
     recovered = model.project(model.instance(coefficients, 5), 5)
     assert np.max(np.abs(recovered - coefficients)) < 1e-6
+    in_mm = model.project_mm(model.instance(coefficients, 5), 5)
+    assert np.max(np.abs(in_mm - coefficients * model.standard_deviations(5))) < 1e-6
 
 
 def test_sample_is_seeded(model):
@@ -60,7 +73,7 @@ def test_equals_the_cpp_api(model_file, tmp_path):
     coefficients = list(np.linspace(-20, 20, 35))
     reference = cpp_reference({"model": {"path": model_file, "coefficients": coefficients, "components": 5,
                                          "seed": 11}}, tmp_path)["model"]
-    assert relative_difference(model.instance(coefficients, 5), reference["instance"]) <= 1e-9
+    assert relative_difference(model.instance_mm(coefficients, 5), reference["instance"]) <= 1e-9
     assert relative_difference(model.sample(11, 5), reference["sample"]) <= 1e-9
 
 

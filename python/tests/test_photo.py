@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.fit_photos on simulated photos: accuracy, equality with `morphreg fit-photos`, bad input."""
 import json
 
@@ -25,6 +26,9 @@ def test_joint_fit_recovers_the_head(model, photos, truth):
     assert np.allclose(fit.rotation, photos.rotation, atol=0.05)
     assert np.linalg.norm(fit.translation - photos.translation) < 0.02  # normalised photo units
     assert len(fit.coefficients) == 70
+    assert fit.report["coefficients_unit"] == "prior standard deviations"
+    assert relative_difference(fit.coefficients, fit.coefficients_mm / model.standard_deviations(10)) <= 1e-12
+    assert relative_difference(fit.report["coefficients_mm"], fit.coefficients_mm) <= 1e-12
 
 
 def test_equals_the_command_line(model_file, photos, tmp_path):

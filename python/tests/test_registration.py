@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.register: accuracy against the truth, equality with `morphreg register`, the GIL, progress, bad input."""
 import json
 import sys
@@ -49,6 +50,17 @@ def test_result_parts_agree(fit, model):
     assert report["settings"]["components"] == [5]
     stacked = np.concatenate([report["coefficients"][region["name"]] for region in model.regions])
     assert np.array_equal(stacked, fit.coefficients)
+    stacked_mm = np.concatenate([report["coefficients_mm"][region["name"]] for region in model.regions])
+    assert np.array_equal(stacked_mm, fit.coefficients_mm)
+
+
+def test_coefficients_are_lengths_over_prior_standard_deviations(fit, model):
+    assert fit.report["coefficients_unit"] == "prior standard deviations"
+    sd = model.standard_deviations(5)
+    assert np.abs(fit.coefficients_mm).max() > 1.0  # a real fit, not the mean
+    assert relative_difference(fit.coefficients, fit.coefficients_mm / sd) <= 1e-12
+    vertices = model.instance(fit.coefficients, 5) @ fit.rotation.T * fit.scale + fit.translation
+    assert np.abs(vertices - fit.vertices).max() < 1e-6
 
 
 def test_equals_the_command_line(model, model_file, scan, tmp_path):

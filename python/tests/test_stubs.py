@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The type stubs (morphreg/__init__.pyi) describe exactly the module: every public name, every class member and
 every function's parameters, so editors complete what exists."""
 import ast

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.HeadGenerator and ScanSimulator: deterministic, equal to the C++ API, bad settings named."""
 import numpy as np
 import pytest

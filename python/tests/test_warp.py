@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """morphreg.ThinPlateSpline, MovingLeastSquaresWarp, SegmentedWarp and evaluate_warp; equal to the C++ API."""
 import numpy as np
 import pytest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/distance_statistics.h>
 
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "number_text.h"
 
 #include <morphreg/common/error.h>
@@ -43,15 +44,38 @@ distanceFromHeadSize (double size_ratio, LengthUnit unit)
          (unit == LengthUnit::inch ? kInchHandicap : 0.0);
 }
 
-/** The unit whose reading puts the scan closest to the expected head size. */
+/** The units a depth camera's view may be in. */
+constexpr LengthUnit kViewUnits[] = {LengthUnit::millimetre, LengthUnit::metre};
+
+/** A depth camera's view may hold the room around the person: up to this size against the model. */
+constexpr double kMaxViewRatio = 40.0;
+
+/** The unit of \a candidates whose reading puts the scan closest to the expected head size. */
+template <typename Units>
 LengthUnit
-closestUnit (double size_ratio)
+closestUnit (double size_ratio, const Units& candidates)
 {
   LengthUnit best = LengthUnit::millimetre;
-  for (LengthUnit unit : kUnits)
+  for (LengthUnit unit : candidates)
     if (distanceFromHeadSize (size_ratio, unit) < distanceFromHeadSize (size_ratio, best))
       best = unit;
   return best;
+}
+
+/** The units a model may be guessed in: the metric ones modelling tools write (statismo, scalismo, BFM: mm; MNE,
+ *  Open3D, Blender exports: m; ICT-FaceKit: cm). */
+constexpr LengthUnit kModelUnits[] = {LengthUnit::millimetre, LengthUnit::centimetre, LengthUnit::metre};
+/** A model outside this size against a head model's in its best unit is no head, face or body in any unit. */
+constexpr double kMinModelRatio = 0.1;
+constexpr double kMaxModelRatio = 30.0;
+
+void
+requireFinitePoints (const Eigen::Matrix3Xd& points, Eigen::Index minimum, const std::string& who)
+{
+  if (points.cols () < minimum || !points.allFinite ())
+    throw InvalidInputError (who + ": need at least " + std::to_string (minimum) + " finite points, got " +
+                             std::to_string (points.cols ()) +
+                             (points.allFinite () ? "" : " with non-finite coordinates"));
 }
 
 /** The guess's one sentence: the scan's size, the model's, and what the chosen \a unit makes of it. */
@@ -115,22 +139,48 @@ parseLengthUnit (const std::string& name)
 }
 
 LengthUnitGuess
-guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm)
+guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm, bool one_view)
 {
-  if (points.cols () < 4 || !points.allFinite ())
-    throw InvalidInputError ("guessLengthUnit: need at least 4 finite points, got " + std::to_string (points.cols ()) +
-                             (points.allFinite () ? "" : " with non-finite coordinates"));
+  requireFinitePoints (points, 4, "guessLengthUnit");
   if (!(model_radius_mm > 0.0) || !std::isfinite (model_radius_mm))
     throw InvalidInputError ("guessLengthUnit: the model radius must be positive and finite, got " +
                              std::to_string (model_radius_mm));
   const double radius = robustRadius (points);
   LengthUnitGuess guess;
   guess.size_ratio = radius / model_radius_mm;
-  guess.unit = closestUnit (guess.size_ratio);
+  guess.unit = one_view ? closestUnit (guess.size_ratio, kViewUnits) : closestUnit (guess.size_ratio, kUnits);
   const double relative = guess.size_ratio * millimetresPer (guess.unit);
-  const bool head_sized = relative >= kMinHeadRatio && relative <= kMaxHeadRatio;
+  const bool head_sized = relative >= kMinHeadRatio && relative <= (one_view ? kMaxViewRatio : kMaxHeadRatio);
   guess.reason = explainGuess (radius, model_radius_mm, guess.unit, relative, head_sized);
+  guess.recognised = head_sized;
   if (!head_sized)
+    guess.unit = LengthUnit::millimetre;
+  return guess;
+}
+
+LengthUnitGuess
+guessModelUnit (const Eigen::Matrix3Xd& mean)
+{
+  requireFinitePoints (mean, 3, "guessModelUnit");
+  const double radius = std::sqrt ((mean.colwise () - mean.rowwise ().mean ()).colwise ().squaredNorm ().mean ());
+  LengthUnitGuess guess;
+  guess.size_ratio = radius / kHeadModelRadiusMm;
+  const auto distance = [&] (LengthUnit unit) {
+    return std::abs (std::log10 (guess.size_ratio * millimetresPer (unit)));
+  };
+  for (LengthUnit unit : kModelUnits)
+    if (distance (unit) < distance (guess.unit))
+      guess.unit = unit;
+  const double relative = guess.size_ratio * millimetresPer (guess.unit);
+  guess.recognised = relative >= kMinModelRatio && relative <= kMaxModelRatio;
+  const std::string size = "the mean's RMS radius is " + numberText (radius) + ": ";
+  guess.reason = guess.recognised
+                     ? size + "taken as " + toString (guess.unit) + " (x" +
+                           numberText (millimetresPer (guess.unit), 6) + " to mm), it is " + numberText (relative) +
+                           " times a head model's " + numberText (kHeadModelRadiusMm) + " mm"
+                     : size + "no head, face or body in mm, cm or m (a head model's is " +
+                           numberText (kHeadModelRadiusMm) + " mm)";
+  if (!guess.recognised)
     guess.unit = LengthUnit::millimetre;
   return guess;
 }

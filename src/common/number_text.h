@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the library: numbers in the sentences of error messages and reports.
 #include <sstream>

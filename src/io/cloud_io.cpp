@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/io/impl/cloud_io.hpp>
 
 #define MORPHREG_INSTANTIATE_CLOUD_IO(T)                                                                               \

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 
@@ -7,24 +8,35 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 namespace morphreg
 {
 void
-requireReadableFile (const std::string& path)
+requireReadableFile (const std::string& path, std::uintmax_t max_bytes)
 {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists (path, ec))
-    throw IoError (path + ": no such file");
-  if (fs::is_directory (path, ec))
+  struct stat status;
+  if (::stat (path.c_str (), &status) != 0)
+    throw IoError (path + (errno == ENOENT || errno == ENOTDIR ? ": no such file" : ": cannot be read"));
+  if (S_ISDIR (status.st_mode))
     throw IoError (path + ": is a directory, expected a file");
-  std::ifstream stream (path, std::ios::binary);
-  if (!stream)
+  if (!S_ISREG (status.st_mode))
+    throw IoError (path + ": is not a regular file (" +
+                   (S_ISFIFO (status.st_mode)  ? "a FIFO"
+                    : S_ISCHR (status.st_mode) ? "a character device"
+                    : S_ISBLK (status.st_mode) ? "a block device"
+                                               : "a socket") +
+                   "); give a file");
+  if (::access (path.c_str (), R_OK) != 0)
     throw IoError (path + ": cannot be opened for reading");
-  if (fs::file_size (path, ec) == 0)
+  if (status.st_size == 0)
     throw FormatError (path + ": file is empty");
+  if (static_cast<std::uintmax_t> (status.st_size) > max_bytes)
+    throw FormatError (path + ": " + std::to_string (status.st_size) + " bytes, more than the " +
+                       std::to_string (max_bytes >> 20) + " MiB a file of this kind may have: is it the right file?");
 }
 
 void
@@ -43,24 +55,6 @@ requireWritableOutput (const std::string& path)
     throw IoError (path + ": cannot be written: " + folder.string () + " is not a folder");
   if (::access (folder.c_str (), W_OK | X_OK) != 0)
     throw IoError (path + ": cannot be written: no permission to write in " + folder.string ());
-}
-
-void
-requireNotAnInput (const std::string& output, const std::vector<std::string>& inputs)
-{
-  namespace fs = std::filesystem;
-  std::error_code output_error;
-  const fs::path target = fs::weakly_canonical (output, output_error);
-  for (const std::string& input : inputs) {
-    if (input.empty ())
-      continue;
-    std::error_code input_error, link_error;
-    const fs::path source = fs::weakly_canonical (input, input_error);
-    const bool same_name = !output_error && !input_error && source == target;
-    if (same_name || fs::equivalent (output, input, link_error))
-      throw InvalidInputError (output + ": is also an input (" + input +
-                               "); writing it would overwrite that input, choose another output file");
-  }
 }
 
 std::string

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_format.h>
 
@@ -86,9 +87,13 @@ sniffFileFormat (const std::string& path)
     return FileFormat::Ply;
   if (startsWith (prefix, "# vtk DataFile Version"))
     return FileFormat::VtkLegacy;
+  if (startsWith (prefix, "glTF"))
+    return FileFormat::Glb;
   if (isBinaryStl (prefix, size))
     return FileFormat::StlBinary;
-  const std::size_t start = prefix.find_first_not_of (" \t\r\n");
+  const std::size_t start = prefix.find_first_not_of (" \t\r\n", startsWith (prefix, "\xEF\xBB\xBF") ? 3 : 0);
+  if (start != std::string::npos && prefix[start] == '{')
+    return FileFormat::Gltf;
   if (start != std::string::npos && prefix.compare (start, 5, "solid") == 0 &&
       (prefix.size () == start + 5 || std::isspace (static_cast<unsigned char> (prefix[start + 5]))))
     return FileFormat::StlAscii;
@@ -112,6 +117,10 @@ fileFormatName (FileFormat format)
     return "VTK";
   case FileFormat::Off:
     return "OFF";
+  case FileFormat::Gltf:
+    return "glTF";
+  case FileFormat::Glb:
+    return "GLB";
   case FileFormat::Unknown:
     break;
   }
@@ -127,6 +136,14 @@ fileFormatExtension (FileFormat format)
   for (char& c : extension)
     c = static_cast<char> (std::tolower (static_cast<unsigned char> (c)));
   return extension;
+}
+
+std::optional<LengthUnit>
+specifiedLengthUnit (FileFormat format)
+{
+  if (format == FileFormat::Gltf || format == FileFormat::Glb)
+    return LengthUnit::metre;
+  return std::nullopt;
 }
 
 } // namespace morphreg

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry_validators.h"
 #include "off_reader.h"
 #include "vtk_reader.h"
@@ -5,6 +6,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
+#include <morphreg/io/gltf_reader.h>
 
 #include <cctype>
 #include <cstdint>
@@ -31,8 +33,10 @@ unknownContent (const std::string& path)
                         std::to_string (84 + 50 * triangles) + " bytes of a binary STL with the " +
                         std::to_string (triangles) + " triangles its header gives (the file is cut short or corrupt)");
   }
+  if (ext == ".glb")
+    return FormatError (path + ": not a GLB file: it does not start with the magic bytes 'glTF'");
   return FormatError (path + ": the content is none of the supported mesh and cloud formats (PLY, PCD, OBJ, STL, "
-                             "VTK legacy, OFF)");
+                             "VTK legacy, OFF, glTF, GLB)");
 }
 
 /** The formats PCL and VTK read: checked before their readers see the file. */
@@ -50,9 +54,14 @@ validateForLibraryReader (const std::string& path, FileFormat format)
     validation::validateAsciiStlFile (path);
     break;
   case FileFormat::StlBinary: // recognised by its size being exactly what its triangle count needs
-  case FileFormat::Pcd:       // read by morphreg's own readers, which check as they read
+    if (std::filesystem::file_size (path) == 84)
+      throw FormatError (path + ": the STL file has no triangles (its triangle count is 0)");
+    break;
+  case FileFormat::Pcd: // read by morphreg's own readers, which check as they read
   case FileFormat::VtkLegacy:
   case FileFormat::Off:
+  case FileFormat::Gltf:
+  case FileFormat::Glb:
   case FileFormat::Unknown:
     break;
   }
@@ -68,6 +77,8 @@ validateGeometryFile (const std::string& path)
     throw unknownContent (path);
   if (format == FileFormat::Off)
     readOffMesh (path);
+  else if (format == FileFormat::Gltf || format == FileFormat::Glb)
+    readGltfFile (path);
   else if (format == FileFormat::VtkLegacy)
     readVtkFile (path);
   else if (format == FileFormat::Pcd)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the geometry file validators: a file read line by line (or in raw bytes) that knows its size and the
 // current line number, whitespace tokenising without copies, and number parsing.

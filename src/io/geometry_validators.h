@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private: one structural validator per format (src/io/<format>_validation.cpp), each throwing FormatError naming the
 // file (and line) on the first problem. validateGeometryFile (file_validation.h) chooses among them by content.

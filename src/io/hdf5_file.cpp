@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "hdf5_file.h"
 
 #include <morphreg/io/atomic_file.h>
@@ -148,7 +149,8 @@ Reader::exists (const std::string& name) const
     return !prefix.empty ();
   }
   catch (const H5::Exception& e) {
-    throw FormatError (path_ + ": cannot look up '" + name + "': " + e.getDetailMsg ());
+    throw FormatError (path_ + ": a corrupt model file: its HDF5 group structure cannot be read at '" + name +
+                       "' (HDF5: " + e.getDetailMsg () + ")");
   }
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private helpers over HDF5's C++ API for the model files: every failure becomes a morphreg error that names the
 // file, the dataset and the problem.

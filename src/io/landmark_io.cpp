@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "../common/number_text.h"
 #include "text_fields.h"
 
 #include <morphreg/common/error.h>
@@ -20,6 +22,11 @@ namespace morphreg
 {
 namespace
 {
+using detail::numberText;
+
+/** Landmark coordinates beyond this magnitude (10 km in mm) are a corrupt file, whatever the unit. */
+constexpr double kMaxLandmarkCoordinate = 1e7;
+
 template <int Dim>
 using Point = Eigen::Matrix<double, Dim, 1>;
 
@@ -80,7 +87,7 @@ formatNumber (double value)
 std::string
 readWholeFile (const std::string& path)
 {
-  requireReadableFile (path);
+  requireReadableFile (path, kMaxTextFileBytes);
   std::ifstream stream (path, std::ios::binary);
   std::ostringstream content;
   content << stream.rdbuf ();
@@ -355,6 +362,10 @@ collect (const std::vector<Entry<Dim>>& entries, const std::string& path, bool k
     const auto [it, inserted] = first_seen.emplace (entry.id, entry.where);
     if (!inserted)
       throw FormatError (entry.where + ": duplicate landmark '" + entry.id + "' (first at " + it->second + ")");
+    if (entry.position.cwiseAbs ().maxCoeff () > kMaxLandmarkCoordinate)
+      throw FormatError (entry.where + ": landmark '" + entry.id + "' has the coordinate " +
+                         numberText (entry.position.cwiseAbs ().maxCoeff ()) +
+                         ", beyond +-1e7 in any unit (a corrupt file?)");
     points[entry.id] = entry.position;
   }
   if (points.empty ())
@@ -366,9 +377,9 @@ template <int Dim>
 NamedPoints<Dim>
 load (const std::string& path, bool known_ids_only = true)
 {
+  requireReadableFile (path, kMaxTextFileBytes);
   requireExtension (path, Dim == 3 ? ".pp .json .csv .pts" : ".json .csv .pts",
                     Dim == 3 ? "landmark" : "pixel landmark (PickedPoints files are 3D only)");
-  requireReadableFile (path);
   const std::string ext = fileExtension (path);
   if (ext == ".json")
     return collect<Dim> (readJson<Dim> (path), path, known_ids_only);
@@ -543,6 +554,12 @@ void
 saveLandmarks (const std::string& path, const LandmarkPositions& landmarks)
 {
   save<3> (path, landmarks);
+}
+
+nlohmann::json
+landmarkPixelsJson (const LandmarkPixels& pixels, const std::string& path)
+{
+  return nlohmann::json::parse (jsonText<2> (orderedForWriting<2> (pixels, path)));
 }
 
 void

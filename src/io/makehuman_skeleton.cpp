@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/io/makehuman_bodies.h>
 
 namespace morphreg

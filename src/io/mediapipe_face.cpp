@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/mediapipe_face.h>
 #include <morphreg/io/mesh_io.h>

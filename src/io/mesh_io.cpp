@@ -1,4 +1,7 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "off_reader.h"
+#include "ply_writer.h"
+#include "polygon_file.h"
 #include "vtk_reader.h"
 
 #include <morphreg/common/error.h>
@@ -6,6 +9,7 @@
 #include <morphreg/io/field_precision.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
+#include <morphreg/io/gltf_reader.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 
@@ -17,36 +21,53 @@
 namespace morphreg
 {
 pcl::PolygonMesh
-loadPolygonMesh (const std::string& path)
+readPolygonFile (const std::string& path, FileFormat format)
 {
-  const FileFormat format = checkGeometryFile (path, ".ply .obj .vtk .stl .off", "mesh");
-  const std::string ext = fileExtension (path);
   pcl::PolygonMesh mesh;
   const int status = callPclIo (path, [&] {
-    if (format == FileFormat::Off) {
+    if (format == FileFormat::Off)
       mesh = readOffMesh (path);
-      return 0;
-    }
-    if (format == FileFormat::Ply)
+    else if (format == FileFormat::Ply)
       return pcl::io::loadPLYFile (path, mesh);
-    if (format == FileFormat::Obj) {
+    else if (format == FileFormat::Obj)
       mesh = readObjFile (path);
-      return 0;
-    }
-    if (format == FileFormat::VtkLegacy) {
+    else if (format == FileFormat::VtkLegacy)
       mesh = readVtkFile (path);
-      return 0;
-    }
-    return pcl::io::loadPolygonFile (path, mesh) > 0 ? 0 : -1;
+    else if (format == FileFormat::Gltf || format == FileFormat::Glb)
+      mesh = toPolygonMesh (readGltfFile (path));
+    else
+      return pcl::io::loadPolygonFile (path, mesh) > 0 ? 0 : -1;
+    return 0;
   });
   if (status < 0)
-    throw FormatError (path + ": not a readable " + ext.substr (1) + " mesh");
+    throw FormatError (path + ": not a readable " + fileExtension (path).substr (1) + " mesh");
   narrowDoubleFields (mesh.cloud, path); // "property double x" would otherwise load as zeros
+  return mesh;
+}
+
+pcl::PolygonMesh
+loadMeshFile (const std::string& path)
+{
+  pcl::PolygonMesh mesh = readPolygonFile (path, checkGeometryFile (path, kMeshExtensions, "mesh"));
   if (mesh.cloud.width * mesh.cloud.height == 0)
     throw FormatError (path + ": mesh has no vertices");
+  return mesh;
+}
+
+pcl::PolygonMesh
+loadPolygonMesh (const std::string& path)
+{
+  pcl::PolygonMesh mesh = loadMeshFile (path);
   if (mesh.polygons.empty ())
     throw FormatError (path + ": mesh has no polygons (is it a point cloud?)");
   return mesh;
+}
+
+SavedVertexData
+savedVertexData (const std::string& path)
+{
+  requireExtension (path, ".ply .obj .vtk", "mesh");
+  return {true, fileExtension (path) == ".ply"};
 }
 
 void
@@ -56,12 +77,10 @@ savePolygonMesh (const std::string& path, const pcl::PolygonMesh& mesh)
   const std::string ext = fileExtension (path);
   if (ext == ".obj")
     return saveObjFile (path, mesh);
+  if (ext == ".ply")
+    return writeFileAtomically (path, plyMeshBytes (path, mesh));
   writeAtomically (path, [&] (const std::string& partial) {
-    const int status = callPclIo (path, [&] {
-      if (ext == ".ply")
-        return pcl::io::savePLYFileBinary (partial, mesh);
-      return pcl::io::saveVTKFile (partial, mesh);
-    });
+    const int status = callPclIo (path, [&] { return pcl::io::saveVTKFile (partial, mesh); });
     if (status < 0)
       throw IoError (path + ": cannot write the mesh");
     requireCompletelyWritten (partial, path);

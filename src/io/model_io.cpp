@@ -1,7 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "hdf5_file.h"
 
+#include <morphreg/common/length_unit.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/model_io.h>
+#include <morphreg/model/model_consistency.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +23,7 @@ struct StatismoPart
 {
   TriangleMesh::Triangles triangles;
   Eigen::VectorXd mean;
+  Eigen::VectorXd reference; ///< representer/points, interleaved like the mean
   Eigen::MatrixXd basis;
   Eigen::VectorXd variances;
   double noise_variance = 0.0;
@@ -94,6 +99,9 @@ readStatismo (const hdf5::Reader& file, const std::string& prefix)
   if (points.dims[0] != 3 || points.dims[1] == 0)
     requireDims (file, points_name, points.dims, {3, std::max<hsize_t> (points.dims[1], 1)}, "[3, N] with N > 0");
   const hsize_t n = points.dims[1];
+  part.reference = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> (
+                       points.values.data (), 3, static_cast<Eigen::Index> (n))
+                       .reshaped (); // column-major: x, y, z of each point in turn
 
   const std::string cells_name = joinPath (prefix, "representer/cells");
   const auto cells = file.readIntegers (cells_name, 2);
@@ -172,36 +180,97 @@ readJson (const hdf5::Reader& file, const std::string& name)
   return value;
 }
 
+/** How a file's model is brought to mm: the factor on its coordinates and the metadata entry saying so. */
+struct UnitConversion
+{
+  double to_mm = 1.0;
+  std::string description; ///< the kFileUnitsKey entry, e.g. "cm (the file's units); converted to mm on loading"
+};
+
+UnitConversion
+describeConversion (LengthUnit unit, const std::string& how)
+{
+  const double to_mm = millimetresPer (unit);
+  return {to_mm, toString (unit) + " (" + how + ")" + (to_mm == 1.0 ? "" : "; converted to mm on loading")};
+}
+
+/** A morphreg file's units dataset; FormatError naming the file unless it is a length unit. */
+UnitConversion
+statedUnit (const hdf5::Reader& file)
+{
+  const std::string units = file.readString ("morphreg/units");
+  try {
+    return describeConversion (parseLengthUnit (units), "the file's units");
+  }
+  catch (const InvalidInputError&) {
+    file.fail ("morphreg/units", "'" + units + "' is no length unit (mm, cm, dm, m or in)");
+  }
+  return {};
+}
+
+/** A statismo file's unit, which the layout does not state: guessed from the mean's size (guessModelUnit); a
+ *  FormatError naming the file when the size fits no unit. */
+UnitConversion
+guessedUnit (const std::string& path, const Eigen::VectorXd& mean)
+{
+  LengthUnitGuess guess;
+  try {
+    guess = guessModelUnit (Eigen::Map<const Eigen::Matrix3Xd> (mean.data (), 3, mean.size () / 3));
+  }
+  catch (const InvalidInputError& e) {
+    throw FormatError (path + ": " + e.detailedMessage ());
+  }
+  if (!guess.recognised)
+    throw FormatError (path + ": not a head model in any unit: " + guess.reason +
+                       "; convert it to mm (statismo files do not state their unit)");
+  return describeConversion (guess.unit, "guessed from its size: " + guess.reason);
+}
+
+/** The statismo part brought to mm: coordinates times \a to_mm, variances (and the noise) times its square. */
+void
+scaleToMillimetres (StatismoPart& part, double to_mm)
+{
+  part.mean *= to_mm;
+  part.variances *= to_mm * to_mm;
+  part.noise_variance *= to_mm * to_mm;
+}
+
 MorphableModel::Ptr
 readMorphreg (const hdf5::Reader& file)
 {
-  const StatismoPart part = readStatismo (file, "");
+  StatismoPart part = readStatismo (file, "");
   const Eigen::Index n = part.mean.size () / 3;
   const double version = file.readScalar ("morphreg/formatVersion");
   if (version != 1.0)
     file.fail ("morphreg/formatVersion", "unsupported morphreg format version " + std::to_string (version));
   const auto mean = file.readFloats ("morphreg/mean", 1);
   requireDims (file, "morphreg/mean", mean.dims, {static_cast<hsize_t> (3 * n)}, "[3N] like model/mean");
+  // the copies compared as the file writes them, before the conversion to mm
+  requireSameMean (toVector (mean), part.mean, file.path (), "the datasets morphreg/mean and model/mean");
+  requireSameMean (toVector (mean), part.reference, file.path (), "the datasets morphreg/mean and representer/points");
+  const UnitConversion unit = statedUnit (file);
+  scaleToMillimetres (part, unit.to_mm);
   const double num_regions = file.readScalar ("morphreg/numRegions");
   if (num_regions < 1 || num_regions > 10000 || num_regions != std::floor (num_regions))
     file.fail ("morphreg/numRegions", "invalid region count " + std::to_string (num_regions));
   std::vector<ModelRegion> regions;
-  for (int j = 0; j < static_cast<int> (num_regions); ++j)
+  for (int j = 0; j < static_cast<int> (num_regions); ++j) {
     regions.push_back (readRegion (file, "morphreg/regions/region_" + std::to_string (j), n));
+    regions.back ().variances *= unit.to_mm * unit.to_mm;
+  }
 
   try {
-    auto model = std::make_shared<MorphableModel> (part.triangles, toVector (mean), std::move (regions));
+    auto model = std::make_shared<MorphableModel> (part.triangles, toVector (mean) * unit.to_mm, std::move (regions));
     model->setGlobalPca (part.basis, part.variances);
     model->setNoiseVariance (part.noise_variance);
-    model->setUnits (file.readString ("morphreg/units"));
     const auto profile = file.readIntegers ("morphreg/profileLine", 1);
     model->setProfileLine (toIndices (file, "morphreg/profileLine", profile, n));
     LandmarkVertices landmarks;
     const nlohmann::json landmark_json = readJson (file, "morphreg/landmarks");
     for (const auto& [name, index] : landmark_json.items ()) {
-      if (!index.is_number_integer ())
-        file.fail ("morphreg/landmarks", "landmark '" + name + "' has no integer vertex index");
-      landmarks[name] = index.get<int> ();
+      requireKnownLandmarkId (name, file.path () + ": dataset 'morphreg/landmarks'");
+      landmarks[name] = static_cast<int> (jsonWholeNumber (
+          index, 0, n - 1, file.path () + ": dataset 'morphreg/landmarks': the vertex of landmark '" + name + "'"));
     }
     model->setLandmarks (landmarks);
     std::map<std::string, std::string> metadata;
@@ -211,7 +280,9 @@ readMorphreg (const hdf5::Reader& file)
         file.fail ("morphreg/metadata", "entry '" + key + "' is not a string");
       metadata[key] = value.get<std::string> ();
     }
+    metadata[kFileUnitsKey] = unit.description;
     model->setMetadata (metadata);
+    requireConsistentModel (*model, file.path ());
     return model;
   }
   catch (const InvalidInputError& e) {
@@ -333,13 +404,16 @@ loadStatismoModel (const std::string& path, const std::string& prefix)
 {
   const hdf5::Reader file (path);
   StatismoPart part = readStatismo (file, prefix);
+  const UnitConversion unit = guessedUnit (path, part.mean);
   const LandmarkVertices landmarks = readBfmLandmarks (file, part.mean);
+  scaleToMillimetres (part, unit.to_mm);
   try {
     auto model = MorphableModel::fromGlobalPca (std::move (part.triangles), std::move (part.mean),
                                                 std::move (part.basis), std::move (part.variances));
     model->setNoiseVariance (part.noise_variance);
     model->setLandmarks (landmarks);
-    model->setMetadata ({{"source", path}, {"format", "statismo"}});
+    model->setMetadata ({{"source", path}, {"format", "statismo"}, {kFileUnitsKey, unit.description}});
+    requireConsistentModel (*model, path);
     return model;
   }
   catch (const InvalidInputError& e) {

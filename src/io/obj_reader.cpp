@@ -1,14 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
+#include "obj_content.h"
+#include "vertex_cloud.h"
 
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/mesh_io.h>
 
+#include <pcl/common/io.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <sstream>
 
 namespace morphreg
@@ -78,28 +83,35 @@ checkIndex (const GeometryFileReader& reader, std::string_view token, ObjIndexRa
   return index > 0 ? index - 1 : static_cast<long long> (range.count) + index;
 }
 
-/** "f c1 c2 c3 ...", each corner v, v/t, v//n or v/t/n; returns the polygon's 0-based vertex indices. */
+/** "f c1 c2 c3 ...", each corner v, v/t, v//n or v/t/n; returns the polygon's 0-based vertex indices and appends
+ *  each corner's 0-based texture coordinate index (-1 for none) to \a corner_texcoords. */
 pcl::Vertices
-readFace (const GeometryFileReader& reader, const std::vector<std::string_view>& tokens, ObjIndexRange* ranges)
+readFace (const GeometryFileReader& reader, const std::vector<std::string_view>& tokens, ObjIndexRange* ranges,
+          std::vector<long long>& corner_texcoords)
 {
   if (tokens.size () < 4)
     reader.failAtLine ("face has " + std::to_string (tokens.size () - 1) + " corners, expected at least 3");
   pcl::Vertices polygon;
   for (std::size_t c = 1; c < tokens.size (); ++c) {
     std::string_view corner = tokens[c];
+    long long texcoord = -1;
     for (int part = 0; part < 3; ++part) {
       const std::size_t slash = corner.find ('/');
       const std::string_view index = corner.substr (0, slash);
       if (part == 0)
         polygon.vertices.push_back (static_cast<pcl::index_t> (checkIndex (reader, index, ranges[part])));
-      else if (!(part == 1 && index.empty () && slash != std::string_view::npos))
-        checkIndex (reader, index, ranges[part]);
+      else if (!(part == 1 && index.empty () && slash != std::string_view::npos)) {
+        const long long resolved = checkIndex (reader, index, ranges[part]);
+        if (part == 1)
+          texcoord = resolved;
+      }
       if (slash == std::string_view::npos)
         break;
       if (part == 2)
         reader.failAtLine ("face corner '" + std::string (tokens[c]) + "' has more than 3 indices");
       corner.remove_prefix (slash + 1);
     }
+    corner_texcoords.push_back (texcoord);
   }
   return polygon;
 }
@@ -115,14 +127,6 @@ checkRangesAtEnd (const GeometryFileReader& reader, const ObjIndexRange* ranges)
                          " index " + std::to_string (ranges[part].max_positive) + " is beyond the file's " +
                          std::to_string (ranges[part].count) + " " + ranges[part].plural);
 }
-/** What an OBJ file holds: its vertices (with a colour each if every v line has one), its normals in file order
- *  (a normal per vertex when there are as many vn as v lines) and its polygons. */
-struct ObjContent
-{
-  std::vector<float> positions, colours, normals;
-  std::vector<pcl::Vertices> polygons;
-};
-
 void
 addNumbers (const std::vector<std::string_view>& tokens, std::size_t first, std::size_t count, std::vector<float>& out)
 {
@@ -142,103 +146,155 @@ addVertex (const std::vector<std::string_view>& tokens, ObjContent& content)
     addNumbers (tokens, 4, 3, content.colours);
 }
 
-/** The cloud of the vertices: x y z, with rgb when every vertex has a colour, with normals when every vertex has one. */
-template <typename PointT>
-pcl::PCLPointCloud2
-vertexCloud (const ObjContent& content, bool colours, bool normals)
+/** A vt line: u and v (0 if absent; w dropped). */
+void
+addTexcoord (const std::vector<std::string_view>& tokens, ObjContent& content)
 {
-  pcl::PointCloud<PointT> cloud;
-  const std::size_t count = content.positions.size () / 3;
-  cloud.resize (count);
-  for (std::size_t i = 0; i < count; ++i) {
-    auto& point = cloud[i];
-    point.x = content.positions[3 * i], point.y = content.positions[3 * i + 1], point.z = content.positions[3 * i + 2];
-    if constexpr (pcl::traits::has_normal_v<PointT>)
-      if (normals)
-        point.getNormalVector3fMap () = Eigen::Map<const Eigen::Vector3f> (&content.normals[3 * i]);
-    if constexpr (pcl::traits::has_color_v<PointT>)
-      if (colours) {
-        const auto channel = [&] (int c) {
-          return static_cast<std::uint8_t> (std::clamp (content.colours[3 * i + c], 0.0f, 1.0f) * 255.0f + 0.5f);
-        };
-        point.r = channel (0), point.g = channel (1), point.b = channel (2);
-      }
+  addNumbers (tokens, 1, 1, content.texcoords);
+  if (tokens.size () >= 3)
+    addNumbers (tokens, 2, 1, content.texcoords);
+  else
+    content.texcoords.push_back (0.0f);
+}
+
+/** "usemtl name": the polygons after it have that material. */
+void
+useMaterial (const std::vector<std::string_view>& tokens, ObjContent& content, int& material)
+{
+  const std::string name = tokens.size () > 1 ? std::string (tokens[1]) : std::string ();
+  const auto known = std::find (content.materials.begin (), content.materials.end (), name);
+  material = static_cast<int> (known - content.materials.begin ());
+  if (known == content.materials.end ())
+    content.materials.push_back (name);
+}
+
+/** The line's keyword and numbers checked, and what it holds added to \a content. */
+void
+readObjLine (const GeometryFileReader& reader, const std::string& line, const std::vector<std::string_view>& tokens,
+             ObjIndexRange* ranges, ObjContent& content, int& material)
+{
+  const std::string_view keyword = tokens[0];
+  if (keyword == "v") {
+    checkVertex (reader, line, tokens);
+    addVertex (tokens, content);
+    ++ranges[0].count;
   }
-  pcl::PCLPointCloud2 blob;
-  pcl::toPCLPointCloud2 (cloud, blob);
-  return blob;
+  else if (keyword == "vt") {
+    checkNumbers (reader, tokens, 1, 3, "texture coordinate");
+    addTexcoord (tokens, content);
+    ++ranges[1].count;
+  }
+  else if (keyword == "vn") {
+    checkNumbers (reader, tokens, 3, 3, "vertex normal");
+    addNumbers (tokens, 1, 3, content.normals);
+    ++ranges[2].count;
+  }
+  else if (keyword == "f") {
+    content.polygons.push_back (readFace (reader, tokens, ranges, content.corner_texcoords));
+    content.polygon_material.push_back (material);
+  }
+  else if (keyword == "usemtl")
+    useMaterial (tokens, content, material);
+  else if (keyword == "mtllib")
+    for (std::size_t i = 1; i < tokens.size (); ++i)
+      content.libraries.emplace_back (tokens[i]);
 }
 
 pcl::PolygonMesh
 toPolygonMesh (ObjContent content)
 {
-  const std::size_t count = content.positions.size () / 3;
-  const bool colours = content.colours.size () == 3 * count, normals = content.normals.size () == 3 * count;
+  const auto count = static_cast<Eigen::Index> (content.positions.size () / 3);
+  const Eigen::Map<const Eigen::Matrix3Xf> positions (content.positions.data (), 3, count);
+  const bool with_normals = content.normals.size () == content.positions.size ();
+  const Eigen::Map<const Eigen::Matrix3Xf> normals (content.normals.data (), 3, with_normals ? count : 0);
   pcl::PolygonMesh mesh;
-  if (colours && normals)
-    mesh.cloud = vertexCloud<pcl::PointXYZRGBNormal> (content, true, true);
-  else if (colours)
-    mesh.cloud = vertexCloud<pcl::PointXYZRGB> (content, true, false);
-  else if (normals)
-    mesh.cloud = vertexCloud<pcl::PointNormal> (content, false, true);
-  else
-    mesh.cloud = vertexCloud<pcl::PointXYZ> (content, false, false);
+  mesh.cloud = vertexCloud (positions, normals, vertexColours (content));
   mesh.polygons = std::move (content.polygons);
   return mesh;
 }
 } // namespace
 
-pcl::PolygonMesh
-readObjFile (const std::string& path)
+ObjContent
+parseObjFile (const std::string& path)
 {
   GeometryFileReader reader (path);
   ObjIndexRange ranges[3] = {
       {"vertex", "vertices"}, {"texture coordinate", "texture coordinates"}, {"normal", "normals"}};
   ObjContent content;
+  int material = -1;
   std::string line;
   std::vector<std::string_view> tokens;
   while (reader.nextLine (line)) {
     splitTokens (line, tokens);
-    if (tokens.empty () || tokens[0][0] == '#')
-      continue;
-    const std::string_view keyword = tokens[0];
-    if (keyword == "v") {
-      checkVertex (reader, line, tokens);
-      addVertex (tokens, content);
-      ++ranges[0].count;
-    }
-    else if (keyword == "vt") {
-      checkNumbers (reader, tokens, 1, 3, "texture coordinate");
-      ++ranges[1].count;
-    }
-    else if (keyword == "vn") {
-      checkNumbers (reader, tokens, 3, 3, "vertex normal");
-      addNumbers (tokens, 1, 3, content.normals);
-      ++ranges[2].count;
-    }
-    else if (keyword == "f")
-      content.polygons.push_back (readFace (reader, tokens, ranges));
+    if (!tokens.empty () && tokens[0][0] != '#')
+      readObjLine (reader, line, tokens, ranges, content, material);
   }
   checkRangesAtEnd (reader, ranges);
-  return toPolygonMesh (std::move (content));
+  return content;
 }
+
+VertexColours
+vertexColours (const ObjContent& content)
+{
+  if (content.colours.size () != content.positions.size ())
+    return {};
+  const Eigen::Map<const Eigen::Matrix3Xf> colours (content.colours.data (), 3,
+                                                    static_cast<Eigen::Index> (content.colours.size () / 3));
+  return (colours.array ().max (0.0f).min (1.0f) * 255.0f + 0.5f).cast<unsigned char> ();
+}
+
+pcl::PolygonMesh
+readObjFile (const std::string& path)
+{
+  return toPolygonMesh (parseObjFile (path));
+}
+
+namespace
+{
+/** The 4 bytes of field \a field of point \a i (a float, or PCL's packed rgb / rgba). */
+template <typename T>
+T
+fieldValue (const pcl::PCLPointCloud2& cloud, int field, std::size_t i)
+{
+  static_assert (sizeof (T) == 4, "float and packed colour fields are 4 bytes");
+  T value;
+  std::memcpy (&value, cloud.data.data () + i * cloud.point_step + cloud.fields[field].offset, sizeof (T));
+  return value;
+}
+
+/** " r g b" in [0, 1] of PCL's packed colour (0x00RRGGBB in the low bytes). */
+std::string
+colourText (std::uint32_t packed)
+{
+  std::ostringstream text;
+  text.precision (6);
+  for (int shift : {16, 8, 0})
+    text << ' ' << ((packed >> shift) & 0xffu) / 255.0;
+  return text.str ();
+}
+} // namespace
 
 void
 saveObjFile (const std::string& path, const pcl::PolygonMesh& mesh)
 {
-  pcl::PointCloud<pcl::PointNormal> points;
+  pcl::PointCloud<pcl::PointXYZ> points;
   pcl::fromPCLPointCloud2 (mesh.cloud, points);
-  bool normals = false;
-  for (const auto& field : mesh.cloud.fields)
-    normals = normals || field.name == "normal_x";
+  const int normal[3] = {pcl::getFieldIndex (mesh.cloud, "normal_x"), pcl::getFieldIndex (mesh.cloud, "normal_y"),
+                         pcl::getFieldIndex (mesh.cloud, "normal_z")};
+  const bool normals = std::min ({normal[0], normal[1], normal[2]}) >= 0;
+  const int colour = std::max (pcl::getFieldIndex (mesh.cloud, "rgb"), pcl::getFieldIndex (mesh.cloud, "rgba"));
   std::ostringstream text;
   text.precision (9);
-  text << "# " << points.size () << " vertices, " << mesh.polygons.size () << " faces\n";
-  for (const auto& p : points)
-    text << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  text << "# " << points.size () << " vertices, " << mesh.polygons.size () << " faces"
+       << (colour >= 0 ? "; vertex colours as v x y z r g b, r g b in [0, 1]" : "") << '\n';
+  for (std::size_t i = 0; i < points.size (); ++i)
+    text << "v " << points[i].x << ' ' << points[i].y << ' ' << points[i].z
+         << (colour >= 0 ? colourText (fieldValue<std::uint32_t> (mesh.cloud, colour, i)) : std::string ()) << '\n';
   if (normals)
-    for (const auto& p : points)
-      text << "vn " << p.normal_x << ' ' << p.normal_y << ' ' << p.normal_z << '\n';
+    for (std::size_t i = 0; i < points.size (); ++i)
+      text << "vn " << fieldValue<float> (mesh.cloud, normal[0], i) << ' '
+           << fieldValue<float> (mesh.cloud, normal[1], i) << ' ' << fieldValue<float> (mesh.cloud, normal[2], i)
+           << '\n';
   for (const auto& polygon : mesh.polygons) {
     text << 'f';
     for (const auto corner : polygon.vertices)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private: morphreg's own reader of ASCII OFF meshes (neither PCL nor VTK reads OFF), shared by the mesh loader and
 // validateGeometryFile.

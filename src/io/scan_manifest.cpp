@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "text_fields.h"
 
 #include <morphreg/common/error.h>
@@ -16,7 +17,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-const char* const kScanExtensions = ".pcd .ply .obj .stl .off";
+const char* const kScanExtensions = ".pcd .ply .obj .stl .off .gltf .glb";
 
 /** True if \a path has one of kScanExtensions. */
 bool
@@ -62,7 +63,7 @@ requireUniqueIds (const ScanManifest& manifest)
 ScanManifest
 loadScanManifest (const std::string& path)
 {
-  requireReadableFile (path);
+  requireReadableFile (path, kMaxTextFileBytes);
   std::ifstream stream (path);
   const fs::path base = fs::path (path).parent_path ();
   ScanManifest manifest;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "geometry_file_reader.h"
 #include "geometry_validators.h"
 
@@ -79,12 +80,13 @@ validateAsciiStlFile (const std::string& path)
   std::string line;
   std::vector<std::string_view> tokens;
   bool in_solid = false;
+  std::size_t facets = 0;
   while (nextTokens (reader, line, tokens)) {
     if (!in_solid && tokens[0] == "solid")
       in_solid = true;
     else if (in_solid && tokens[0] == "endsolid")
       in_solid = false;
-    else if (in_solid && tokens[0] == "facet")
+    else if (in_solid && tokens[0] == "facet" && ++facets)
       checkFacet (reader, line, tokens);
     else
       reader.failAtLine ("expected '" + std::string (in_solid ? "facet normal' or 'endsolid" : "solid") + "', found '" +
@@ -92,6 +94,8 @@ validateAsciiStlFile (const std::string& path)
   }
   if (in_solid)
     reader.fail ("the STL file has no 'endsolid' (the file is cut short)");
+  if (facets == 0)
+    reader.fail ("the STL file has no triangles (no 'facet' between 'solid' and 'endsolid')");
 }
 
 } // namespace validation

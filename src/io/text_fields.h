@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private helpers of the line-based readers (landmark CSV, scan manifests): trimming and splitting fields.
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtk_reader.h"
 
 #include "geometry_file_reader.h"

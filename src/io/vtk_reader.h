@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private: morphreg's own reader of legacy VTK POLYDATA files (VTK's dereferences null on some malformed files),
 // shared by the mesh loader and validateGeometryFile.

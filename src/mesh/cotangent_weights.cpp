@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/mesh/cotangent_weights.h>
 
 #include <algorithm>

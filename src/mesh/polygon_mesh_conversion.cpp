@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/mesh/mesh_normals.h>
@@ -6,6 +7,7 @@
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace morphreg
@@ -29,6 +31,20 @@ setPositionAndNormal (PointT& p, const Eigen::Vector3d& position, const Eigen::V
   p.getVector3fMap () = position.cast<float> ();
   p.getNormalVector3fMap () = normal.cast<float> ();
   p.curvature = 0.0f;
+}
+/** PointXYZRGBNormal's curvature field, which nothing computes, renamed \a name (its values set by the caller) or,
+ *  for an empty name, dropped from the field list (its bytes stay as padding, which PCL's writers skip). */
+void
+giveCurvatureTo (const std::string& name, pcl::PCLPointCloud2& cloud)
+{
+  const auto curvature = std::find_if (cloud.fields.begin (), cloud.fields.end (),
+                                       [] (const pcl::PCLPointField& field) { return field.name == "curvature"; });
+  if (curvature == cloud.fields.end ())
+    return;
+  if (name.empty ())
+    cloud.fields.erase (curvature);
+  else
+    curvature->name = name;
 }
 } // namespace
 
@@ -78,8 +94,20 @@ toPolygonMesh (const TriangleMesh& mesh)
 pcl::PolygonMesh
 toPolygonMesh (const TriangleMesh& mesh, const Eigen::Matrix<unsigned char, 3, Eigen::Dynamic>& colours)
 {
+  return toPolygonMesh (mesh, colours, Eigen::VectorXd ());
+}
+
+pcl::PolygonMesh
+toPolygonMesh (const TriangleMesh& mesh, const Eigen::Matrix<unsigned char, 3, Eigen::Dynamic>& colours,
+               const Eigen::VectorXd& quality)
+{
   if (colours.cols () != mesh.numVertices ())
-    throw InvalidInputError ("toPolygonMesh: one colour per vertex required");
+    throw InvalidInputError ("toPolygonMesh: one colour per vertex required, got " + std::to_string (colours.cols ()) +
+                             " for " + std::to_string (mesh.numVertices ()) + " vertices");
+  if (quality.size () != 0 && quality.size () != mesh.numVertices ())
+    throw InvalidInputError ("toPolygonMesh: one quality value per vertex required, got " +
+                             std::to_string (quality.size ()) + " for " + std::to_string (mesh.numVertices ()) +
+                             " vertices");
   const Eigen::Matrix3Xd normals = vertexNormals (mesh);
   pcl::PointCloud<pcl::PointXYZRGBNormal> cloud;
   cloud.resize (mesh.numVertices ());
@@ -88,9 +116,12 @@ toPolygonMesh (const TriangleMesh& mesh, const Eigen::Matrix<unsigned char, 3, E
     cloud[i].r = colours (0, i);
     cloud[i].g = colours (1, i);
     cloud[i].b = colours (2, i);
+    if (quality.size () != 0)
+      cloud[i].curvature = static_cast<float> (quality[i]);
   }
   pcl::PolygonMesh result;
   pcl::toPCLPointCloud2 (cloud, result.cloud);
+  giveCurvatureTo (quality.size () != 0 ? "quality" : "", result.cloud);
   result.polygons = toPolygons (mesh.triangles);
   return result;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/mesh/triangle_locator.h>

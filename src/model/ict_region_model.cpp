@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include <morphreg/common/memory_budget.h>
 #include <morphreg/common/error.h>
 #include <morphreg/model/ict_region_model.h>
 
@@ -45,6 +47,9 @@ buildIctRegionModel (const MorphableModel& ict, int samples, std::uint64_t seed,
 {
   if (samples < 2)
     throw InvalidInputError ("buildIctRegionModel: at least two samples are needed, got " + std::to_string (samples));
+  requireMemory (ModelBuilder::memoryEstimate (static_cast<std::size_t> (samples), ict.numVertices ()),
+                 "a model of " + std::to_string (samples) + " samples of the " + std::to_string (ict.numVertices ()) +
+                     "-vertex model");
   const TriangleMesh mean = ict.meanMesh ();
   const RegionLabels regions = segmentByLandmarkGroups (mean, ictRegionGroups (ict));
   std::mt19937_64 rng (seed);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/model/model_builder.h>
@@ -49,6 +50,14 @@ PcaBasis
 ModelBuilder::truncatedPca (const Eigen::MatrixXd& centred) const
 {
   return computePca (centred, settings_.pca_method, settings_.max_components, settings_.explained_variance);
+}
+
+double
+ModelBuilder::memoryEstimate (std::size_t meshes, Eigen::Index vertices)
+{
+  const double columns = static_cast<double> (meshes), rows = 3.0 * static_cast<double> (vertices);
+  const double gram = std::min (columns, rows);
+  return 2.0 * rows * columns * sizeof (double) + gram * gram * sizeof (double);
 }
 
 MorphableModel::Ptr

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/model/impl/morphable_model.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/model/region_blending.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/landmarks.h>
 #include <morphreg/photo/frontal_view.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/landmarks.h>
 #include <morphreg/photo/multi_view_problem.h>
@@ -339,8 +340,8 @@ MultiViewProblem::result (const PoseShapeState& state, PhotoRows kinds) const
   const MorphableModel& model = *model_;
   PhotoFit fit;
   fit.selection = settings_.shape.components;
-  fit.coefficients = state.coefficients;
-  fit.coefficient_sigmas = state.coefficients.cwiseQuotient (shape_solver_->sigma ());
+  fit.coefficients_mm = state.coefficients;
+  fit.coefficients = coefficientsInStandardDeviations (model, state.coefficients, fit.selection);
   fit.scale = state.scale ();
   fit.rotation = state.rotation;
   fit.translation = state.translation;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/photo/photo_camera_io.h>
@@ -70,13 +71,13 @@ PhotoFit::similarity () const
 double
 PhotoFit::maxCoefficientSigma () const
 {
-  return coefficient_sigmas.size () > 0 ? coefficient_sigmas.cwiseAbs ().maxCoeff () : 0.0;
+  return coefficients.size () > 0 ? coefficients.cwiseAbs ().maxCoeff () : 0.0;
 }
 
 double
 PhotoFit::shapeDistance () const
 {
-  return coefficient_sigmas.norm ();
+  return coefficients.norm ();
 }
 
 bool
@@ -103,13 +104,16 @@ photoFitJson (const PhotoFit& fit)
           {"component_counts", fit.selection.counts ()},
           {"coefficients",
            std::vector<double> (fit.coefficients.data (), fit.coefficients.data () + fit.coefficients.size ())},
+          {"coefficients_unit", kCoefficientsUnit},
+          {"coefficients_mm", std::vector<double> (fit.coefficients_mm.data (),
+                                                   fit.coefficients_mm.data () + fit.coefficients_mm.size ())},
           {"method", fit.method},
           {"returned", fit.returned},
           {"tps_rounds", fit.tps_rounds},
           {"max_coefficient_sigma", fit.maxCoefficientSigma ()},
-          {"coefficients_beyond_3_sigma", (fit.coefficient_sigmas.array ().abs () > 3.0).count ()},
+          {"coefficients_beyond_3_sigma", (fit.coefficients.array ().abs () > 3.0).count ()},
           {"shape_distance_sigma", fit.shapeDistance ()},
-          {"plausible_shape", isPlausibleShape (fit.coefficient_sigmas)},
+          {"plausible_shape", isPlausibleShape (fit.coefficients)},
           {"prior", priorJson (fit.prior)},
           {"ignored_landmarks", fit.ignored_landmarks},
           {"views", views},

@@ -55,6 +55,6 @@ photoFitMethod (const std::string& name)
 PoseShapeState
 fittedState (const MultiViewProblem& problem, const PhotoFit& fit)
 {
-  return problem.solver (true).state (fit.similarity (), fit.coefficients);
+  return problem.solver (true).state (fit.similarity (), fit.coefficients_mm);
 }
 } // namespace morphreg

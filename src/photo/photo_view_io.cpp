@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/json_file.h>
@@ -105,8 +106,7 @@ void
 saveFrontalView (const std::string& path, const FrontalView& view)
 {
   // The landmark file layout, written by the landmark writer, plus the view and the image size.
-  saveLandmarkPixels (path, view.landmarks ());
-  json document = readJsonFile (path);
+  json document = landmarkPixelsJson (view.landmarks (), path);
   document["view"] = "frontal";
   document["image"] = imageSize (view.normalisation ());
   writeJsonFile (path, document);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/registration/impl/cached_correspondence_estimation.hpp>
 
 #include <pcl/point_types.h>

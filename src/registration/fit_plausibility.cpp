@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "../common/number_text.h"
 
 #include <morphreg/common/error.h>

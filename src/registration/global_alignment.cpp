@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/mesh_normals.h>
@@ -369,6 +370,34 @@ struct Anchor
   double scale;
 };
 
+/** Per sample (model frame points and unit normals), whether it faces \a viewpoint once posed by \a pose: every
+ *  sample without a viewpoint. */
+std::vector<char>
+facingSamples (const Eigen::Matrix4d& pose, const Eigen::Matrix3Xd& points, const Eigen::Matrix3Xd& normals,
+               const std::optional<Eigen::Vector3d>& viewpoint)
+{
+  std::vector<char> facing (static_cast<size_t> (points.cols ()), 1);
+  if (!viewpoint)
+    return facing;
+  const Eigen::Matrix3d linear = pose.topLeftCorner<3, 3> ();
+  const Eigen::Vector3d t = pose.topRightCorner<3, 1> ();
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    facing[static_cast<size_t> (i)] = (linear * normals.col (i)).dot (*viewpoint - (linear * points.col (i) + t)) > 0.0;
+  return facing;
+}
+
+/** The columns of \a points flagged in \a keep. */
+Eigen::Matrix3Xd
+kept (const Eigen::Matrix3Xd& points, const std::vector<char>& keep)
+{
+  Eigen::Matrix3Xd result (3, std::count (keep.begin (), keep.end (), 1));
+  Eigen::Index k = 0;
+  for (Eigen::Index i = 0; i < points.cols (); ++i)
+    if (keep[static_cast<size_t> (i)])
+      result.col (k++) = points.col (i);
+  return result;
+}
+
 /** A pose and its score (lower is better), its coverage and the anchor it was searched about. */
 struct Pose
 {
@@ -386,15 +415,20 @@ struct Pose
  *  sticking out); and the share of the samples within \a near. A scale outside [min_scale, max_scale] scores the
  *  truncation. */
 void
-scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoints& samples, double truncation,
-           double near, double min_scale, double max_scale, Pose& pose)
+scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoints& all_samples, double truncation,
+           double near, double min_scale, double max_scale, const std::optional<Eigen::Vector3d>& viewpoint, Pose& pose)
 {
   const double scale = detail::similarityScale (pose.similarity);
-  if (!pose.similarity.allFinite () || !(scale >= min_scale && scale <= max_scale)) {
+  const std::vector<char> facing =
+      pose.similarity.allFinite () ? facingSamples (pose.similarity, all_samples.points, all_samples.normals, viewpoint)
+                                   : std::vector<char> ();
+  if (!pose.similarity.allFinite () || !(scale >= min_scale && scale <= max_scale) ||
+      std::count (facing.begin (), facing.end (), 1) < 10) {
     pose.score = truncation;
     pose.coverage = 0.0;
     return;
   }
+  const OrientedPoints samples{kept (all_samples.points, facing), kept (all_samples.normals, facing), {}};
   const Eigen::Matrix3Xd posed = detail::transformed (pose.similarity, samples.points);
   const Eigen::Matrix3d rotation = pose.similarity.topLeftCorner<3, 3> () / scale;
   const detail::Closest closest = detail::closestPoints (tree, posed);
@@ -522,6 +556,7 @@ gridPoses (const ModelFrame& model, const OrientedPoints& surface, const std::ve
            const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
 {
   const Eigen::Matrix3Xd samples = detail::evenSamples (model.samples.points, settings.score_samples);
+  const Eigen::Matrix3Xd normals = detail::evenSamples (model.samples.normals, settings.score_samples);
   // Samples off the model's head sphere (nose, chin, ears, neck) tell the rotations apart; the cranium hardly does.
   Eigen::VectorXd weights (samples.cols ());
   for (Eigen::Index i = 0; i < samples.cols (); ++i)
@@ -541,14 +576,21 @@ gridPoses (const ModelFrame& model, const OrientedPoints& surface, const std::ve
 #pragma omp parallel for schedule(static)
     for (size_t r = 0; r < rotations.size (); ++r) {
       const Eigen::Matrix3Xd posed = ((anchor.scale * rotations[r]) * centred).colwise () + anchor.scan;
-      double sum = 0.0;
+      const std::vector<char> facing =
+          facingSamples (detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan), samples,
+                         normals, settings.viewpoint);
+      double sum = 0.0, weight = 0.0;
       for (Eigen::Index i = 0; i < posed.cols (); ++i)
-        sum += weights[i] * field.at (posed.col (i));
-      scores[r] = sum;
+        if (facing[static_cast<size_t> (i)]) {
+          sum += weights[i] * field.at (posed.col (i));
+          weight += weights[i];
+        }
+      // A pose showing the sensor less than a quarter of the model is no view of a head.
+      scores[r] = weight >= 0.25 * weights.sum () ? sum / weight : truncation;
     }
     for (size_t r : bestDistinct (rotations, scores, settings.rotations_per_anchor))
-      poses.push_back ({detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan),
-                        scores[r] / weights.sum (), 0.0, static_cast<int> (a)});
+      poses.push_back ({detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan), scores[r], 0.0,
+                        static_cast<int> (a)});
   }
   // Only the best grid scores over all anchors go on (an anchor off the head scores badly for every rotation).
   std::sort (poses.begin (), poses.end (), [] (const Pose& a, const Pose& b) { return a.score < b.score; });
@@ -563,6 +605,7 @@ refinePoses (const ModelFrame& model, const OrientedPoints& surface, const Point
              const std::vector<Anchor>& anchors, const GlobalAlignmentSettings& settings, std::vector<Pose>& poses)
 {
   const Eigen::Matrix3Xd samples = detail::evenSamples (model.samples.points, 600);
+  const Eigen::Matrix3Xd normals = detail::evenSamples (model.samples.normals, 600);
   const double truncation = settings.truncation_ratio * model.radius;
   const auto refine = [&] (const std::vector<size_t>& active, int iterations) {
 #pragma omp parallel for schedule(dynamic, 1)
@@ -570,10 +613,13 @@ refinePoses (const ModelFrame& model, const OrientedPoints& surface, const Point
       Pose& pose = poses[active[k]];
       const Eigen::Vector3d centre =
           pose.similarity.topLeftCorner<3, 3> () * anchors[pose.anchor].model + pose.similarity.topRightCorner<3, 1> ();
-      pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, samples,
-                                                  pose.similarity, iterations, settings.inlier_fraction);
+      const Eigen::Matrix3Xd seen =
+          kept (samples, facingSamples (pose.similarity, samples, normals, settings.viewpoint));
+      if (seen.cols () >= 10)
+        pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, seen,
+                                                    pose.similarity, iterations, settings.inlier_fraction);
       scorePose (*tree, surface, model.samples, truncation, 2.0 * model.voxel, settings.min_radius_ratio,
-                 settings.max_radius_ratio, pose);
+                 settings.max_radius_ratio, settings.viewpoint, pose);
     }
   };
   const auto by_score = [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; };

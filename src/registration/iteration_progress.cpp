@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/registration/iteration_progress.h>
 
 #include <cmath>

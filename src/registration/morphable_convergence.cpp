@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/registration/morphable_convergence.h>
 
 #include <cmath>
@@ -18,22 +19,32 @@ MorphableConvergence::startPhase (int budget, bool check_rising, Eigen::VectorXd
   check_rising_ = check_rising;
   sigma_ = std::move (sigma);
   rising_ = 0;
+  stalled_ = 0;
   best_cost_ = std::numeric_limits<double>::infinity ();
   previous_cost_ = std::numeric_limits<double>::infinity ();
   termination_ = IcpTermination::max_iterations;
 }
 
 bool
-MorphableConvergence::checkCost (double cost)
+MorphableConvergence::checkCost (double cost, double best_cost)
 {
+  constexpr double kRise = 1.05;     // a cost this many times the best counts as rising
+  constexpr double kProgress = 1e-3; // a relative improvement below this one is no progress
   cost_ = cost;
-  improved_ = cost < best_cost_;
+  const bool same_rows = !std::isnan (best_cost);
+  if (same_rows)
+    best_cost_ = best_cost;
+  improved_ = same_rows ? cost <= best_cost_ : cost < best_cost_;
+  const bool progress = cost < (1.0 - kProgress) * best_cost_;
+  stalled_ = progress || !same_rows ? 0 : stalled_ + 1;
   if (improved_) {
     best_cost_ = cost;
     rising_ = 0;
   }
-  else if (check_rising_ && cost > 1.05 * best_cost_ && ++rising_ >= rising_iterations_)
+  else if (check_rising_ && cost > kRise * best_cost_ && ++rising_ >= rising_iterations_)
     diverge (IcpDivergence::cost_rose, "the cost rose " + std::to_string (rising_) + " times in a row above the best");
+  if (check_rising_ && stalled_ >= rising_iterations_ && !hasDiverged ())
+    termination_ = IcpTermination::fitness_converged;
   return !hasDiverged ();
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/registration/impl/morphable_icp.hpp>
 
 template class morphreg::MorphableICP<pcl::PointXYZ, float>;

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/length_unit.h>
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/registration/registration_result_json.h>
 
 #include <nlohmann/json.hpp>
@@ -61,7 +63,7 @@ measureRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& 
   similarity.topRows<3> () *= to_mm;
   const Eigen::Matrix3Xd scan =
       icp.getInputTarget () ? Eigen::Matrix3Xd (to_mm * pointsOf (*icp.getInputTarget ())) : Eigen::Matrix3Xd ();
-  return measureFit (model, icp.getComponentSelection (), icp.getShapeCoefficients (), similarity,
+  return measureFit (model, icp.getComponentSelection (), icp.getShapeCoefficientsMm (), similarity,
                      to_mm * icp.getFittedVertices (), icp.getVertexResiduals (), scan, report,
                      FitPlausibilitySettings ().leading_components);
 }
@@ -120,6 +122,8 @@ registrationResultJson (MorphableICP<pcl::PointNormal>& icp, const MorphableMode
           {"similarity", similarityJson (icp.getFinalTransformation ().cast<double> ())},
           {"initial_similarity", similarityJson (report.initial_transformation)},
           {"coefficients", coefficientsJson (model, icp.getComponentSelection (), icp.getShapeCoefficients ())},
+          {"coefficients_unit", kCoefficientsUnit},
+          {"coefficients_mm", coefficientsJson (model, icp.getComponentSelection (), icp.getShapeCoefficientsMm ())},
           {"residuals_mm", residualsJson (report, icp.getVertexResiduals ())},
           {"iterations", iterationsJson (report)},
           {"termination", {{"reason", toString (report.termination)}, {"message", report.message}}},

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "../common/number_text.h"
 
 #include <morphreg/common/error.h>
@@ -79,12 +80,13 @@ coarseToFine (const MorphableICP<pcl::PointNormal>& icp, const MorphableModel& m
           {model.firstComponents (counts), settings.refinement_smoothness, settings.refinement_prior}};
 }
 
-/** The rejectors \a settings turn on, after the target-boundary rejector (a chain replaces MorphableICP's default
- *  one, which is that rejector alone, so it stays first). */
+/** The rejectors \a settings turn on, after the target-boundary and normal-compatibility rejectors (a chain replaces
+ *  MorphableICP's default one, which is those two, so they stay first). */
 void
 addRejectors (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings)
 {
   icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
+  icp.addCorrespondenceRejector (icp.getNormalCompatibilityRejector ());
   if (settings.reject_distance > 0.0) {
     auto rejector = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
     rejector->setMaximumDistance (static_cast<float> (settings.reject_distance));
@@ -130,7 +132,7 @@ requireValidSettings (const RegistrationSettings& settings)
 
 void
 configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings,
-                       const MorphableModel::Ptr& model)
+                       const MorphableModel::ConstPtr& model)
 {
   requireValidSettings (settings);
   icp.setModel (model);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/registration/scan_units.h>
@@ -37,11 +38,11 @@ modelRadius (const MorphableModel& model)
 
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
-                          const MorphableModel& model, const std::string& scan_name)
+                          const MorphableModel& model, const std::string& scan_name, bool one_view)
 {
   LengthUnitGuess unit;
   if (units == "auto") {
-    unit = guessLengthUnit (pointsOf (scan), modelRadius (model));
+    unit = guessLengthUnit (pointsOf (scan), modelRadius (model), one_view || scan.isOrganized ());
     requireHeadScale (unit, scan_name);
   }
   else {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the library: the trimmed similarity-only ICP and the closest-point helpers that the coarse start
 // (initial_alignment.cpp) and the global start (global_alignment.cpp) share.

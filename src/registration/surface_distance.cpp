@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/order_statistics.h>
 #include <morphreg/mesh/surface_sampling.h>

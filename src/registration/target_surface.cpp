@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/registration/target_surface.h>
@@ -78,7 +79,29 @@ TargetSurface::setInputTarget (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals
   raw_points_ = std::move (points);
   given_normals_ = std::move (normals);
   search_ = std::move (search);
+  centroid_ = raw_points_.cols () ? Eigen::Vector3d (raw_points_.rowwise ().mean ()) : Eigen::Vector3d::Zero ();
+  turnGivenNormalsOutwards ();
   reset ();
+}
+
+void
+TargetSurface::setViewpoint (std::optional<Eigen::Vector3d> viewpoint)
+{
+  viewpoint_ = viewpoint;
+  reset ();
+}
+
+void
+TargetSurface::turnGivenNormalsOutwards ()
+{
+  Eigen::Index inwards = 0, outwards = 0;
+  for (Eigen::Index i = 0; i < given_normals_.cols (); ++i) {
+    const double side = given_normals_.col (i).dot (raw_points_.col (i) - centroid_);
+    inwards += side < 0.0 ? 1 : 0;
+    outwards += side > 0.0 ? 1 : 0;
+  }
+  if (inwards > outwards)
+    given_normals_ = -given_normals_;
 }
 
 void
@@ -174,8 +197,13 @@ TargetSurface::computePoint (pcl::index_t i)
                         ? Eigen::Vector3d (point - plane.normal * plane.normal.dot (point - plane.centroid))
                         : point;
   Eigen::Vector3d normal = given_normals_.cols () ? Eigen::Vector3d (given_normals_.col (i)) : Eigen::Vector3d::Zero ();
-  if (!normal.allFinite () || normal.norm () < 1e-6)
+  if (!normal.allFinite () || normal.norm () < 1e-6) {
     normal = plane.normal;
+    const Eigen::Vector3d outwards =
+        viewpoint_ ? Eigen::Vector3d (*viewpoint_ - point) : Eigen::Vector3d (point - centroid_);
+    if (normal.dot (outwards) < 0.0)
+      normal = -normal;
+  }
   normal.normalize ();
   normals_.col (i) = normal;
   const bool has_normal = normal.allFinite ();

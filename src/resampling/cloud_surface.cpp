@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A point cloud scan as ScanResampler's surface: the ray meets the Gaussian-weighted plane of the scan points nearest
 // to it (a point set surface, as in Adamson and Alexa 2003), found through a grid of the points (point_grid.h).
 // Measured against triangulating the same scans first (bench/RESULTS.md, "Scan resampling"), the local planes need no

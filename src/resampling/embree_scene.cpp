@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "embree_scene.h"
 
 #include <morphreg/common/error.h>

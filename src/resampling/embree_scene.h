@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the library: a triangle mesh in Intel Embree, for the resampler's rays (and the bench's baseline runs).
 #include <morphreg/mesh/triangle_mesh.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "hole_filling.h"
 
 #include <morphreg/warp/thin_plate_spline.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the library: ScanResampler's holes (connected missed vertices) and their thin plate spline fills.
 #include <morphreg/mesh/mesh_topology.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/resampling/landmark_reference.h>
 #include <morphreg/warp/thin_plate_spline.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A triangulated scan as ScanResampler's surface. The rays go through Intel Embree's BVH: against VTK's locators on
 // the same rays (bench/RESULTS.md, "Scan resampling") it answers them many times faster, and its queries are
 // thread-safe, so the vertices' rays run in parallel.

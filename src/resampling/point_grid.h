@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the library: exact k-nearest-neighbour queries over a scan's points through a uniform grid of cells.
 #include <Eigen/Core>

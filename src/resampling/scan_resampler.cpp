@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "hole_filling.h"
 #include "scan_surface.h"
 

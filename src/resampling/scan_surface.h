@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private to the library: the scan's surface as ScanResampler's rays see it, a triangle mesh (Intel Embree's ray
 // tracing) or a point cloud (Gaussian-weighted local planes over a grid of its points).

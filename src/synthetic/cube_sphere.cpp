@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "cube_sphere.h"
 
 #include <morphreg/common/error.h>

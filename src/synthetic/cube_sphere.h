@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Internal: the fixed tessellation of the unit sphere every synthetic head is built on.
 #include <morphreg/mesh/triangle_mesh.h>

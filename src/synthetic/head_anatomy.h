@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Internal: where the features sit on the mean synthetic head (mm; +Y up, +Z out of the face, +X to the
 // subject's left). Right-side points are given; the left side is their mirror image.

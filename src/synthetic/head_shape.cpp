@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "head_shape.h"
 
 #include "head_anatomy.h"

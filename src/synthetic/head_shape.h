@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Internal: the head's surface as a function of direction from the head centre, for one set of parameters.
 #include <morphreg/synthetic/head_parameters.h>

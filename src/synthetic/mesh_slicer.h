@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Horizontal slices of a triangle mesh: the 2D outline a cylindrical scanner's row of rays meets.
 #include <morphreg/mesh/triangle_mesh.h>

@@ -1,27 +1,32 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
-#include <morphreg/io/atomic_file.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/impl/registration_visualizer.hpp>
 
+#include "window_png.h"
+
 #include <pcl/visualization/pcl_visualizer.h>
 
+#include <vtkActor.h>
 #include <vtkAutoInit.h>
+#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
+#include <vtkDataSet.h>
+#include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
 #include <vtkLookupTable.h>
-#include <vtkPNGWriter.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <Eigen/Geometry>
 
 #include <cstdlib>
 #include <algorithm>
-#include <fstream>
+#include <random>
 
 // Debian's VTK needs its rendering back end registered explicitly in programs that use it directly.
 VTK_MODULE_INIT (vtkRenderingOpenGL2)
@@ -37,6 +42,7 @@ const Eigen::Vector3d kModelColour (0.92, 0.78, 0.62);
 const Eigen::Vector3d kSourceLandmarkColour (0.95, 0.45, 0.1);
 const Eigen::Vector3d kTargetLandmarkColour (0.1, 0.65, 0.3);
 const Eigen::Vector3d kCorrespondenceColour (0.9, 0.2, 0.2);
+const Eigen::Vector3d kScanOverlayColour (0.3, 0.3, 0.3);
 
 /** The renderers of \a viewport (0 = all of them), in PCL's numbering (the index in the collection). */
 std::vector<vtkRenderer*>
@@ -85,28 +91,58 @@ largestResidual (const Eigen::VectorXd& residuals)
   return largest > 0.0 ? largest : 1.0;
 }
 
-/** Whether \a path ends with a PNG's closing IEND chunk: a PNG cut short by a full disk does not. */
-bool
-endsWithPngEnd (const std::string& path)
+/** \a cloud without its missing (NaN) points, as an organised depth frame holds them; InvalidInputError naming
+ *  \a name for an infinite coordinate or when no point is left. */
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+withoutMissingPoints (const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& name)
 {
-  static const char kEnd[] = {'I', 'E', 'N', 'D', '\xAE', '\x42', '\x60', '\x82'};
-  std::ifstream file (path, std::ios::binary | std::ios::ate);
-  if (!file || file.tellg () < static_cast<std::streamoff> (sizeof (kEnd)))
-    return false;
-  char tail[sizeof (kEnd)];
-  file.seekg (-static_cast<std::streamoff> (sizeof (kEnd)), std::ios::end);
-  file.read (tail, sizeof (tail));
-  return file && std::equal (tail, tail + sizeof (tail), kEnd);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr kept (new pcl::PointCloud<pcl::PointXYZ>);
+  kept->reserve (cloud.size ());
+  for (std::size_t i = 0; i < cloud.size (); ++i) {
+    const pcl::PointXYZ& p = cloud[i];
+    if (std::isnan (p.x) || std::isnan (p.y) || std::isnan (p.z))
+      continue;
+    if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
+      throw InvalidInputError ("RegistrationVisualizer: " + name + ": point " + std::to_string (i) +
+                               " has an infinite coordinate");
+    kept->push_back (p);
+  }
+  if (kept->empty ())
+    throw InvalidInputError ("RegistrationVisualizer: " + name + " has no valid point (" +
+                             std::to_string (cloud.size ()) + " points, all missing)");
+  return kept;
 }
+
+/** Appends to \a points those of \a prop's data set (an actor's mapper input), in the world frame, a subset of
+ *  about \a most; props without a data set (text, colour bars) add none. */
+void
+appendPropPoints (vtkProp* prop, std::size_t most, std::vector<Eigen::Vector3d>& points)
+{
+  auto* actor = vtkActor::SafeDownCast (prop);
+  if (actor == nullptr || !actor->GetVisibility () || actor->GetMapper () == nullptr)
+    return;
+  vtkDataSet* data = actor->GetMapper ()->GetInput ();
+  if (data == nullptr || data->GetNumberOfPoints () == 0)
+    return;
+  vtkMatrix4x4* matrix = actor->GetMatrix ();
+  const vtkIdType count = data->GetNumberOfPoints ();
+  const vtkIdType step = std::max<vtkIdType> (1, count / static_cast<vtkIdType> (most));
+  for (vtkIdType i = 0; i < count; i += step) {
+    double point[4] = {0.0, 0.0, 0.0, 1.0}, world[4];
+    data->GetPoint (i, point);
+    matrix->MultiplyPoint (point, world);
+    const Eigen::Vector3d position (world[0], world[1], world[2]);
+    if (position.allFinite ())
+      points.push_back (position);
+  }
+}
+
 } // namespace
 
 RegistrationVisualizer::RegistrationVisualizer (Display display, const std::string& window_name)
   : display_ (display), background_ (1.0, 1.0, 1.0)
 {
-  const char* x_display = std::getenv ("DISPLAY");
-  if (x_display == nullptr || *x_display == '\0')
-    throw Error ("RegistrationVisualizer: no X display ($DISPLAY is unset); VTK renders through X even offscreen, "
-                 "so run headless programs under `xvfb-run -a`");
+  detail::requireXDisplay ("RegistrationVisualizer");
   visualizer_ = std::make_shared<pcl::visualization::PCLVisualizer> (window_name, display == Display::Window);
   if (display == Display::Offscreen)
     visualizer_->getRenderWindow ()->SetOffScreenRendering (1);
@@ -167,7 +203,21 @@ void
 RegistrationVisualizer::addTargetPositions (const CloudXYZ::ConstPtr& cloud, const std::string& id, int viewport,
                                             double point_size)
 {
-  addColouredCloud (cloud, kTargetColour, point_size, id, viewport);
+  addColouredCloud (withoutMissingPoints (*cloud, "target cloud '" + id + "'"), kTargetColour, point_size, id,
+                    viewport);
+}
+
+void
+RegistrationVisualizer::addOverlayPositions (const CloudXYZ::ConstPtr& cloud, std::size_t max_points,
+                                             const std::string& id, int viewport)
+{
+  CloudXYZ::Ptr shown = withoutMissingPoints (*cloud, "scan overlay '" + id + "'");
+  if (shown->size () > max_points) {
+    std::mt19937 random (1); // the same picture every time
+    std::shuffle (shown->begin (), shown->end (), random);
+    shown->resize (std::max<std::size_t> (max_points, 1));
+  }
+  addColouredCloud (shown, kScanOverlayColour, 2.0, id, viewport);
 }
 
 void
@@ -255,7 +305,7 @@ RegistrationVisualizer::addResidualHeatMap (const TriangleMesh& mesh, const Eige
                              " residuals for a mesh of " + std::to_string (mesh.numVertices ()) + " vertices");
   const double scale = max_residual_mm > 0.0 ? max_residual_mm : largestResidual (residuals_mm);
   addMesh (toPolygonMesh (mesh, residualColours (residuals_mm, scale)), kModelColour, 1.0, id, viewport);
-  addColourBar (scale, viewport);
+  addColourBar (scale, id, viewport);
 }
 
 void
@@ -273,8 +323,9 @@ RegistrationVisualizer::colourBarRegion ()
 }
 
 void
-RegistrationVisualizer::addColourBar (double max_residual_mm, int viewport)
+RegistrationVisualizer::addColourBar (double max_residual_mm, const std::string& owner, int viewport)
 {
+  colour_bar_owners_[viewport] = owner;
   for (vtkRenderer* renderer : renderersOf (*visualizer_, viewport)) {
     auto& bar = colour_bars_[viewport];
     if (bar)
@@ -283,6 +334,15 @@ RegistrationVisualizer::addColourBar (double max_residual_mm, int viewport)
     bar->SetLookupTable (viridisTable (max_residual_mm));
     bar->SetTitle ("residual (mm)");
     bar->SetNumberOfLabels (5);
+    bar->SetLabelFormat ("%-#6.3g");
+    bar->UnconstrainedFontSizeOn (); // sizes follow the text properties, not the bar's width
+    bar->GetTitleTextProperty ()->SetFontSize (16);
+    bar->GetLabelTextProperty ()->SetFontSize (14);
+    bar->GetTitleTextProperty ()->SetBold (0);
+    bar->GetTitleTextProperty ()->SetItalic (0);
+    bar->GetLabelTextProperty ()->SetItalic (0);
+    bar->GetLabelTextProperty ()->SetShadow (0);
+    bar->GetTitleTextProperty ()->SetShadow (0);
     const Eigen::Vector4d region = colourBarRegion ();
     bar->GetPositionCoordinate ()->SetCoordinateSystemToNormalizedViewport ();
     bar->GetPositionCoordinate ()->SetValue (region[0], region[1]);
@@ -309,12 +369,88 @@ RegistrationVisualizer::addLandmarks (const LandmarkPositions& landmarks, Landma
                           static_cast<float> (position.z ()));
     removeExisting (*visualizer_, id);
     visualizer_->addSphere (centre, radius, colour.x (), colour.y (), colour.z (), id, viewport);
-    if (!labels)
-      continue;
-    visualizer_->removeText3D (id + "_label", viewport);
-    centre.x += static_cast<float> (1.5 * radius);
-    visualizer_->addText3D (name, centre, 2.0 * radius, colour.x (), colour.y (), colour.z (), id + "_label", viewport);
+    if (labels)
+      addLabel (name, position, colour, id + "_label", viewport);
   }
+}
+
+int
+RegistrationVisualizer::labelFontSize (int height)
+{
+  return std::max (12, height / 48);
+}
+
+void
+RegistrationVisualizer::addLabel (const std::string& text, const Eigen::Vector3d& position,
+                                  const Eigen::Vector3d& colour, const std::string& id, int viewport)
+{
+  removeExisting (*visualizer_, id);
+  auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New ();
+  label->SetInput (text.c_str ());
+  label->SetPosition (position.x (), position.y (), position.z ());
+  label->SetDisplayOffset (6, 6); // pixels up and right of the landmark, clear of its sphere
+  vtkTextProperty* style = label->GetTextProperty ();
+  style->SetFontSize (labelFontSize (visualizer_->getRenderWindow ()->GetSize ()[1]));
+  style->SetColor (0.1, 0.1, 0.1);
+  style->SetBackgroundColor (1.0, 1.0, 1.0);
+  style->SetBackgroundOpacity (0.8);
+  style->SetFrame (1);
+  style->SetFrameColor (colour.x (), colour.y (), colour.z ());
+  style->SetFrameWidth (2);
+  for (vtkRenderer* renderer : renderersOf (*visualizer_, viewport))
+    renderer->AddActor (label);
+  (*visualizer_->getShapeActorMap ())[id] = label; // so removeShape and setVisibility find it
+  if (std::find (label_ids_.begin (), label_ids_.end (), id) == label_ids_.end ())
+    label_ids_.push_back (id);
+}
+
+void
+RegistrationVisualizer::setColour (double r, double g, double b, const std::string& id)
+{
+  using pcl::visualization::PCL_VISUALIZER_COLOR;
+  if (!visualizer_->setPointCloudRenderingProperties (PCL_VISUALIZER_COLOR, r, g, b, id) &&
+      !visualizer_->setShapeRenderingProperties (PCL_VISUALIZER_COLOR, r, g, b, id))
+    throw InvalidInputError ("RegistrationVisualizer::setColour: nothing shown with id '" + id + "'");
+}
+
+void
+RegistrationVisualizer::setVisibility (const std::string& id, bool visible)
+{
+  bool found = false;
+  const auto clouds = visualizer_->getCloudActorMap ();
+  if (const auto cloud = clouds->find (id); cloud != clouds->end ()) {
+    cloud->second.actor->SetVisibility (visible);
+    found = true;
+  }
+  const auto shapes = visualizer_->getShapeActorMap ();
+  if (const auto shape = shapes->find (id); shape != shapes->end ()) {
+    shape->second->SetVisibility (visible);
+    found = true;
+  }
+  for (const auto& [viewport, owner] : colour_bar_owners_)
+    if (owner == id) {
+      colour_bars_.at (viewport)->SetVisibility (visible);
+      found = true;
+    }
+  if (!found)
+    throw InvalidInputError ("RegistrationVisualizer::setVisibility: nothing shown with id '" + id + "'");
+}
+
+bool
+RegistrationVisualizer::isVisible (const std::string& id) const
+{
+  const auto clouds = visualizer_->getCloudActorMap ();
+  if (const auto cloud = clouds->find (id); cloud != clouds->end ())
+    return cloud->second.actor->GetVisibility () != 0;
+  const auto shapes = visualizer_->getShapeActorMap ();
+  const auto shape = shapes->find (id);
+  return shape != shapes->end () && shape->second->GetVisibility () != 0;
+}
+
+void
+RegistrationVisualizer::setFramedShapes (const std::vector<std::string>& ids)
+{
+  framed_ids_ = ids;
 }
 
 void
@@ -352,44 +488,63 @@ RegistrationVisualizer::resetCamera (const Eigen::Vector3d& view_direction, cons
   fitCamera ();
 }
 
+std::vector<Eigen::Vector3d>
+RegistrationVisualizer::framedPoints () const
+{
+  const std::size_t most = 20000;
+  std::vector<Eigen::Vector3d> points;
+  const auto clouds = visualizer_->getCloudActorMap ();
+  const auto shapes = visualizer_->getShapeActorMap ();
+  const auto framed = [this] (const std::string& id) {
+    return framed_ids_.empty () || std::find (framed_ids_.begin (), framed_ids_.end (), id) != framed_ids_.end ();
+  };
+  for (const auto& [id, cloud] : *clouds)
+    if (framed (id))
+      appendPropPoints (cloud.actor, most, points);
+  for (const auto& [id, shape] : *shapes)
+    if (framed (id))
+      appendPropPoints (shape, most, points);
+  return points;
+}
+
 void
 RegistrationVisualizer::fitCamera ()
 {
   if (!camera_view_)
     return;
-  Eigen::AlignedBox3d box;
-  const std::vector<vtkRenderer*> renderers = renderersOf (*visualizer_, 0);
-  for (vtkRenderer* renderer : renderers) {
-    double visible[6];
-    renderer->ComputeVisiblePropBounds (visible);
-    if (visible[0] <= visible[1]) // something is shown in this viewport
-      box.extend (Eigen::AlignedBox3d (Eigen::Vector3d (visible[0], visible[2], visible[4]),
-                                       Eigen::Vector3d (visible[1], visible[3], visible[5])));
-  }
-  if (box.isEmpty ())
+  const std::vector<Eigen::Vector3d> points = framedPoints ();
+  if (points.empty ())
     return; // nothing to look at yet
-  // Distance at which the box's extent across and along the view fits the narrower of the viewport's angles.
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& p : points)
+    box.extend (p);
   const Eigen::Vector3d forward = -camera_view_->first;
   const Eigen::Vector3d right = forward.cross (camera_view_->second).normalized ();
   const Eigen::Vector3d upward = right.cross (forward);
-  double half_width = 0.0, half_height = 0.0, half_depth = 0.0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d offset = box.corner (static_cast<Eigen::AlignedBox3d::CornerType> (corner)) - box.center ();
-    half_width = std::max (half_width, std::abs (offset.dot (right)));
-    half_height = std::max (half_height, std::abs (offset.dot (upward)));
-    half_depth = std::max (half_depth, std::abs (offset.dot (forward)));
-  }
-  const Eigen::Vector3d centre = box.center ();
-  for (vtkRenderer* renderer : renderers) {
-    vtkCamera* camera = renderer->GetActiveCamera ();
-    const double tangent = std::tan (0.5 * camera->GetViewAngle () * M_PI / 180.0);
-    const double aspect = std::max (renderer->GetTiledAspectRatio (), 1e-3);
-    const double distance = 1.05 * std::max (half_height / tangent, half_width / (tangent * aspect)) + half_depth;
-    const Eigen::Vector3d position = centre + distance * camera_view_->first;
-    camera->SetFocalPoint (centre.data ());
+  const std::vector<vtkRenderer*> renderers = renderersOf (*visualizer_, 0);
+  for (std::size_t index = 0; index < renderers.size (); ++index) {
+    vtkCamera* camera = renderers[index]->GetActiveCamera ();
+    const bool bar = colour_bars_.count (0) > 0 || colour_bars_.count (static_cast<int> (index)) > 0;
+    // Fill 94 % of the height and of the width left of the colour bar, if any (the bar takes the right 16 %).
+    const double tan_v = std::tan (0.5 * camera->GetViewAngle () * M_PI / 180.0);
+    const double tan_h = tan_v * std::max (renderers[index]->GetTiledAspectRatio (), 1e-3);
+    const double width_share = bar ? 0.84 : 1.0;
+    // The nearest camera distance at which every point lies inside the frustum (perspective: by its own depth).
+    double distance = 0.0;
+    for (const Eigen::Vector3d& p : points) {
+      const Eigen::Vector3d offset = p - box.center ();
+      const double needed = std::max (std::abs (offset.dot (upward)) / (0.94 * tan_v),
+                                      std::abs (offset.dot (right)) / (0.94 * width_share * tan_h));
+      distance = std::max (distance, needed - offset.dot (forward));
+    }
+    // Move the view so the framed points sit in the middle of the part left of the bar.
+    const Eigen::Vector3d shift = (1.0 - width_share) * distance * tan_h * right;
+    const Eigen::Vector3d focus = box.center () + shift;
+    const Eigen::Vector3d position = focus + distance * camera_view_->first;
+    camera->SetFocalPoint (focus.data ());
     camera->SetPosition (position.data ());
     camera->SetViewUp (upward.data ());
-    renderer->ResetCameraClippingRange ();
+    renderers[index]->ResetCameraClippingRange ();
   }
 }
 
@@ -401,21 +556,12 @@ RegistrationVisualizer::saveScreenshot (const std::string& png_path, int width, 
                              std::to_string (height) + " is not positive");
   vtkRenderWindow* window = visualizer_->getRenderWindow ();
   window->SetSize (width, height);
+  const auto shapes = visualizer_->getShapeActorMap ();
+  for (const std::string& id : label_ids_)
+    if (const auto label = shapes->find (id); label != shapes->end ())
+      vtkBillboardTextActor3D::SafeDownCast (label->second)->GetTextProperty ()->SetFontSize (labelFontSize (height));
   fitCamera (); // the aspect ratio may have changed
-  window->Render ();
-  auto capture = vtkSmartPointer<vtkWindowToImageFilter>::New ();
-  capture->SetInput (window);
-  capture->SetInputBufferTypeToRGB ();
-  capture->ReadFrontBufferOff ();
-  capture->Update ();
-  writeAtomically (png_path, [&] (const std::string& partial) {
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New ();
-    writer->SetFileName (partial.c_str ());
-    writer->SetInputConnection (capture->GetOutputPort ());
-    writer->Write ();
-    if (writer->GetErrorCode () != 0 || !endsWithPngEnd (partial))
-      throw IoError (png_path + ": cannot write the screenshot (disk full, or no permission?)");
-  });
+  detail::writeWindowPng (*window, png_path);
 }
 
 void
@@ -445,6 +591,8 @@ RegistrationVisualizer::spinOnce (int milliseconds)
 #define MORPHREG_INSTANTIATE_REGISTRATION_VISUALIZER(T)                                                                \
   template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&, const std::string&,    \
                                                                      int, double);                                     \
+  template void morphreg::RegistrationVisualizer::addScanOverlay<T> (const pcl::PointCloud<T>&, std::size_t,           \
+                                                                     const std::string&, int);                         \
   template void morphreg::RegistrationVisualizer::addCorrespondences<T, T> (                                           \
       const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&, std::size_t,                  \
       const std::string&, int);                                                                                        \

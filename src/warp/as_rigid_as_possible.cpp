@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/cotangent_weights.h>
 #include <morphreg/warp/as_rigid_as_possible.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/warp/impl/thin_plate_spline.hpp>
 
 #define MORPHREG_INSTANTIATE_TPS_POINT(S, D, T)                                                                        \

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/warp/impl/tps_kernel.hpp>
 
 // x86-64-v4 (AVX-512) and v3 (AVX2, FMA) clones next to the baseline, picked by the loader for the running CPU.

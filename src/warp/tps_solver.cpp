@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/warp/impl/tps_kernel.hpp>
 #include <morphreg/warp/impl/landmark_pairs.h>

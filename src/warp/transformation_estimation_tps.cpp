@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/warp/impl/transformation_estimation_tps.hpp>
 
 #define MORPHREG_INSTANTIATE_TPS_ESTIMATION(T)                                                                         \

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Landmark pairs for a warp: landmarks on one point must go to one point.
 #include <morphreg/common/error.h>
 #include <morphreg/common/landmarks.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // guessLengthUnit on head-sized point sets in every unit, the sizes each unit is recognised over, and the unit
 // symbols; the scan checks and the fit's plausibility checks are in test/registration/scan_checks_test.cpp.
 #include <morphreg/common/error.h>
@@ -135,6 +136,29 @@ TEST (UnitGuessTest, BadInputIsReported)
   EXPECT_NE (message (broken, 90.0).find ("non-finite"), std::string::npos);
   EXPECT_NE (message (ellipsoidHead (100), 0.0).find ("model radius must be positive"), std::string::npos);
   EXPECT_NE (message (ellipsoidHead (100), std::nan ("")).find ("model radius"), std::string::npos);
+}
+
+// A model's mean in the unit its file does not state: a head (ellipsoid, RMS radius 90 mm), a face alone and a body
+// recognised in mm, cm and m as documented; a body in cm is taken for mm; micrometres fit no unit.
+TEST (ModelUnitGuessTest, HeadsFacesAndBodiesAreRecognisedWhereDocumented)
+{
+  const Eigen::Matrix3Xd head = ellipsoidHead (500);
+  for (const LengthUnit unit : {LengthUnit::millimetre, LengthUnit::centimetre, LengthUnit::metre}) {
+    for (const double size : {0.6, 1.0, 5.5}) { // a face alone, a head, a body (RMS radius about 500 mm)
+      const morphreg::LengthUnitGuess guess = morphreg::guessModelUnit (size * head / morphreg::millimetresPer (unit));
+      const bool body_in_cm = size > 5.0 && unit == LengthUnit::centimetre;
+      EXPECT_EQ (guess.unit, body_in_cm ? LengthUnit::millimetre : unit) << morphreg::toString (unit) << " " << size;
+      EXPECT_TRUE (guess.recognised) << guess.reason;
+    }
+  }
+  const morphreg::LengthUnitGuess metres = morphreg::guessModelUnit (head / 1000.0);
+  EXPECT_NE (metres.reason.find ("the mean's RMS radius is 0.09"), std::string::npos) << metres.reason;
+  EXPECT_NE (metres.reason.find ("taken as m (x1000 to mm), it is 0.9"), std::string::npos) << metres.reason;
+  const morphreg::LengthUnitGuess micrometres = morphreg::guessModelUnit (head * 1000.0);
+  EXPECT_FALSE (micrometres.recognised);
+  EXPECT_EQ (micrometres.unit, LengthUnit::millimetre);
+  EXPECT_NE (micrometres.reason.find ("no head, face or body in mm, cm or m"), std::string::npos) << micrometres.reason;
+  EXPECT_THROW (morphreg::guessModelUnit (head.leftCols (2)), morphreg::InvalidInputError);
 }
 
 TEST (LengthUnitSymbolTest, SymbolsRoundTripAndFactorsAreMillimetres)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The all-in-one package (find_package(morphreg), morphreg::morphreg): generate heads, build a global model, scan an
 // unseen head and register the scan behind a PCL rejector, as the README shows. Exit 0 on success.
 #include <morphreg/mesh/mesh_topology.h>

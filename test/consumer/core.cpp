@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg::core alone: a tetrahedron's topology, a thin plate spline through its corners, a cloud written and read
 // back, and a MorphableICP (PCL registration) ready to take a model. Exit 0 on success.
 #include <morphreg/io/cloud_io.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The installed package, in two modes.
 # MODE=install: installs morphreg's build tree BUILD_DIR into PREFIX.
 # MODE=consumer: configures and builds test/consumer (SOURCE_DIR) in WORK_DIR against PREFIX for COMPONENT (empty:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg::synthetic: a coarse synthetic head and a simulated laser scan of it. Exit 0 on success.
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/synthetic/head_generator.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg::visualization: links the visualiser (VTK rendering). Run with --render under an X server to draw a
 // tetrahedron offscreen; without arguments it only checks the program starts. Exit 0 on success.
 #include <morphreg/visualization/registration_visualizer.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Replays every committed fuzz input (fuzz/corpus/<target>/) and crash reproducer (fuzz/crashes/<target>/) through
 // its target's loaders: each must load or throw morphreg::Error, never crash or throw anything else.
 #include <fuzz_target.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Depth images (16-bit greyscale PNG, mm) and depth-camera intrinsics (JSON): round trips, and every bad file named
 // with its problem before a pixel is decoded.
 #include <morphreg/common/error.h>
@@ -87,7 +88,7 @@ TEST (DepthImageIoTest, HeadersAreCheckedBeforeDecoding)
   writeHeaderOnlyPng (dir.file ("colour.png"), 64, 64, 8, 2);
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadDepthPng (dir.file ("huge.png")); }, "huge.png");
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadDepthPng (dir.file ("claims_more.png")); },
-                                                "bytes cannot hold a 4000 x 4000 16-bit image");
+                                                "bytes cannot hold the 4000 x 4000 image its header declares");
   expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadDepthPng (dir.file ("colour.png")); },
                                                 "must be a 16-bit greyscale PNG");
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/file_format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/landmark_io.h>
 
@@ -104,6 +105,7 @@ TEST (LandmarkIoTest, UnknownIdsWrongCountsAndMissingFilesAreErrors)
   writeText (dir.file ("unknown.csv"), "id,x,y,z\nnose_tipp,1,2,3\n");
   expectLoadError<morphreg::InvalidInputError> (dir.file ("unknown.csv"), "unknown landmark id 'nose_tipp'");
   expectLoadError<morphreg::IoError> (dir.file ("missing.json"), "no such file");
+  writeText (dir.file ("landmarks.txt"), "nose_tip 1 2 3\n");
   expectLoadError<morphreg::IoError> (dir.file ("landmarks.txt"), "unsupported");
   morphreg::saveLandmarks (dir.file ("three.json"), someLandmarks ());
   try {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg's OBJ reader: what it takes from a file (positions, colours, normals, polygons) and that the lines PCL's
 // reader crashed on are read or refused with the line.
 #include <morphreg/common/error.h>

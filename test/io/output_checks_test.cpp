@@ -1,7 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Output paths are checked before any work: a folder that is missing or not a folder, a path that is a folder, an
-// output that is one of the inputs (by another spelling or a hard link).
+// output that is one of the inputs (by another spelling, a hard link or a symbolic link) or lies in a folder of
+// inputs, two outputs on one file.
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
+#include <morphreg/io/output_plan.h>
 
 #include "support/expect_error.h"
 #include "support/temp_directory.h"
@@ -45,20 +48,59 @@ TEST (OutputChecksTest, AFolderAsTheOutputIsRefused)
   expectErrorContaining<morphreg::IoError> ([&] { morphreg::requireWritableOutput (""); }, "empty");
 }
 
+/** OutputPlan::check() on one output \a out against the input \a scan. */
+void
+checkOutput (const std::string& out, const std::string& scan)
+{
+  morphreg::OutputPlan plan;
+  plan.addInput ("", "--landmarks");
+  plan.addInput (scan, "--scan");
+  plan.addOutput (out, "--out");
+  plan.check ();
+}
+
 TEST (OutputChecksTest, AnOutputThatIsAnInputIsRefusedHoweverItIsSpelt)
 {
   TempDirectory dir;
   const std::string scan = dir.file ("scan.ply");
   std::ofstream (scan) << "points";
-  expectErrorContaining<morphreg::InvalidInputError> (
-      [&] {
-        morphreg::requireNotAnInput (scan, {"", dir.file ("model.h5"), scan});
-      },
-      "also an input");
-  expectErrorContaining<morphreg::InvalidInputError> (
-      [&] { morphreg::requireNotAnInput (dir.file ("sub/../scan.ply"), {scan}); }, "would overwrite");
+  std::filesystem::create_directories (dir.file ("sub"));
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput (scan, scan); }, "also an input");
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput (dir.file ("sub/../scan.ply"), scan); },
+                                                      "would overwrite");
   std::filesystem::create_hard_link (scan, dir.file ("link.ply"));
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput (dir.file ("link.ply"), scan); },
+                                                      scan + " (--scan)");
+  std::filesystem::create_symlink (scan, dir.file ("symlink.ply"));
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput (dir.file ("symlink.ply"), scan); },
+                                                      "symlink.ply (--out): is also an input");
+  EXPECT_NO_THROW (checkOutput (dir.file ("fit.ply"), scan));
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { checkOutput ("", scan); },
+                                                      "--out: the output file name is empty");
+}
+
+TEST (OutputChecksTest, AnOutputInAFolderOfInputsIsRefused)
+{
+  TempDirectory dir;
+  std::filesystem::create_directories (dir.file ("scans"));
+  morphreg::OutputPlan plan;
+  plan.addInputFolder (dir.file ("scans/."), "--scans");
+  plan.addOutput (dir.file ("scans/a.ply"), "the fitted mesh of scan 'a'");
+  expectErrorContaining<morphreg::InvalidInputError> ([&] { plan.check (); },
+                                                      "a folder whose files this run reads as inputs");
+  morphreg::OutputPlan beside;
+  beside.addInputFolder (dir.file ("scans"), "--scans");
+  beside.addOutput (dir.file ("a.ply"), "the fitted mesh of scan 'a'");
+  EXPECT_NO_THROW (beside.check ());
+}
+
+TEST (OutputChecksTest, TwoOutputsOnOneFileAreRefusedNamingBoth)
+{
+  TempDirectory dir;
+  morphreg::OutputPlan plan;
+  plan.addOutput (dir.file ("a_fit.ply"), "the fit of scan 'a'");
+  plan.addOutput (dir.file ("b.ply"), "the resampled mesh of scan 'b'");
+  plan.addOutput (dir.file ("./a_fit.ply"), "the resampled mesh of scan 'a_fit'");
   expectErrorContaining<morphreg::InvalidInputError> (
-      [&] { morphreg::requireNotAnInput (dir.file ("link.ply"), {scan}); }, "also an input");
-  EXPECT_NO_THROW (morphreg::requireNotAnInput (dir.file ("fit.ply"), {scan, dir.file ("missing.h5")}));
+      [&] { plan.check (); }, "write it twice, as the fit of scan 'a' and as the resampled mesh of scan 'a_fit'");
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // morphreg's PCD reader: valid files (morphreg's, PCL's writers', the shared PCL test files) read exactly as PCL's
 // reader reads them, and malformed ones are refused with the file, the line where there is one, and the problem.
 #include <morphreg/common/error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Importers of the real evaluation surfaces: MNE's fsaverage scalp with its fiducials (metres -> mm) and MediaPipe's
 // canonical face (centimetres -> mm), and the errors for missing or malformed files.
 #include <morphreg/common/error.h>

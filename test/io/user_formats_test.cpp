@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The formats users bring: iBUG-68 .pts files and ids, scalismo/BFM landmark JSON, STL and OFF scans, PLY files
 // with double coordinates.
 #include <morphreg/common/error.h>
@@ -189,8 +190,11 @@ TEST (UserFormatsTest, BadOffFilesAreNamedWithTheLine)
                                                 "nan.off:4: vertex 1 coordinate y 'nan' is not a finite number");
   expectErrorContaining<morphreg::FormatError> (load ("cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
                                                 "cut.off: header claims 1 faces (at least 8 bytes) but the file holds");
-  expectErrorContaining<morphreg::FormatError> (load ("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
-                                                "no polygons");
+  // an OFF file of points alone is a cloud (as PLY and PCD are), but not a mesh
+  writeText (dir.file ("points.off"), "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_EQ (morphreg::loadCloud<pcl::PointXYZ> (dir.file ("points.off"))->size (), 3u);
+  expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadPolygonMesh (dir.file ("points.off")); },
+                                                "points.off: mesh has no polygons");
 }
 
 // Open3D and trimesh write "property double x": PCL copies only fields of the point type's own (float) type, and such

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every writer of the library under a full disk: a file size limit (RLIMIT_FSIZE, with SIGXFSZ ignored, so a write
 // past it fails with EFBIG as on a full disk). Each must throw IoError naming the file and leave nothing behind.
 #include <morphreg/common/error.h>

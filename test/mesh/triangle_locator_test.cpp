@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Closest points on triangles and meshes (with the open-boundary flag), area-uniform surface samples and the flat
 // cap finder, on meshes with known answers.
 #include <morphreg/common/error.h>

@@ -1,6 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/ict_facekit.h>
+#include <morphreg/io/npy_reader.h>
 #include <morphreg/model/ict_region_model.h>
+#include <morphreg/model/pca.h>
+#include "support/expect_error.h"
 #include "support/accuracy_bound.h"
 #include "support/temp_directory.h"
 
@@ -19,6 +23,24 @@ const std::string kIctDirectory = std::string (MORPHREG_SHARED_DATA_DIR) + "/ict
 #define REQUIRE_ICT()                                                                                                  \
   if (!std::filesystem::exists (kIctDirectory + "/ict_head_pca_basis.npy"))                                            \
   GTEST_SKIP () << "ICT-FaceKit data not found in " << kIctDirectory << " (../shared/data is absent)"
+
+/** ICT-FaceKit's own layout: the neutral mesh, three identities, vertex_indices.json. */
+const std::string kUpstreamDirectory = kIctDirectory + "/upstream_sample";
+
+#define REQUIRE_ICT_UPSTREAM()                                                                                         \
+  if (!std::filesystem::exists (kUpstreamDirectory + "/FaceXModel/generic_neutral_mesh.obj"))                          \
+  GTEST_SKIP () << "ICT-FaceKit's upstream sample not found in " << kUpstreamDirectory << " (../shared/data is absent)"
+
+/** The first \a count identity modes of the converted files (ict_head_identity_modes.npy, [100, N, 3] in cm) in mm,
+ *  one per column. */
+Eigen::MatrixXd
+convertedIdentityModes (Eigen::Index count)
+{
+  const std::string path = kIctDirectory + "/ict_head_identity_modes.npy";
+  const morphreg::NpyArray modes = morphreg::readNpyFloat32 (path);
+  const auto values = static_cast<Eigen::Index> (modes.shape[1] * modes.shape[2]);
+  return Eigen::Map<const Eigen::MatrixXf> (modes.data.data (), values, count).cast<double> () * 10.0;
+}
 
 const MorphableModel&
 ict ()
@@ -132,6 +154,75 @@ TEST (ModelIoTest, IctFaceKitCorruptFilesGiveClearErrors)
   }
   std::filesystem::remove (directory.file ("ict_head_mean.ply"));
   EXPECT_THROW (morphreg::loadIctFaceKit (directory.file ("")), morphreg::IoError);
+}
+
+// ICT-FaceKit as its repository publishes it: the converted files are its neutral mesh and identity modes over the
+// face, head and neck (the modes identityNNN.obj - generic_neutral_mesh.obj, in cm), so the upstream sample's three
+// identities must give the converted mean, triangles, landmarks and profile, and a model whose covariance is that of
+// the converted files' first three modes.
+TEST (ModelIoTest, IctFaceKitUpstreamLayoutGivesTheConvertedMeanAndIdentityModes)
+{
+  REQUIRE_ICT ();
+  REQUIRE_ICT_UPSTREAM ();
+  const MorphableModel::ConstPtr upstream = morphreg::loadIctFaceKit (kUpstreamDirectory);
+  const MorphableModel& converted = ict ();
+  ASSERT_EQ (upstream->numVertices (), converted.numVertices ());
+  EXPECT_EQ (upstream->triangles (), converted.triangles ());
+  EXPECT_LT ((upstream->mean () - converted.mean ()).cwiseAbs ().maxCoeff (), 1e-4); // the PLY's float32 cm
+  EXPECT_EQ (upstream->landmarks (), converted.landmarks ());
+  EXPECT_EQ (upstream->profileLine (), converted.profileLine ());
+  EXPECT_EQ (morphreg::loadIctFaceKit (kUpstreamDirectory + "/FaceXModel")->mean (), upstream->mean ());
+
+  // Covariance sum_k m_k m_k^T = B diag(variances) B^T: every converted mode lies in the span of B, and the modes'
+  // coordinates in B have the variances as their second moments.
+  const Eigen::MatrixXd modes = convertedIdentityModes (3);
+  const Eigen::MatrixXd& basis = upstream->globalBasis ();
+  ASSERT_EQ (basis.cols (), 3);
+  const Eigen::MatrixXd coordinates = basis.transpose () * modes;
+  EXPECT_LT ((basis * coordinates - modes).norm () / modes.norm (), 1e-5); // the npy modes are float32
+  const Eigen::MatrixXd moments = coordinates * coordinates.transpose ();
+  const Eigen::MatrixXd variances = upstream->globalVariances ().asDiagonal ();
+  EXPECT_LT ((moments - variances).norm () / upstream->globalVariances ().sum (), 1e-6) << moments;
+  EXPECT_NEAR (upstream->globalVariances ().sum (), modes.colwise ().squaredNorm ().sum (),
+               1e-6 * upstream->globalVariances ().sum ());
+}
+
+// With all 100 identities the upstream rule (the PCA of the modes, variances times K - 1) is the converted model:
+// its orthonormal basis and eigenvalues are the PCA of the converted identity modes.
+TEST (ModelIoTest, IctConvertedBasisIsThePcaOfItsHundredIdentityModes)
+{
+  REQUIRE_ICT ();
+  const Eigen::MatrixXd modes = convertedIdentityModes (100);
+  morphreg::PcaBasis pca = morphreg::computePca (modes, morphreg::PcaMethod::gram);
+  pca.variances *= static_cast<double> (modes.cols () - 1);
+  const MorphableModel& converted = ict ();
+  ASSERT_EQ (pca.variances.size (), converted.globalVariances ().size ());
+  for (Eigen::Index k = 0; k < pca.variances.size (); ++k) {
+    EXPECT_NEAR (pca.variances[k], converted.globalVariances ()[k], 1e-4 * converted.globalVariances ()[k]) << k;
+    EXPECT_NEAR (std::abs (pca.basis.col (k).dot (converted.globalBasis ().col (k))), 1.0, 1e-3) << "component " << k;
+  }
+}
+
+TEST (ModelIoTest, IctFaceKitUpstreamProblemsAreNamed)
+{
+  REQUIRE_ICT_UPSTREAM ();
+  morphreg::test::TempDirectory directory;
+  const std::string folder = directory.file ("FaceXModel");
+  std::filesystem::create_directories (folder);
+  for (const char* name : {"generic_neutral_mesh.obj", "identity000.obj"})
+    std::filesystem::copy_file (kUpstreamDirectory + "/FaceXModel/" + name, folder + "/" + name);
+  morphreg::test::expectErrorContaining<morphreg::IoError> ([&] { morphreg::loadIctFaceKit (directory.file ("")); },
+                                                            "1 identityNNN.obj file(s)");
+  std::ofstream (folder + "/identity001.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  morphreg::test::expectErrorContaining<morphreg::FormatError> ([&] { morphreg::loadIctFaceKit (directory.file ("")); },
+                                                                "identity001.obj: 3 vertices, expected 26719");
+  std::filesystem::copy_file (kUpstreamDirectory + "/FaceXModel/identity001.obj", folder + "/identity001.obj",
+                              std::filesystem::copy_options::overwrite_existing);
+  morphreg::test::expectErrorContaining<morphreg::IoError> ([&] { morphreg::loadIctFaceKit (directory.file ("")); },
+                                                            "vertex_indices.json");
+  std::filesystem::remove_all (folder);
+  morphreg::test::expectErrorContaining<morphreg::IoError> ([&] { morphreg::loadIctFaceKit (directory.file ("")); },
+                                                            "neither ICT-FaceKit's own layout (FaceXModel/");
 }
 
 TEST (ModelBuilderTest, IctSevenRegionModelFromSamples)

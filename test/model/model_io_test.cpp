@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "population.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/model/model_builder.h>
+#include "support/expect_error.h"
 #include "support/temp_directory.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +12,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 
 using morphreg::MorphableModel;
 
@@ -137,7 +140,10 @@ TEST (ModelIoTest, SaveLoadRoundTripIsExact)
   }
   EXPECT_EQ (loaded->landmarks (), model.landmarks ());
   EXPECT_EQ (loaded->profileLine (), model.profileLine ());
-  EXPECT_EQ (loaded->metadata (), model.metadata ());
+  std::map<std::string, std::string> metadata = loaded->metadata ();
+  EXPECT_EQ (metadata[morphreg::kFileUnitsKey], "mm (the file's units)");
+  metadata.erase (morphreg::kFileUnitsKey);
+  EXPECT_EQ (metadata, model.metadata ());
   EXPECT_EQ (loaded->units (), model.units ());
   EXPECT_EQ (loaded->gammaPairs ().size (), model.gammaPairs ().size ());
   // The statismo part is float32 by the layout.
@@ -181,6 +187,47 @@ TEST (ModelIoTest, TakesTheLandmarksOfABaselFaceModel2017File)
   EXPECT_EQ (model->landmarks (), expected) << "BFM ids translated where the project has one, nearest mean vertex";
   expectLoadFails ("bfm2017_bad_landmarks.h5",
                    "dataset 'metadata/landmarks/json': [0] ('center.nose.tip'): \"coordinates\" must be an array");
+}
+
+// A model file carries its unit: a morphreg file states it and is converted from it, a statismo file (which cannot
+// state it) is recognised by its size; a unit that is none, or a size no unit makes a head, is refused.
+TEST (ModelIoTest, ModelInCentimetresOrMetresIsRecognisedAndConverted)
+{
+  REQUIRE_FIXTURE ();
+  const MorphableModel::Ptr mm = morphreg::loadModel (fixture ().file ("statismo_v09.h5"));
+  EXPECT_EQ (mm->metadata ().at (morphreg::kFileUnitsKey).rfind ("mm (guessed from its size: ", 0), 0u)
+      << mm->metadata ().at (morphreg::kFileUnitsKey);
+  for (const auto& [name, unit] : {std::pair<std::string, std::string> ("statismo_centimetres.h5", "cm"),
+                                   std::pair<std::string, std::string> ("statismo_metres.h5", "m")}) {
+    const MorphableModel::Ptr model = morphreg::loadModel (fixture ().file (name));
+    expectMatchesExpected (*model);
+    EXPECT_EQ (model->units (), "mm");
+    const std::string found = model->metadata ().at (morphreg::kFileUnitsKey);
+    EXPECT_EQ (found.rfind (unit + " (guessed from its size: the mean's RMS radius is ", 0), 0u) << found;
+    EXPECT_NE (found.find ("; converted to mm on loading"), std::string::npos) << found;
+  }
+  expectLoadFails ("statismo_micrometres.h5", "not a head model in any unit: the mean's RMS radius is 1.73e+05");
+}
+
+TEST (ModelIoTest, StatedUnitIsConvertedOrRefused)
+{
+  morphreg::test::TempDirectory directory;
+  MorphableModel in_cm = builtModel ();
+  in_cm.setUnits ("cm");
+  morphreg::saveModel (directory.file ("cm.h5"), in_cm);
+  const MorphableModel::Ptr loaded = morphreg::loadModel (directory.file ("cm.h5"));
+  EXPECT_EQ (loaded->units (), "mm");
+  EXPECT_EQ (loaded->metadata ().at (morphreg::kFileUnitsKey), "cm (the file's units); converted to mm on loading");
+  EXPECT_TRUE (loaded->mean ().isApprox (10.0 * builtModel ().mean ()));
+  EXPECT_TRUE (loaded->globalVariances ().isApprox (100.0 * builtModel ().globalVariances (), 1e-6));
+  EXPECT_TRUE (loaded->region (0).variances.isApprox (100.0 * builtModel ().region (0).variances));
+  EXPECT_NEAR (loaded->noiseVariance (), 50.0, 1e-5);
+
+  MorphableModel in_furlongs = builtModel ();
+  in_furlongs.setUnits ("furlong");
+  morphreg::saveModel (directory.file ("furlong.h5"), in_furlongs);
+  morphreg::test::expectErrorContaining<morphreg::FormatError> (
+      [&] { morphreg::loadModel (directory.file ("furlong.h5")); }, "'furlong' is no length unit");
 }
 
 TEST (ModelIoTest, NormalisesTheScaledBasisOfStatismoVersion08)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "population.h"
 
 #include <morphreg/common/error.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A small synthetic training population (coarse heads, fast to build) shared by the model tests.
 #include <morphreg/model/region_segmentation.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Independent HDF5 reader/writer (h5py) for the model-file tests: it follows the statismo v0.9 layout as
 documented in include/morphreg/io/model_io.h and shares no code with morphreg.
 
@@ -17,26 +18,29 @@ import numpy as np
 
 
 def cube():
-    points = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], dtype=np.float64) * 10.0
+    """A head-sized cube in mm (RMS radius 173 mm), so that its unit guessed from its size is mm."""
+    points = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], dtype=np.float64) * 100.0
     cells = np.array([[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
                       [2, 7, 3], [2, 6, 7], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]], dtype=np.int32)
     return points, cells
 
 
-def write_model(path, prefix="", minor=9, scaled=False, version_at_root=False, edit=None):
+def write_model(path, prefix="", minor=9, scaled=False, version_at_root=False, edit=None, mm_per_unit=1.0):
+    """The cube model, stored in a unit of mm_per_unit mm (coordinates divided by it, variances by its square)."""
     points, cells = cube()
     n = points.shape[0]
     rng = np.random.default_rng(4)
     basis, _ = np.linalg.qr(rng.standard_normal((3 * n, 3)))
     variances = np.array([9.0, 4.0, 1.0])
     mean = points.reshape(-1) + 0.5
-    stored_basis = basis * np.sqrt(variances) if scaled else basis
+    stored_variances = variances / mm_per_unit ** 2
+    stored_basis = basis * np.sqrt(stored_variances) if scaled else basis
     data = {
-        "model/mean": mean.astype(np.float32),
+        "model/mean": (mean / mm_per_unit).astype(np.float32),
         "model/pcaBasis": stored_basis.astype(np.float32),
-        "model/pcaVariance": variances.astype(np.float32),
-        "model/noiseVariance": np.float32(0.25),
-        "representer/points": points.T.astype(np.float32),
+        "model/pcaVariance": stored_variances.astype(np.float32),
+        "model/noiseVariance": np.float32(0.25 / mm_per_unit ** 2),
+        "representer/points": (points.T / mm_per_unit).astype(np.float32),
         "representer/cells": cells.T.copy(),
     }
     if edit:
@@ -97,6 +101,11 @@ def write(directory):
             at += 16 + (struct.unpack_from("<Q", data, at + 8)[0] + 7) // 8 * 8
         f.seek(at + 8)
         f.write(struct.pack("<Q", 0))
+    # The same model in cm and m, which statismo files cannot say: recognised by their size; and in micrometres,
+    # which no unit makes a head.
+    write_model(os.path.join(directory, "statismo_centimetres.h5"), mm_per_unit=10.0)
+    write_model(os.path.join(directory, "statismo_metres.h5"), mm_per_unit=1000.0)
+    write_model(os.path.join(directory, "statismo_micrometres.h5"), mm_per_unit=0.001)
     write_model(os.path.join(directory, "statismo_v08.h5"), minor=8, scaled=True)
     write_model(os.path.join(directory, "scaled_labelled_v09.h5"), minor=9, scaled=True)
     write_model(os.path.join(directory, "missing_variance.h5"), edit=set_item("model/pcaVariance", lambda a: None))

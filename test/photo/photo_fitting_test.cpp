@@ -508,6 +508,17 @@ TEST_F (PhotoFittingTest, HistoryAndReportShowTheStagesAndFallingResiduals)
   EXPECT_DOUBLE_EQ (report.at ("scale").get<double> (), fit.scale);
   EXPECT_EQ (report.at ("history").size (), fit.history.size ());
   EXPECT_EQ (report.at ("coefficients").size (), static_cast<size_t> (fit.coefficients.size ()));
+  // Coefficients in prior standard deviations (statismo's unit), the lengths as coefficients_mm.
+  const Eigen::VectorXd sd = morphreg::test::photoTestModel ().model->variances (fit.selection).cwiseSqrt ();
+  EXPECT_GT (fit.coefficients_mm.cwiseAbs ().maxCoeff (), 0.1) << "a fitted shape, not the mean";
+  EXPECT_LT ((fit.coefficients - fit.coefficients_mm.cwiseQuotient (sd)).cwiseAbs ().maxCoeff (), 1e-12);
+  EXPECT_EQ (report.at ("coefficients_unit"), "prior standard deviations");
+  for (Eigen::Index i = 0; i < fit.coefficients.size (); ++i) {
+    EXPECT_DOUBLE_EQ (report.at ("coefficients")[i].get<double> (), fit.coefficients[i]);
+    EXPECT_DOUBLE_EQ (report.at ("coefficients_mm")[i].get<double> (), fit.coefficients_mm[i]);
+  }
+  EXPECT_TRUE (fit.model_mesh.vertices.isApprox (
+      morphreg::test::photoTestModel ().model->generate (fit.coefficients_mm, fit.selection)));
   EXPECT_EQ (report.at ("history")[0].at ("stage"), "similarity");
   EXPECT_DOUBLE_EQ (report.at ("final").at ("landmark_rms_mm").get<double> (), fit.final_residuals.landmark_rms);
 }
@@ -624,7 +635,7 @@ TEST (PlausibleShapeTest, ChiSquareBoundOnTheStandardisedCoefficients)
   EXPECT_TRUE (morphreg::isPlausibleShape (Eigen::VectorXd::Constant (8, std::sqrt (27.9 / 8.0))));
   EXPECT_FALSE (morphreg::isPlausibleShape (Eigen::VectorXd::Constant (8, std::sqrt (28.1 / 8.0))));
   PhotoFit fit;
-  fit.coefficient_sigmas = Eigen::Vector2d (3.0, 4.0);
+  fit.coefficients = Eigen::Vector2d (3.0, 4.0);
   EXPECT_DOUBLE_EQ (fit.shapeDistance (), 5.0);
 }
 

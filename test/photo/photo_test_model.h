@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The photo tests' model: 200 synthetic heads (seed 1000) at a low resolution, 20 components per region, with the
 // generator's landmarks and profile line; and the thesis's frontal landmarks (table 1) of the generator.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The annotated photos: the normalised frame, the views' validation, their JSON files, the silhouette polyline and
 // the photo simulator's ground truth.
 #include "photo_test_model.h"

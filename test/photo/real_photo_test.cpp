@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Photo fitting on photos of real meshes (made at test time): MediaPipe's canonical face (landmarks: its documented
 // ids) and the real head scan (landmark vertices picked on renders: annotations/leeperrysmith_head_landmarks.json),
 // photographed as real_photos.h describes and scored in 3D against the mesh the photos show (the fit aligned
@@ -80,7 +81,7 @@ fitAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVertices&
     std::printf (
         "[ real photo ]   lambda_2 %.3f (%s, noise %.3f), beats mean head %d, shape distance %.2f, plausible %d\n",
         fit.prior.weight, fit.prior.rule.c_str (), fit.prior.noise_weight, fit.prior.beats_mean_head,
-        fit.shapeDistance (), isPlausibleShape (fit.coefficient_sigmas));
+        fit.shapeDistance (), isPlausibleShape (fit.coefficients));
     const RatioBound& bound = bounds[static_cast<size_t> (a)];
     EXPECT_PRED_FORMAT2 (tightUpperBound, median, bound.ratio * baseline) << name << " " << approach;
     if (bound.beats_mean_head)
@@ -222,7 +223,7 @@ TEST (RealPhotoTest, JamesTwoRealPhotosWithGivenAndEstimatedCameras)
                    candidate.error_mm);
     std::printf ("[ real photo ]   the mean head: left-out landmarks %.3f mm\n", fit.prior.mean_head_error_mm);
     EXPECT_EQ (fit.views[0].camera_estimated, !given);
-    EXPECT_TRUE (isPlausibleShape (fit.coefficient_sigmas)) << given;
+    EXPECT_TRUE (isPlausibleShape (fit.coefficients)) << given;
     const double bound = given ? 0.8 : 0.85;
     EXPECT_PRED_FORMAT2 (tightUpperBound, median, bound * baseline) << "cameras given " << given;
     EXPECT_PRED_FORMAT2 (noOpFailsUpperBound, baseline, bound * baseline) << "cameras given " << given;

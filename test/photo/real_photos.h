@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Annotated photos of real meshes, made at test time, and the 3D score of a photo fit against the mesh they show.
 // The profile photo's silhouette is what a person traces on a real photo: the outline of the head's orthographic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Landmark-free registration of the real head-and-shoulders scan from random similarity poses (required: every
 // pose succeeds: register's checks pass and the face median is at most 0.85 mm), each scored with its sample count,
 // 95th percentile and pose (real_scan_support.h, FaceBounds), against the mean head carried by the fit's similarity.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The real head-and-shoulders scan (82k points) resampled into the ICT topology: the ICT model (30 components per
 // region) fitted with `morphreg resample --components 30`'s registration (register's defaults), then ScanResampler; the face's coverage and the observed face
 // vertices' distance to the scan's own mesh, against the model-only fit's.

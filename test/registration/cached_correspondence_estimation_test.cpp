@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // CachedCorrespondenceEstimation against pcl::registration::CorrespondenceEstimation on moving sources: the same
 // correspondences, fewer k-d tree queries, a new target honoured, and a drop-in for pcl::IterativeClosestPoint.
 #include <morphreg/registration/cached_correspondence_estimation.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The global start and MorphableICP on scans that hold what real scans carry beyond the head: shoulders and torso,
 // a chair back, hair-like noise on the crown, no normals, any rotation. 20 heads of the built-in population.
 #include "scan_protocol.h"
@@ -22,6 +23,7 @@ namespace
 using morphreg::MorphableModel;
 using morphreg::TriangleMesh;
 using Icp = morphreg::MorphableICP<pcl::PointNormal>;
+constexpr double kWorstBound = 1.1; ///< mm, the vertex RMS every head must reach
 
 /** Points spread over the torso below the neck: an elliptic cylinder 380 x 220 mm, 250 mm high, with the shoulders'
  *  top as a flat ring from the neck outwards; about one point per \a area mm^2. */
@@ -141,7 +143,7 @@ TEST (ClutterTest, EveryHeadOfTwentyFitsThroughShouldersChairAndHair)
                  morphreg::toString (report.termination).c_str ());
     std::printf ("  %s\n", report.initialisation_detail.c_str ());
 
-    failures += rms > 1.5 ? 1 : 0;
+    failures += rms > kWorstBound ? 1 : 0;
     worst = std::max (worst, rms);
     const Eigen::Map<const Eigen::Matrix3Xd> mean (model->mean ().data (), 3, model->numVertices ());
     const Eigen::Matrix3Xd posed_mean =
@@ -149,12 +151,12 @@ TEST (ClutterTest, EveryHeadOfTwentyFitsThroughShouldersChairAndHair)
     no_op.push_back (morphreg::test::vertexRms (posed_mean, posed_truth) / scale);
   }
   EXPECT_EQ (failures, 0);
-  // Measured: the worst head 1.467 mm; the no-op (the mean head at the true pose) lies a median of several mm off.
-  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, worst, 1.5);
+  // Measured: the worst head 0.863 mm; the no-op (the mean head at the true pose) lies a median of 3.41 mm off.
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, worst, kWorstBound);
   std::nth_element (no_op.begin (), no_op.begin () + no_op.size () / 2, no_op.end ());
   std::printf ("[ clutter no-op ] the mean head at the true pose: median vertex RMS %.3f mm\n",
                no_op[no_op.size () / 2]);
-  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, no_op[no_op.size () / 2], 1.5);
+  EXPECT_PRED_FORMAT2 (morphreg::test::noOpFailsUpperBound, no_op[no_op.size () / 2], kWorstBound);
 }
 
 } // namespace

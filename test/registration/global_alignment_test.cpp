@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // alignHeadGlobally and guessLengthUnit: bad input, and units recognised on a synthetic head in mm, cm and m.
 #include "../support/synthetic_heads.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The ICT-FaceKit model for the registration tests with real data: loaded once per executable, with the skip
 // message used when ../shared/data is absent.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // MorphableICP with the ICT-FaceKit model under the scan protocol of scan_protocol.h: 20 heads with fixed seeds,
 // scans with a random similarity, holes, noise, outliers and noisy landmarks; error = vertex RMS against the posed
 // truth.
@@ -128,13 +129,13 @@ TEST (IctIcpTest, HeadsWithinTheFittedComponentsFitFromLandmarkAndCoarseStarts)
                "%.3f, worst %.3f mm, %ld/%zu <= 1 mm\n",
                median (landmark_rms), worst_landmark, countAtMost (landmark_rms, 1.0), landmark_rms.size (),
                median (coarse_rms), worst_coarse, countAtMost (coarse_rms, 1.0), coarse_rms.size ());
-  // Required: <= 1.0 mm on every head from both starts. At these settings the landmark start fits 20/20 heads
-  // (median 0.68 mm, worst 0.82 mm), the coarse start (robustCoarseSimilarity) 20/20 (median 0.69 mm, worst
-  // 0.84 mm), in 17-41 iterations.
-  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, worst_landmark, 1.0)
-      << "landmark start: every head must fit within 1.0 mm";
-  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, worst_coarse, 1.0)
-      << "coarse start: every head must fit within 1.0 mm";
+  // Required: <= 0.85 mm on every head from both starts. At these settings the landmark start fits 20/20 heads
+  // (median 0.520 mm, worst 0.674 mm), the coarse start (robustCoarseSimilarity) 20/20 (median 0.524 mm, worst
+  // 0.682 mm), in at most 50 iterations.
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, worst_landmark, 0.85)
+      << "landmark start: every head must fit within 0.85 mm";
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, worst_coarse, 0.85)
+      << "coarse start: every head must fit within 0.85 mm";
 }
 
 TEST (IctIcpTest, HeadsWithAllComponentsFitWithin30ComponentsCloseToTheirFloor)

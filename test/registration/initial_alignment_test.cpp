@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // robustCoarseSimilarity: a synthetic head's known pose recovered from a protocol scan (holes, noise, outliers),
 // and clear errors for bad input.
 #include "scan_protocol.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The solver, the convergence rules and the boundary rejector on small problems with known answers.
 #include <morphreg/common/error.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
@@ -93,6 +94,34 @@ TEST (MorphableConvergenceTest, BudgetEpsilonsAndDivergence)
   EXPECT_FALSE (convergence.checkCost (2.0)) << "two rises in a row above 1.05 times the best";
   EXPECT_EQ (convergence.divergence (), morphreg::IcpDivergence::cost_rose);
   EXPECT_EQ (convergence.termination (), morphreg::IcpTermination::diverged);
+}
+
+TEST (MorphableConvergenceTest, ComparedOnTheSameRows)
+{
+  morphreg::MorphableConvergence convergence (20, 1e-6, 0.0, 0.0, 3);
+  convergence.startPhase (20, true, Eigen::VectorXd ());
+  // More rows admitted as the fit improves: the cost per row rises, yet the state beats the best on the same rows.
+  for (int k = 0; k < 5; ++k) {
+    ASSERT_TRUE (convergence.checkCost (1.0 + 0.2 * k, 1.1 + 0.2 * k)) << "no divergence: better on the same rows";
+    EXPECT_TRUE (convergence.improved ());
+    convergence.update (true, 1.0, Eigen::VectorXd ());
+    EXPECT_FALSE (convergence.hasConverged ());
+  }
+  // Settled: no better than the best on the same rows (within 0.1 %) three times in a row.
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_FALSE (convergence.hasConverged ()) << k;
+    ASSERT_TRUE (convergence.checkCost (2.0, 2.0005));
+    convergence.update (true, 1.0, Eigen::VectorXd ());
+  }
+  EXPECT_TRUE (convergence.hasConverged ());
+  EXPECT_EQ (convergence.termination (), morphreg::IcpTermination::fitness_converged);
+  EXPECT_EQ (convergence.divergence (), morphreg::IcpDivergence::none);
+  // Worse than the best on the same rows by over 5 %, three times in a row: the cost rose.
+  convergence.startPhase (10, true, Eigen::VectorXd ());
+  for (int k = 0; k < 2; ++k)
+    EXPECT_TRUE (convergence.checkCost (1.2, 1.0));
+  EXPECT_FALSE (convergence.checkCost (1.2, 1.0));
+  EXPECT_EQ (convergence.divergence (), morphreg::IcpDivergence::cost_rose);
 }
 
 TEST (MorphableConvergenceTest, PriorExceededAndUnsolvable)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // MorphableICP with the ICT-FaceKit model (30 components) on real surfaces, landmark-initialised: MNE's fsaverage
 // scalp and MediaPipe's canonical face. Distance as surfaceDistance defines it: target samples (one per 4 mm^2) to the
 // closest point of the fitted surface, without samples that reach it at its boundary (and, for fsaverage, without

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The scan protocol of the registration accuracy tests: a random similarity, an area-uniform scan with a crown cap and
 // an under-chin hole, Gaussian noise, uniform outliers and noisy landmarks, with the posed truth kept.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // surfaceDistance on meshes with known answers: target samples to the closest fitted point, samples
 // that only reach the fitted boundary dropped, statistics, and bad input.
 #include <morphreg/common/error.h>

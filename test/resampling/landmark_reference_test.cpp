@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // landmarkReference: a template warped onto landmarks marked on a scan, the reference of a resampling without a
 // registration (METHOD section 5), on a synthetic head with known truth; and its bad input.
 #include "../support/expect_error.h"

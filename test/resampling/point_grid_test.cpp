@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The resampler's neighbour search: exact k nearest neighbours, checked against brute force on scan-like clouds,
 // far queries, outliers that stretch the grid, and degenerate clouds.
 #include "resampling/point_grid.h"

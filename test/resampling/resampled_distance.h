@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The resampling suites' score: how far the resampled vertices in one state lie from the true surface.
 #include <morphreg/mesh/triangle_locator.h>

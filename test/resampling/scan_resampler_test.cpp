@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // ScanResampler on synthetic heads with known truth: mesh scans and simulated laser scans (point clouds), the holes'
 // fills, the settings and bad input; and the accuracy protocol of raw-scan model building (unseen heads registered
 // with a model of a disjoint population, then resampled).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # CliTest: the command line end to end on small synthetic inputs; bad arguments exit 2, bad files exit 1 with a
 # message naming the file. Every test runs through morphreg_cli_test (test/support/command_test.cmake), which checks
 # the exit code, the report's status and the files besides what the test is named for.
@@ -17,7 +18,7 @@ function(morphreg_cli_expect_exit name code text)
 endfunction()
 
 morphreg_cli_test(VersionPrints OUTPUT "morphreg [0-9]+\\.[0-9]+" ARGS --version)
-foreach(command synth build-model register resample fit-photos warp render demo model-info merge-summaries
+foreach(command synth build-model register resample fit-photos warp render view demo model-info merge-summaries
     evaluate-model)
   morphreg_cli_test(Help.${command} OUTPUT "Usage: .*${command}.*-q,--quiet.*-v,--verbose" ARGS ${command} --help)
 endforeach()
@@ -66,6 +67,21 @@ morphreg_cli_test(ModelInfoPrintsJson FIXTURES_REQUIRED cli_model
   OUTPUT "\"components\": 8,.*\"nose_tip\": [0-9]+.*\"vertices\": 3458"
   ARGS model-info --model ${cli_dir}/small_model.h5 --json)
 morphreg_cli_expect_exit(ModelInfoCorruptModelIsNamed 1 "corrupt_model.h5" model-info --model ${cli_dir}/corrupt_model.h5)
+# A model's unit: statismo files (written by the independent h5py writer of the model tests) in m are recognised by
+# their size and converted, in micrometres refused; a built model states mm.
+file(MAKE_DIRECTORY ${cli_dir}/unit_models)
+morphreg_command_test(CliTest.ModelFilesInOtherUnits FIXTURES_SETUP cli_unit_models
+  FILES ${cli_dir}/unit_models/statismo_metres.h5 ${cli_dir}/unit_models/statismo_micrometres.h5
+  COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/model/statismo_fixture.py write ${cli_dir}/unit_models)
+morphreg_cli_test(ModelInfoShowsAModelInMetresConverted FIXTURES_REQUIRED cli_unit_models
+  OUTPUT "units mm\n.*the file's unit: m \\(guessed from its size: the mean's RMS radius is 0\\.173: taken as m \\(x1000 to mm\\), it is 1\\.73 times a head model's 100 mm\\); converted to mm on loading"
+  ARGS model-info --model ${cli_dir}/unit_models/statismo_metres.h5)
+morphreg_cli_expect_exit(ModelInfoRefusesAModelInNoUnit 1
+  "statismo_micrometres.h5: not a head model in any unit: the mean's RMS radius is 1.73e+05"
+  model-info --model ${cli_dir}/unit_models/statismo_micrometres.h5)
+set_tests_properties(CliTest.ModelInfoRefusesAModelInNoUnit PROPERTIES FIXTURES_REQUIRED cli_unit_models)
+morphreg_cli_test(ModelInfoShowsTheStatedUnit FIXTURES_REQUIRED cli_model
+  OUTPUT "the file's unit: mm \\(the file's units\\)" ARGS model-info --model ${cli_dir}/small_model.h5)
 
 # register: the fit of the small scan against its true head, and the report's contents.
 morphreg_cli_test(RegisterSynthScanMatchesTruth FIXTURES_REQUIRED "cli_small;cli_model" FIXTURES_SETUP cli_fit
@@ -76,6 +92,15 @@ morphreg_cli_test(RegisterSynthScanMatchesTruth FIXTURES_REQUIRED "cli_small;cli
   CHECKS ${cli_scripts}/check_register_report.cmake DEFINE MAX_TRUTH_RMS=1.0
   ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5
        --truth ${cli_dir}/small/scan_0_truth.ply --out ${cli_dir}/fit.ply --report ${cli_dir}/fit.json)
+# The fitted mesh in each format other tools open: the "wrote" line says what the format carries, and the file,
+# read back by an independent reader, carries it (PLY: colours and the residual as vertex quality; OBJ: v x y z r g b;
+# VTK: colours).
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+foreach(format ply obj vtk)
+  morphreg_command_test(CliTest.RegisterOutputCarriesWhatItSays.${format} FIXTURES_REQUIRED "cli_small;cli_model"
+    COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_mesh_output.py $<TARGET_FILE:morphreg_cli>
+            ${cli_dir}/fit_format.${format} --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5)
+endforeach()
 # The synthetic scan's landmarks are exact: weighted 10 (the default 1 suits landmarks placed with a few mm of error).
 morphreg_cli_test(RegisterWithRejectorChainAndLandmarks FIXTURES_REQUIRED "cli_small;cli_model"
   MAXIMA "vertices the scan covers: RMS ([0-9.]+) mm=>1.0"
@@ -172,7 +197,7 @@ morphreg_cli_expect_exit(RegisterBadUnitExits2 2 "--units" register --scan a.pcd
 # resample: the small scan registered and resampled into the model's topology; a scan refused by the resampler (its
 # largest hole over the allowed share) exits 1 and leaves no output.
 set(resample_small resample --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --quiet)
-morphreg_cli_test(ResampleSynthScan FIXTURES_REQUIRED "cli_small;cli_model"
+morphreg_cli_test(ResampleSynthScan FIXTURES_REQUIRED "cli_small;cli_model" FIXTURES_SETUP cli_resampled
   REPORT ${cli_dir}/resampled.json FILES ${cli_dir}/resampled.ply ${cli_dir}/resampled_fit.ply
   CHECKS ${cli_scripts}/check_resample.cmake DEFINE MIN_COVERAGE=0.5
   ARGS ${resample_small} --out ${cli_dir}/resampled.ply)
@@ -246,6 +271,7 @@ morphreg_command_test(SlurmTest.ClusterDocShowsTheSbatchScript
           -DFILE=${PROJECT_SOURCE_DIR}/docs/register_study.sbatch -P ${cli_scripts}/doc_shows_file.cmake)
 # Failing scans are recorded in the summary, naming the problem, and the others registered; exit 4 at the end.
 morphreg_cli_test(BatchFailingScanIsNamedInTheSummary FIXTURES_REQUIRED "cli_model;cli_batch_scans" EXPECT_CODE 4
+  FIXTURES_SETUP cli_batch_failing
   ERROR "2 of 4 scans failed" CLEAN ${cli_dir}/batch_failing REPORT ${cli_dir}/batch_failing/summary.json STATUS none
   FILES ${cli_dir}/batch_failing/summary.csv ${cli_dir}/batch_failing/scan_0.ply ${cli_dir}/batch_failing/scan_1.ply
   CHECKS ${cli_scripts}/check_batch_failures.cmake DEFINE SUMMARY=${cli_dir}/batch_failing/summary.csv
@@ -383,7 +409,7 @@ morphreg_cli_test(RenderQuietPrintsNothingOnStderr FIXTURES_REQUIRED cli_synth X
   LOG ${cli_dir}/RenderQuietPrintsNothingOnStderr.log EMPTY_STDERR FILES ${cli_dir}/render_quiet.png
   ARGS render --mesh ${cli_dir}/synth/head_000.ply --width 320 --height 240 -q --out ${cli_dir}/render_quiet.png)
 morphreg_cli_expect_exit(RenderMissingFileIsNamed 2 "no_such_mesh.ply" render --mesh ${cli_dir}/no_such_mesh.ply)
-# --side-by-side: two meshes in a left and a right viewport (a fit and its resampled scan in the README).
+# --side-by-side: two meshes in a left and a right viewport (a fit and its resampled scan in docs/accuracy.md).
 morphreg_cli_test(RenderSideBySide FIXTURES_REQUIRED cli_synth XVFB OUTPUT "wrote .*render_sides.png \\(320x240\\)"
   FILES ${cli_dir}/render_sides.png CHECKS ${cli_scripts}/check_png.cmake
   DEFINE PNG=${cli_dir}/render_sides.png WIDTH=320 HEIGHT=240
@@ -392,11 +418,85 @@ morphreg_cli_test(RenderSideBySide FIXTURES_REQUIRED cli_synth XVFB OUTPUT "wrot
 morphreg_cli_expect_exit(RenderSideBySideNeedsTwoMeshes 1 "render --side-by-side shows two --mesh files"
   render --mesh ${cli_dir}/synth/head_000.ply --side-by-side left right --out ${cli_dir}/render_one.png)
 set_tests_properties(CliTest.RenderSideBySideNeedsTwoMeshes PROPERTIES FIXTURES_REQUIRED cli_synth)
-morphreg_cli_test(DemoWritesScreenshot XVFB OUTPUT "overlay .*demo_shot/overlay.png"
+# The colour bar of a residual mesh sits at the right (RegistrationVisualizer::colourBarRegion); the fit is framed
+# to fill the rest of the picture.
+set(cli_bar_drawn "--drawn 0.86 0.1 0.98 0.9 0.05")
+morphreg_cli_test(RenderResidualMeshShowsColourBar FIXTURES_REQUIRED cli_fit XVFB
+  OUTPUT "wrote .*render_residuals.png \\(400x300\\)" FILES ${cli_dir}/render_residuals.png
+  CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/render_residuals.png WIDTH=400 HEIGHT=300
+         "PIXEL_CHECKS=${cli_bar_drawn} --drawn 0.05 0.05 0.8 0.95 0.4"
+  ARGS render --mesh ${cli_dir}/fit.ply --cloud ${cli_dir}/small/scan_0.pcd --landmarks
+       ${cli_dir}/small/scan_0_landmarks.json --width 400 --height 300 --out ${cli_dir}/render_residuals.png)
+# A depth camera's organised frame holds NaN where it saw nothing: those points are skipped, the others drawn.
+set(cli_organised ${cli_dir}/organised_nan.pcd)
+set(organised_points "")
+foreach(row RANGE 19)
+  foreach(column RANGE 19)
+    if(column LESS 5)
+      string(APPEND organised_points "nan nan nan\n")
+    else()
+      string(APPEND organised_points "${column}0 ${row}0 500\n")
+    endif()
+  endforeach()
+endforeach()
+file(WRITE ${cli_organised} "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 20\nHEIGHT 20\n"
+     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 400\nDATA ascii\n${organised_points}")
+morphreg_cli_test(RenderOrganisedCloudSkipsNaN XVFB OUTPUT "wrote .*render_organised.png \\(320x240\\)"
+  FILES ${cli_dir}/render_organised.png CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/render_organised.png WIDTH=320 HEIGHT=240
+         "PIXEL_CHECKS=--min-std 5 --drawn 0.3 0.3 0.7 0.7 0.02"
+  ARGS render --cloud ${cli_organised} --width 320 --height 240 --out ${cli_dir}/render_organised.png)
+file(WRITE ${cli_dir}/all_nan.pcd "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 2\n"
+     "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4\nDATA ascii\nnan nan nan\nnan nan nan\nnan nan nan\nnan nan nan\n")
+morphreg_cli_test(RenderAllMissingCloudIsNamed XVFB EXPECT_CODE 1 ERROR "all_nan.pcd.*no valid point"
+  ABSENT ${cli_dir}/render_nan.png ARGS render --cloud ${cli_dir}/all_nan.pcd --out ${cli_dir}/render_nan.png)
+
+# view: the window's picture headless (--screenshot): the scan over the fit coloured by residual, its colour bar, the
+# landmarks and the correspondences.
+morphreg_cli_test(ViewScreenshotShowsFitAndColourBar FIXTURES_REQUIRED cli_fit XVFB
+  OUTPUT "wrote .*view.png \\(400x300\\)" FILES ${cli_dir}/view.png CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/view.png WIDTH=400 HEIGHT=300
+         "PIXEL_CHECKS=${cli_bar_drawn} --drawn 0.05 0.05 0.8 0.95 0.4"
+  ARGS view --scan ${cli_dir}/small/scan_0.pcd --fit ${cli_dir}/fit.ply --landmarks
+       ${cli_dir}/small/scan_0_landmarks.json --screenshot ${cli_dir}/view.png --width 400 --height 300)
+# A mesh without residuals has no colour bar: the right of the picture stays empty.
+morphreg_cli_test(ViewPlainMeshHasNoColourBar FIXTURES_REQUIRED cli_synth XVFB FILES ${cli_dir}/view_plain.png
+  CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/view_plain.png WIDTH=320 HEIGHT=240
+         "PIXEL_CHECKS=--blank 0.9 0.1 1.0 0.9 0.0 --drawn 0.2 0.2 0.8 0.8 0.5"
+  ARGS view --fit ${cli_dir}/synth/head_000.ply --screenshot ${cli_dir}/view_plain.png --width 320 --height 240)
+morphreg_cli_expect_exit(ViewNeedsSomethingToShow 1 "nothing to show" view --screenshot ${cli_dir}/view_none.png)
+morphreg_cli_test(ViewWithoutDisplayIsNamed EXPECT_CODE 1 ERROR "xvfb-run" PROPERTIES
+  ENVIRONMENT_MODIFICATION "DISPLAY=unset:" FIXTURES_REQUIRED cli_synth
+  ARGS view --fit ${cli_dir}/synth/head_000.ply)
+
+# register --convergence-plot: the RMS per iteration as a PNG chart beside the report, which names it.
+morphreg_cli_test(RegisterWritesConvergencePlot FIXTURES_REQUIRED "cli_small;cli_model" XVFB
+  OUTPUT "wrote .*fit_plot.ply.*fit_plot_convergence.png" REPORT ${cli_dir}/fit_plot.json
+  REPORT_MATCH "\"convergence_plot\": *{[^}]*fit_plot_convergence.png"
+  CHECKS ${cli_scripts}/check_png_pixels.cmake
+  DEFINE PYTHON=${Python3_EXECUTABLE} PNG=${cli_dir}/fit_plot_convergence.png WIDTH=800 HEIGHT=500
+         "PIXEL_CHECKS=--drawn 0.15 0.15 0.9 0.85 0.01"
+  ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --components 5 --iterations 30
+       --quiet --out ${cli_dir}/fit_plot.ply --convergence-plot ${cli_dir}/fit_plot_convergence.png)
+morphreg_cli_test(RegisterConvergencePlotWithoutDisplayFailsEarly EXPECT_CODE 1 ERROR "--convergence-plot.*xvfb-run"
+  FIXTURES_REQUIRED "cli_small;cli_model" ABSENT ${cli_dir}/no_plot.ply ${cli_dir}/no_plot.png
+  PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"
+  ARGS register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --out ${cli_dir}/no_plot.ply
+       --convergence-plot ${cli_dir}/no_plot.png)
+morphreg_cli_test(DemoWritesScreenshot XVFB FIXTURES_SETUP cli_demo_shot OUTPUT "overlay .*demo_shot/overlay.png"
   REPORT ${cli_dir}/demo_shot/report.json FILES ${cli_dir}/demo_shot/overlay.png ${cli_dir}/demo_shot/fitted.ply
   CHECKS ${cli_scripts}/check_png.cmake DEFINE PNG=${cli_dir}/demo_shot/overlay.png WIDTH=400 HEIGHT=300
   ARGS demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --width 400 --height 300
-       --quiet --out ${cli_dir}/demo_shot)
+       --convergence-plot --quiet --out ${cli_dir}/demo_shot)
+# The demo's overlay: the fit coloured by residual beside its colour bar, filling the picture.
+morphreg_command_test(CliTest.DemoOverlayShowsFitAndColourBar FIXTURES_REQUIRED cli_demo_shot
+  COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/overlay.png 400 300
+          --drawn 0.86 0.1 0.98 0.9 0.05 --drawn 0.1 0.1 0.75 0.9 0.4)
+morphreg_command_test(CliTest.DemoConvergencePlotIsDrawn FIXTURES_REQUIRED cli_demo_shot
+  COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/convergence.png 800 500
+          --drawn 0.15 0.15 0.9 0.85 0.01)
 morphreg_cli_test(RegisterScreenshotWithoutDisplayFails FIXTURES_REQUIRED "cli_small;cli_model" EXPECT_CODE 1
   ERROR "xvfb-run" ABSENT ${cli_dir}/no_display.ply ${cli_dir}/no_display.png REPORT ${cli_dir}/no_display.json
   PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"
@@ -409,7 +509,7 @@ morphreg_cli_test(DemoScreenshotWithoutDisplayFailsEarly EXPECT_CODE 1 ERROR "--
 # fit-photos: the small model fitted to the annotated photos of the first head (measured: vertex RMS 1.07 mm against
 # the truth with the joint fit, width RMS 0.20 mm).
 set(small_photos fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json)
-morphreg_cli_test(FitPhotosAgainstTheTruth FIXTURES_REQUIRED "cli_small;cli_model"
+morphreg_cli_test(FitPhotosAgainstTheTruth FIXTURES_REQUIRED "cli_small;cli_model" FIXTURES_SETUP cli_photos
   MAXIMA "vertex RMS against the truth .*photo_0_truth.json: ([0-9.]+) mm=>1.4"
   OUTPUT "wrote .*photos.ply" FILES ${cli_dir}/photos.ply
   REPORT ${cli_dir}/photos.json REPORT_MATCH "\"truth_error_mm\": *{[^}]*\"rms\": [01]\\."
@@ -459,7 +559,7 @@ morphreg_cli_expect_exit(FitPhotosCoefficientLimitMustBePositive 2 "--coefficien
   fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
   --frontal ${cli_dir}/small/photo_0_frontal.json --coefficient-limit 0 --out ${cli_dir}/bad.ply)
 set_tests_properties(CliTest.FitPhotosCoefficientLimitMustBePositive PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
-morphreg_cli_expect_exit(FitPhotosJointNeedsFrontal 1 "0 landmarks fix model vertices; at least 3 are needed"
+morphreg_cli_expect_exit(FitPhotosJointNeedsFrontal 1 "--approach joint needs --frontal"
   fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json --out ${cli_dir}/bad.ply)
 # Bad annotations: a profile facing left, a silhouette of 9 points, frontal landmarks without the nose tip.
 set(silhouette "")
@@ -531,7 +631,7 @@ morphreg_cli_test(SegmentedWarpTakesAnOverlapPerSegment FIXTURES_REQUIRED cli_sm
   FILES ${cli_dir}/warped_segmented.ply
   ARGS ${small_warp} --truth ${cli_dir}/small/head_001.ply --labels ${cli_dir}/small/regions.json
        --overlap 30,30,30,30,30,30,inf --report ${cli_dir}/warp_segmented.json --out ${cli_dir}/warped_segmented.ply)
-morphreg_cli_test(SegmentedWarpTakesABlendWidthPerSegment FIXTURES_REQUIRED cli_small OUTPUT "wrote .*warped_blend.ply"
+morphreg_cli_test(SegmentedWarpTakesABlendWidthPerSegment FIXTURES_REQUIRED cli_small FIXTURES_SETUP cli_warp_blend OUTPUT "wrote .*warped_blend.ply"
   REPORT ${cli_dir}/warp_blend.json REPORT_MATCH "\"blend_width_mm\": *.[^a-z]*0\\.0,[^a-z]*40\\.0"
   FILES ${cli_dir}/warped_blend.ply
   ARGS ${small_warp} --labels ${cli_dir}/small/regions.json --blend 0,0,0,0,0,0,40 --report ${cli_dir}/warp_blend.json
@@ -618,3 +718,25 @@ morphreg_cli_test(WarpMlsBetweenSubjects FIXTURES_REQUIRED cli_mh_joints REQUIRE
   ARGS warp --method mls --mesh ${bodies}/mh_base.ply --units dm --source ${mh_dir}/standing.csv
        --target ${mh_dir}/male.csv --truth ${bodies}/mh_caucasian-male-young.ply --report ${mh_dir}/male.json
        --out ${mh_dir}/male.ply)
+
+# Provenance: every report names the version that wrote it and the command line that made it; a model names them in
+# its metadata.
+function(morphreg_cli_provenance name command fixture)
+  morphreg_command_test(CliTest.ReportHasVersionAndCommandLine.${name} FIXTURES_REQUIRED "${fixture}"
+    COMMAND ${CMAKE_COMMAND} -DCOMMAND=${command} -DVERSION=${PROJECT_VERSION} ${ARGN}
+            -P ${cli_scripts}/check_provenance.cmake)
+endfunction()
+morphreg_cli_provenance(register register cli_fit -DREPORT=${cli_dir}/fit.json)
+morphreg_cli_provenance(synth synth cli_small -DREPORT=${cli_dir}/small/population.json)
+morphreg_cli_provenance(batch_summary register cli_batch_failing -DREPORT=${cli_dir}/batch_failing/summary.json)
+morphreg_cli_provenance(build_model_from_scans build-model cli_from_scans
+  -DREPORT=${cli_dir}/from_scans_scans/summary.json)
+morphreg_cli_provenance(fit_photos fit-photos cli_photos -DREPORT=${cli_dir}/photos.json)
+morphreg_cli_provenance(warp warp cli_warp_blend -DREPORT=${cli_dir}/warp_blend.json)
+morphreg_cli_provenance(resample resample cli_resampled -DREPORT=${cli_dir}/resampled.json)
+morphreg_cli_provenance(evaluate_model evaluate-model "cli_small;cli_model"
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|evaluate-model|--model|${cli_dir}/small_model.h5|--meshes|${cli_dir}/small/head_010.ply|${cli_dir}/small/head_011.ply|--samples|10|--json|--quiet")
+morphreg_cli_provenance(model_info model-info cli_model
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|model-info|--model|${cli_dir}/small_model.h5|--json")
+morphreg_cli_provenance(model_metadata build-model cli_model -DKEY=metadata
+  "-DARGS=$<TARGET_FILE:morphreg_cli>|model-info|--model|${cli_dir}/small_model.h5|--json")

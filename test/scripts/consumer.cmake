@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # PackageTest: morphreg is installed into a temporary prefix, then a tiny external project per component builds
 # against it (find_package(morphreg COMPONENTS <c>), linking morphreg::<c> alone) and runs; one more uses the whole
 # package (morphreg::morphreg). Only the visualization consumer may link VTK's rendering or pcl_visualization, or

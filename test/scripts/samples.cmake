@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # SampleTest: each sample runs on small inputs, writes its files and prints figures within measured bounds; bad
 # arguments give the usage (exit 2) and bad files an error naming them (exit 1). See test/samples/run_sample.cmake.
 if(NOT TARGET sample_register_scan)

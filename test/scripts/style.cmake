@@ -1,7 +1,14 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # StyleTest: the layout rules a reviewer would otherwise check by hand. No function in src/, include/ or python/src/ is longer
-# than 60 lines (scripts/check_function_length.py), and every C++ file is formatted by the project's .clang-format
-# (clang-format from scripts/install-deps.sh).
+# than 60 lines (scripts/check_function_length.py), every C++ file is formatted by the project's .clang-format
+# (clang-format from scripts/install-deps.sh), and every source file names its licence in an SPDX line
+# (scripts/check_spdx.py looks at every file of the tree, so files added later are checked too). docs/cli.md is the
+# built command line's help, as scripts/cli_reference.py writes it.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
+add_test(NAME StyleTest.SpdxLicenceLines
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_spdx.py ${PROJECT_SOURCE_DIR})
+add_test(NAME StyleTest.SpdxCheckerFindsMissingLines
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_spdx.py --self-test)
 add_test(NAME StyleTest.FunctionsAreAtMost60Lines
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_function_length.py --max-lines 60
           ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR}/python/src
@@ -23,3 +30,18 @@ file(GLOB_RECURSE morphreg_formatted_files CONFIGURE_DEPENDS
 add_test(NAME StyleTest.ClangFormat
   COMMAND ${MORPHREG_CLANG_FORMAT} --dry-run --Werror ${morphreg_formatted_files}
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+
+# The citation file and the changelog name the version of project() (setup.py reads it from there too).
+add_test(NAME StyleTest.CitationAndChangelogNameTheVersion
+  COMMAND ${Python3_EXECUTABLE} -c "import re, sys; v = re.escape(sys.argv[1]); \
+assert re.search('^version: ' + v + '$', open(sys.argv[2]).read(), re.M), 'CITATION.cff: no version ' + sys.argv[1]; \
+assert re.search('^## ' + v + ' ', open(sys.argv[3]).read(), re.M), 'CHANGELOG.md: no section ' + sys.argv[1]"
+          ${PROJECT_VERSION} ${PROJECT_SOURCE_DIR}/CITATION.cff ${PROJECT_SOURCE_DIR}/CHANGELOG.md)
+
+# docs/cli.md, the command line reference, is the help of the built executable; the test names the first line that
+# differs and how to regenerate the file.
+if(TARGET morphreg_cli)
+  add_test(NAME StyleTest.CliReferenceIsCurrent
+    COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/cli_reference.py --check $<TARGET_FILE:morphreg_cli>
+            ${PROJECT_SOURCE_DIR}/docs/cli.md)
+endif()

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # RealScanZoo: scripts/real_scan_zoo.sh with one random pose per scan and unit and every depth frame, its targets
 # checked (issue 31): every shared real scan at register's defaults exits 0 with status ok within its face median.
 # Skipped without ../shared/data.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Accuracy bounds that fail when the result they guard is broken: a figure must meet its bound, and the bound must
 // stay within kBoundSlack of the figure, so that a bound far above what the code achieves (one that a no-op or a

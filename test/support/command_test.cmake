@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # morphreg_command_test(<test name> COMMAND <program> <args>...
 #   [EXPECT_CODE n] [SKIP_CODE n] [OUTPUT regex...] [ERROR text...] [FORBID regex] [LOG file] [EMPTY_STDERR]
 #   [MAXIMA "regex=>bound"...] [REPORT file [STATUS s] [REPORT_MATCH regex...]] [FILES file...] [ABSENT path...]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Expecting an error whose message says what and where (the file, line or option), as every morphreg error should.
 #include <gtest/gtest.h>

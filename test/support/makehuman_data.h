@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The MakeHuman bodies of ../shared/data/makehuman_bodies for the warp tests, which skip when the folder is absent.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // How many samples (heads, poses) an accuracy suite runs.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One shared head generator per resolution for a test executable (building one takes a moment).
 #include <morphreg/synthetic/head_generator.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // A fresh directory under the system temp folder, removed with everything in it when the test ends.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Small meshes with known answers for the unit tests.
 #include <morphreg/mesh/triangle_mesh.h>

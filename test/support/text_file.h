@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Writing a small test file from a string, and reading a file back as bytes.
 #include <filesystem>

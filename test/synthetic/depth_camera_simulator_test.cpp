@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The depth-camera simulator against scenes whose depth is known: a wall seen square-on (the axial noise, the
 // quantisation steps, metres and NaN as PCL's grabbers deliver them), a board in front of the wall (the projector's
 // shadow and the flying pixels at its edges), a wall seen obliquely (no return beyond the incidence limit), and a

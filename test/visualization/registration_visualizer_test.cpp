@@ -1,6 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/common/colour_map.h>
+#include <morphreg/visualization/convergence_plot.h>
+#include <morphreg/visualization/layer_toggles.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include "support/temp_directory.h"
@@ -101,7 +104,7 @@ TEST (RegistrationVisualizerTest, HeatMapScreenshotHasTheSizeAndShowsTheHead)
   const Eigen::Vector4d bar = RegistrationVisualizer::colourBarRegion ();
   const double geometry = picture.coverage (0.0, bar[0]);
   std::cout << "head covers " << 100.0 * geometry << "% of the image left of the colour bar\n";
-  EXPECT_GE (geometry, 0.10);
+  EXPECT_GE (geometry, 0.30) << "the head fills the picture left of the bar";
   EXPECT_GT (picture.coverage (bar[0], bar[2]), 0.02) << "the colour bar is drawn";
 }
 
@@ -171,6 +174,74 @@ TEST (RegistrationVisualizerTest, BadInputIsRejected)
   unsetenv ("DISPLAY");
   EXPECT_THROW (RegistrationVisualizer (RegistrationVisualizer::Display::Offscreen), morphreg::Error);
   setenv ("DISPLAY", display.c_str (), 1);
+}
+
+TEST (RegistrationVisualizerTest, LayersHideTheFitWithItsColourBar)
+{
+  morphreg::test::TempDirectory dir;
+  const auto head = generator ().sample (6).mesh;
+  RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
+  viewer.addResidualHeatMap (head, Eigen::VectorXd::LinSpaced (head.numVertices (), 0.0, 4.0), 4.0, "fit");
+  viewer.addTargetCloud (*verticesOf (generator ().sample (7).mesh), "scan");
+  morphreg::LayerToggles layers (viewer);
+  layers.addLayer ("fit", 'm', {"fit"});
+  layers.addLayer ("scan", 't', {"scan"});
+  viewer.resetCamera ();
+  const Eigen::Vector4d bar = RegistrationVisualizer::colourBarRegion ();
+  layers.setVisible ("scan", false);
+  viewer.saveScreenshot (dir.file ("fit.png"), 400, 300);
+  EXPECT_GT (readPng (dir.file ("fit.png")).coverage (bar[0], bar[2]), 0.02) << "the colour bar is drawn";
+  EXPECT_TRUE (layers.toggle ('m'));
+  EXPECT_FALSE (layers.isVisible ("fit"));
+  EXPECT_FALSE (viewer.isVisible ("fit"));
+  viewer.saveScreenshot (dir.file ("hidden.png"), 400, 300);
+  EXPECT_EQ (readPng (dir.file ("hidden.png")).coverage (), 0.0) << "the fit, its bar and the scan are hidden";
+  layers.toggle ('t');
+  viewer.saveScreenshot (dir.file ("scan.png"), 400, 300);
+  EXPECT_GT (readPng (dir.file ("scan.png")).coverage (0.0, bar[0]), 0.05) << "the scan is shown again";
+  EXPECT_LT (readPng (dir.file ("scan.png")).coverage (bar[0], bar[2]), 0.001) << "without the fit's bar";
+  EXPECT_FALSE (layers.toggle ('z'));
+  EXPECT_NE (layers.legend ().find ("m fit (off)"), std::string::npos) << layers.legend ();
+  EXPECT_THROW (layers.addLayer ("points", 'p', {"scan"}), morphreg::InvalidInputError) << "PCL's key";
+  EXPECT_THROW (layers.addLayer ("again", 'm', {"scan"}), morphreg::InvalidInputError) << "taken";
+  EXPECT_THROW (layers.addLayer ("none", 'n', {"no_such_shape"}), morphreg::InvalidInputError);
+  EXPECT_THROW (layers.setVisible ("no_such_layer", true), morphreg::InvalidInputError);
+}
+
+TEST (RegistrationVisualizerTest, OrganisedCloudsShowTheirValidPoints)
+{
+  morphreg::test::TempDirectory dir;
+  pcl::PointCloud<pcl::PointXYZ> frame (40, 30); // organised, as a depth camera delivers it
+  for (int row = 0; row < 30; ++row)
+    for (int column = 0; column < 40; ++column)
+      frame.at (column, row) = column < 10 ? pcl::PointXYZ (NAN, NAN, NAN) : pcl::PointXYZ (column, row, 500.0f);
+  frame.is_dense = false;
+  RegistrationVisualizer viewer (RegistrationVisualizer::Display::Offscreen);
+  viewer.addTargetCloud (frame, "frame", 0, 3.0);
+  viewer.resetCamera ();
+  viewer.saveScreenshot (dir.file ("frame.png"), 320, 240);
+  EXPECT_GT (readPng (dir.file ("frame.png")).coverage (), 0.05);
+  pcl::PointCloud<pcl::PointXYZ> missing (2, 2, pcl::PointXYZ (NAN, NAN, NAN));
+  EXPECT_THROW (viewer.addTargetCloud (missing), morphreg::InvalidInputError) << "no valid point";
+  frame.at (20, 10).z = INFINITY;
+  EXPECT_THROW (viewer.addTargetCloud (frame), morphreg::InvalidInputError) << "infinite is no missing point";
+}
+
+TEST (ConvergencePlotTest, WritesTheRmsPerIteration)
+{
+  morphreg::test::TempDirectory dir;
+  morphreg::IcpReport report;
+  for (int i = 0; i < 25; ++i)
+    report.history.push_back ({i < 8 ? morphreg::IcpStage::similarity : morphreg::IcpStage::shape,
+                               4.0 + 100.0 * std::exp (-0.3 * i), 1000, 900, 0.01});
+  morphreg::saveConvergencePlot (dir.file ("plot.png"), report, "synthetic", 640, 400);
+  const Picture picture = readPng (dir.file ("plot.png"));
+  EXPECT_EQ (picture.width, 640);
+  EXPECT_EQ (picture.height, 400);
+  EXPECT_GT (picture.coverage (0.1, 0.95), 0.01) << "axes, labels and the lines are drawn";
+  EXPECT_THROW (morphreg::saveConvergencePlot (dir.file ("empty.png"), morphreg::IcpReport ()),
+                morphreg::InvalidInputError);
+  EXPECT_THROW (morphreg::saveConvergencePlot (dir.file ("tiny.png"), report, "", 50, 50), morphreg::InvalidInputError);
 }
 
 TEST (ColourMapTest, ViridisRunsFromBlueToYellowAndGreyForNoValue)

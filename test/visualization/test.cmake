@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The visualiser renders through X: run (and list) these tests under a virtual X server, one server at a time.
 if(NOT MORPHREG_XVFB)
   message(FATAL_ERROR "the visualiser's tests need xvfb-run (Debian package xvfb; scripts/install-deps.sh)")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Use case: warp one synthetic head onto another head's landmarks (the foundation's population).
 #include <morphreg/warp/thin_plate_spline.h>
 #include <morphreg/synthetic/head_generator.h>

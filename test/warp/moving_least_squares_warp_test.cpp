@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/makehuman_bodies.h>
 #include <morphreg/warp/moving_least_squares_warp.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The PCL side of ThinPlateSpline: fits from clouds and correspondences, warping clouds and polygon meshes.
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Deterministic landmark sets and warps for the thin plate spline tests.
 #include <Eigen/Core>

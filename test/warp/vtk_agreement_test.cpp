@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Agreement with VTK's thin plate spline (SetBasisToR: U = +r, the same L and right-hand side as ours).
 #include <morphreg/warp/thin_plate_spline.h>
 

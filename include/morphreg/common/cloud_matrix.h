@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file cloud_matrix.h
  *  \brief Point clouds as 3 x N double matrices, the layout the solvers and mesh code work on.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file colour_map.h
  *  \brief The residual colour map: viridis (dark blue-violet = low, yellow = high), perceptually uniform and

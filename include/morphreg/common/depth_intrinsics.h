@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file depth_intrinsics.h
  *  \brief A depth camera's pinhole intrinsics, and a depth image (mm per pixel, 0 where nothing came back) turned

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file distance_statistics.h
  *  \brief Summary statistics of per-vertex distances (mm) for reports, NaN marking a vertex without a value.

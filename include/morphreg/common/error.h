@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file error.h
  *  \brief The morphreg exception hierarchy. Every error names the input and what was wrong with it.

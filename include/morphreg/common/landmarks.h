@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file landmarks.h
  *  \brief The project's landmark vocabulary (docs/landmarks.md) and a named landmark set.

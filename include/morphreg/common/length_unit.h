@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file length_unit.h
  *  \brief Length units of scans (mm, cm, m, inches) and a guess of a scan's unit from its size against a head model.
@@ -45,6 +46,7 @@ struct LengthUnitGuess
   LengthUnit unit = LengthUnit::millimetre; ///< the unit the scan is taken to be in
   double size_ratio = 0.0;                  ///< the scan's size over the model's, both as given
   std::string reason;                       ///< one sentence with the numbers behind the choice
+  bool recognised = true;                   ///< false when no unit gives the expected size (the unit is then mm)
 };
 
 /** \brief Guesses the unit of \a points (3 x N) from their size against a head model's, \a model_radius_mm (the RMS
@@ -62,14 +64,36 @@ struct LengthUnitGuess
  *  recognised in every unit; a wider head-and-shoulders scan (over 1.88) in inches is taken for cm, and a face alone
  *  (about 0.5) is recognised in mm and m but taken for inches in cm: give the unit in those cases.
  *
+ *  A depth camera's view (\a one_view: an organised cloud) is read in mm or m only (depth images hold mm, PCL's
+ *  grabbers deliver metres) and may be up to 40 times the model (the room around the person).
+ *
  *  \param[in] points the scan's points, 3 x N, in their file's unit
  *  \param[in] model_radius_mm the model's RMS radius in mm
+ *  \param[in] one_view whether the scan is one depth camera's view
 
  *  \return the unit, r and one sentence with the numbers, e.g. "the scan's RMS radius is 0.128 against the model's
  *  104 mm: taken as m (x1000 to mm), it is 1.23 times the model".
  *  Throws InvalidInputError for fewer than 4 or non-finite points, or a non-positive model radius.
  */
 LengthUnitGuess
-guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm);
+guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm, bool one_view = false);
+
+/** \brief A head model's RMS radius in mm (the distance of its mean's vertices from their centroid): the size
+ *  guessModelUnit expects. ICT-FaceKit's head and neck have 95 mm, the synthetic heads about 90 mm. */
+constexpr double kHeadModelRadiusMm = 100.0;
+
+/** \brief Guesses the unit of a shape model's mean (3 x N) that does not state it (a statismo file), from its RMS
+ *  radius r in the file's numbers: read in mm, cm or m, the reading closest in log10 to a head model's
+ *  kHeadModelRadiusMm wins, so r above 31.6 is mm, 1 to 31.6 cm and below 1 m. Heads (about 100 mm), faces alone
+ *  (about 60 mm) and whole bodies in mm or m (about 500 mm) are recognised; a body in cm (r about 50) is taken for mm,
+ *  so such a model must state its unit. When even the best unit puts the model outside 0.1-30 times a head model's
+ *  radius (r below 0.01 or above 3000, e.g. micrometres), it is not recognised.
+ *  \param[in] mean the model's mean vertices, 3 x N, in their file's unit
+ *  \return the unit, r over kHeadModelRadiusMm, one sentence with the numbers (e.g. "the mean's RMS radius is 0.0951:
+ *  taken as m (x1000 to mm), it is 0.951 times a head model's 100 mm"), and whether it was recognised.
+ *  Throws InvalidInputError for fewer than 3 or non-finite vertices.
+ */
+LengthUnitGuess
+guessModelUnit (const Eigen::Matrix3Xd& mean);
 
 } // namespace morphreg

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file order_statistics.h
  *  \brief Medians, percentiles and trimmed means of samples: the robust statistics the estimators and reports use.

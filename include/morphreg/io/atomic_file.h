@@ -1,9 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file atomic_file.h
  *  \brief Writing a file so that readers see it whole or not at all: written under a temporary name in the same
  *  folder, then renamed (atomic on POSIX file systems). A run killed mid-write leaves only the temporary file,
  *  so a resumed batch can trust every output it finds.
  */
+#include <morphreg/io/output_transaction.h>
+
 #include <cstdio>
 #include <string>
 
@@ -25,7 +28,8 @@ void
 commitPartial (const std::string& partial, const std::string& path);
 
 /** \brief Writes \a path atomically: \a write (a callable taking the file name to write) writes partialPath(path),
- *  which is then renamed to \a path; if \a write throws, the partial file is removed and the error passed on.
+ *  which is then renamed to \a path, or, when an open OutputTransaction covers \a path, left for its commit; if
+ *  \a write throws, the partial file is removed and the error passed on.
  *  \param[in] path the file to write
  *  \param[in] write called with the temporary file name; writes the whole file there
  */
@@ -42,7 +46,8 @@ writeAtomically (const std::string& path, Write write)
     std::remove (partial.c_str ());
     throw;
   }
-  commitPartial (partial, path);
+  if (!OutputTransaction::stage (path))
+    commitPartial (partial, path);
 }
 
 /** \brief Throws IoError naming \a path if \a written, a mesh or cloud file that PCL has just written, is incomplete

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file cloud_io.h
- *  \brief Reading and writing point clouds (PCD, PLY, OBJ; STL and OFF meshes read as their vertices) of any PCL
- *  point type, with errors that name the file.
+ *  \brief Reading and writing point clouds (PCD, PLY, OBJ; STL, OFF and glTF/GLB meshes read as their vertices) of
+ *  any PCL point type, with errors that name the file.
  */
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -10,8 +11,9 @@
 
 namespace morphreg
 {
-/** \brief Loads a cloud (.pcd, .ply, .obj, .stl or .off; for a mesh file, its vertices). Throws IoError if the file
- *  is missing or unreadable, FormatError if it has no points.
+/** \brief Loads a cloud (.pcd, .ply, .obj, .stl, .off, .gltf or .glb; for a mesh file, its vertices; glTF's metres
+ *  converted to mm, its colours kept, see gltf_reader.h). Throws IoError if the file is missing or unreadable,
+ *  FormatError if it has no points.
  *  \param[in] path the file
  *  \return the cloud, fields the file lacks left at their defaults
  */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file depth_image_io.h
  *  \brief Depth images as depth cameras save them: a 16-bit greyscale PNG of depths in mm (0 = no depth), and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file field_precision.h
  *  \brief Double-precision fields of a loaded cloud narrowed to float, so that PCL's point types receive them:

@@ -1,20 +1,30 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file file_checks.h
  *  \brief Small checks shared by the readers and writers: clear errors before a library reader fails obscurely.
  */
 #include <morphreg/common/error.h>
 
+#include <cstdint>
 #include <exception>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace morphreg
 {
-/** \brief Throws IoError naming \a path if it does not exist, is a directory, or cannot be opened for reading.
+/** \brief The largest text file (JSON, CSV, landmarks, manifests, photo annotations) morphreg reads: 256 MiB, far
+ *  above any real one, so that a wrong file (a device, a disk image) is refused before it is read into memory. */
+constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t (256) << 20;
+
+/** \brief Throws IoError naming \a path if it does not exist, is a directory or not a regular file (a FIFO, a device
+ *  or a socket, which a reader would wait on or read without end), or cannot be read; FormatError if it is empty
+ *  or larger than \a max_bytes. Nothing is opened before the checks, so a FIFO never blocks.
  *  \param[in] path the file to check
+ *  \param[in] max_bytes the largest size accepted
  */
 void
-requireReadableFile (const std::string& path);
+requireReadableFile (const std::string& path, std::uintmax_t max_bytes = std::numeric_limits<std::uintmax_t>::max ());
 
 /** \brief Throws IoError naming \a path if a file cannot be written there: its folder is missing, is not a folder or
  *  is not writable, or \a path is itself a folder. Run before long work, so that a bad output path fails at once.
@@ -22,14 +32,6 @@ requireReadableFile (const std::string& path);
  */
 void
 requireWritableOutput (const std::string& path);
-
-/** \brief Throws InvalidInputError if \a output is the same file as one of \a inputs (by path or hard link): writing
- *  it would destroy that input.
- *  \param[in] output the file to be written
- *  \param[in] inputs the files the run reads (empty names are skipped)
- */
-void
-requireNotAnInput (const std::string& output, const std::vector<std::string>& inputs);
 
 /** \brief Lower-case extension of \a path including the dot (".ply"), or "" if none.
  *  \param[in] path a file name

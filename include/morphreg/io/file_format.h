@@ -1,8 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file file_format.h
  *  \brief Recognising a mesh or cloud file's format from its content, so that a file whose name lies (a PLY renamed
  *  to .pcd) is never handed to the wrong library reader.
  */
+#include <morphreg/common/length_unit.h>
+
+#include <optional>
 #include <string>
 
 namespace morphreg
@@ -17,6 +21,8 @@ enum class FileFormat
   StlBinary, ///< binary STL: 80 header bytes, a triangle count N, and exactly 50 bytes per triangle
   VtkLegacy, ///< VTK's legacy format: starts with "# vtk DataFile Version"
   Off,       ///< Object File Format: starts with the word OFF (or a variant such as COFF)
+  Gltf,      ///< glTF 2.0 as JSON text (.gltf): starts with '{' (after white space or a byte order mark)
+  Glb,       ///< binary glTF 2.0 (.glb): starts with the magic bytes "glTF"
   Unknown    ///< none of the above
 };
 
@@ -28,18 +34,27 @@ enum class FileFormat
 FileFormat
 sniffFileFormat (const std::string& path);
 
-/** \brief The format's name for messages: "PLY", "PCD", "OBJ", "STL", "VTK", "OFF" or "unknown".
+/** \brief The format's name for messages: "PLY", "PCD", "OBJ", "STL", "VTK", "OFF", "glTF", "GLB" or "unknown".
  *  \param[in] format the format
  *  \return its name
  */
 std::string
 fileFormatName (FileFormat format);
 
-/** \brief The extension, with its dot, that files of \a format have (".ply", ".stl", ...; "" for Unknown).
+/** \brief The extension, with its dot, that files of \a format have (".ply", ".stl", ".gltf", ".glb", ...; "" for
+ *  Unknown).
  *  \param[in] format the format
  *  \return the extension
  */
 std::string
 fileFormatExtension (FileFormat format);
+
+/** \brief The length unit \a format fixes by specification, which morphreg's reader converts to mm: the metre for
+ *  glTF and GLB; none for the formats that leave the unit to the file's writer (PLY, PCD, OBJ, STL, VTK, OFF).
+ *  \param[in] format the format
+ *  \return the unit, or none
+ */
+std::optional<LengthUnit>
+specifiedLengthUnit (FileFormat format);
 
 } // namespace morphreg

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file file_validation.h
  *  \brief Structural checks of mesh and cloud files before PCL's or VTK's readers see them: the format recognised from
@@ -21,6 +22,9 @@
  *    TRIANGLE_STRIPS have consistent sizes (the classic layout or OFFSETS/CONNECTIVITY) and indices below n; the
  *    attributes after them (NORMALS, SCALARS, FIELD, ...) hold the values their headers claim.
  *  - OFF: read by morphreg's own reader, which checks every count, coordinate and index as it reads.
+ *  - glTF and GLB: read by readGltfFile (gltf_reader.h), which checks the GLB header and chunks against the file,
+ *    the JSON, buffers and buffer views before tinygltf parses it, then every accessor, index, node and Draco payload
+ *    as it reads.
  */
 #include <morphreg/io/file_format.h>
 
@@ -40,8 +44,8 @@ validateGeometryFile (const std::string& path);
 
 /** \brief The loaders' gate: \a path must be a readable file with one of the \a allowed extensions, whose content is
  *  the format its extension names (a PLY named .pcd is a FormatError that says so), and which passes
- *  validateGeometryFile(). OFF, PCD and VTK files are only recognised here: morphreg's readers of them check
- *  them as they read.
+ *  validateGeometryFile(). OFF, PCD, VTK, glTF and GLB files are only recognised here: morphreg's readers of
+ *  them check them as they read.
  *  \param[in] path the file
  *  \param[in] allowed the accepted extensions, space-separated, with their dots (e.g. ".ply .obj")
  *  \param[in] what what the file should hold (e.g. "mesh"), for the messages

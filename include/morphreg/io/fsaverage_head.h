@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file fsaverage_head.h
  *  \brief Import of MNE-Python's fsaverage scalp surface as shipped in ../shared/data/mne_fsaverage_head:

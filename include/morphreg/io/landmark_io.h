@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file landmark_io.h
  *  \brief Landmark files: MeshLab PickedPoints (.pp), JSON (.json: morphreg's or scalismo's array layout), CSV
@@ -18,6 +19,8 @@
 #include <Eigen/Core>
 
 #include <map>
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -88,6 +91,14 @@ loadLandmarkPixels (const std::string& path, const std::vector<std::string>& exp
  */
 void
 saveLandmarks (const std::string& path, const LandmarkPositions& landmarks);
+
+/** \brief The JSON document saveLandmarkPixels() writes for \a pixels (a file's content to extend before writing it).
+ *  \param[in] pixels the landmarks, in pixels
+ *  \param[in] path the file it is meant for, for messages
+ *  \return the document
+ */
+nlohmann::json
+landmarkPixelsJson (const LandmarkPixels& pixels, const std::string& path);
 
 /** \brief Writes 2D pixel landmarks as .json or .csv, in the order of knownLandmarkIds().
  *  \param[in] path the file; its extension chooses the format

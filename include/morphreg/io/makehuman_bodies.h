@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file makehuman_bodies.h
  *  \brief Reader for the MakeHuman body set (../shared/data/makehuman_bodies): three subjects standing and seated in

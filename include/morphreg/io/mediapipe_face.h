@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mediapipe_face.h
  *  \brief Import of MediaPipe's canonical face mesh (../shared/data/mediapipe_canonical_face/canonical_face_model.obj,

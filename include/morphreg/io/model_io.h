@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file model_io.h
  *  \brief MorphableModel files: HDF5 in the statismo v0.9 layout (readable by statismo/scalismo tools as a
@@ -19,6 +20,10 @@
 
 namespace morphreg
 {
+/** \brief The metadata key under which loadModel and loadStatismoModel record the file's unit and how it is known,
+ *  e.g. "mm (the file's units)" or "m (guessed from its size: ...); converted to mm on loading". */
+constexpr const char* kFileUnitsKey = "file_units";
+
 /** \brief Writes \a model to \a path (HDF5, usually .h5), whole or not at all (a temporary file renamed when
  *  complete); throws IoError naming the file on failure.
  *  \param[in] path the model file
@@ -29,8 +34,12 @@ saveModel (const std::string& path, const MorphableModel& model);
 
 /** \brief Loads a model file: the full multi-region model if the file has a /morphreg group, otherwise the
  *  statismo-layout global PCA model found at the root or under the Basel Face Model 2017 prefix "shape/".
- *  Throws IoError for a missing file, FormatError naming the file, the dataset and the problem for anything
- *  corrupt (missing dataset, wrong dimensions, non-finite values, out-of-range indices, truncated file).
+ *  The model is returned in mm whatever the file's unit: a morphreg file states it (/morphreg/units: mm, cm, dm, m
+ *  or in), a statismo file does not, so its unit is guessed from the mean's size (guessModelUnit: a model in m or cm
+ *  is recognised); coordinates are converted, variances by the square, and metadata()[kFileUnitsKey] says what was
+ *  found and done. Throws IoError for a missing file, FormatError naming the file, the dataset and the problem for
+ *  anything corrupt (missing dataset, wrong dimensions, non-finite values, out-of-range indices, truncated file), a
+ *  units dataset that names no length unit, or a statismo model whose size fits no unit (e.g. micrometres).
  *  \param[in] path the model file
  *  \return the model
  */
@@ -39,7 +48,8 @@ loadModel (const std::string& path);
 
 /** \brief Loads the statismo-layout model under \a prefix ("" for the root, "shape" for BFM-2017 files).
  *  statismo v0.8 files (minorVersion 8) store the basis scaled by the standard deviations; it is normalised on
- *  import. A file without a version group is read as v0.9. Coordinates are taken to be in millimetres. The
+ *  import. A file without a version group is read as v0.9. The unit is guessed from the mean's size and the model
+ *  converted to mm (as loadModel). The
  *  landmarks of a BFM-2017 file's metadata/landmarks/json (scalismo's layout, ids translated by
  *  fromBfmLandmarkId()) become the model's, each on the mean vertex nearest to it.
  *  \param[in] path the model file

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file npy_reader.h
  *  \brief A validating reader for NumPy .npy files holding little-endian float32 arrays (the shared data's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file pcd_reader.h
  *  \brief morphreg's own reader of PCL's PCD files (DATA ascii, binary and binary_compressed), used by loadCloud()

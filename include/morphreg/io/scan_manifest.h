@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_manifest.h
  *  \brief The list of scans of a study (`register --scans`, `build-model --from-scans`): a manifest CSV or a
@@ -39,7 +40,7 @@ using ScanManifest = std::vector<ScanEntry>;
 ScanManifest
 loadScanManifest (const std::string& path);
 
-/** \brief Every scan file (.pcd .ply .obj .stl .off) directly in \a directory, sorted by name, each with the
+/** \brief Every scan file (.pcd .ply .obj .stl .off .gltf .glb) directly in \a directory, sorted by name, each with the
  *  landmark file `<name>_landmarks.{json,pp,csv,pts}` beside it if there is one. Throws IoError if \a directory
  *  is missing, FormatError if it holds no scan or two scans share a name.
  *  \param[in] directory the folder of scans

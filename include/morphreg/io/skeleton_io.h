@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file skeleton_io.h
  *  \brief Skeleton files (JSON): the bones of an ArticulatedWarp, by joint names.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file cotangent_weights.h
  *  \brief The cotangent weights of a triangle mesh's edges, the usual discretisation of the Laplace-Beltrami

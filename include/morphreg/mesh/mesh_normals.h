@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mesh_normals.h
  *  \brief Face and area-weighted vertex normals of a triangle mesh, and the plane (normal) of a point neighbourhood.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mesh_topology.h
  *  \brief Vertex adjacency, edges with their faces, boundaries, k-ring growth and edge-graph geodesics.

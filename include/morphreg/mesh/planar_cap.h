@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file planar_cap.h
  *  \brief Finds a flat cap that closes a surface, such as the plane that closes an MRI scalp surface below the

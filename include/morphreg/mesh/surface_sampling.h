@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file surface_sampling.h
  *  \brief Random points spread uniformly by area over a triangle mesh (evaluation samples, simulated scans).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file triangle_locator.h
  *  \brief Closest point on a triangle mesh (point-to-triangle, not point-to-vertex) with a bounding volume

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file triangle_mesh.h
  *  \brief A plain triangle mesh (Eigen matrices, millimetres) used by the numerics; convertible to pcl::PolygonMesh.

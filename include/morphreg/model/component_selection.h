@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file component_selection.h
  *  \brief Which PCA components of each region take part in a fit, and where they sit in the stacked

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file ict_region_model.h
  *  \brief The thesis's 7-region model built from the ICT-FaceKit head model, which ships no region labels.

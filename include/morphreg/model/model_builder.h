@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file model_builder.h
  *  \brief Builds a (multi-region) MorphableModel from training meshes in correspondence (docs/method.md,
@@ -57,6 +58,16 @@ public:
    */
   MorphableModel::Ptr
   build (const std::vector<TriangleMesh>& meshes, const RegionLabels& regions) const;
+
+  /** \brief About how many bytes building a model from \a meshes meshes of \a vertices vertices allocates at its
+   *  peak: the meshes, their centred data matrix and the Gram matrix of the PCA. For requireMemory()
+   *  (memory_budget.h) before the meshes are made or read.
+   *  \param[in] meshes the number of training meshes
+   *  \param[in] vertices the vertices of each
+   *  \return bytes
+   */
+  static double
+  memoryEstimate (std::size_t meshes, Eigen::Index vertices);
 
   /** \brief The builder's settings.
    *  \return the settings given at construction

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file model_quality.h
  *  \brief The standard measures of a shape model's quality (Styner et al. 2003, as statismo and scalismo report

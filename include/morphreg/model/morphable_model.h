@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file morphable_model.h
  *  \brief The multi-region statistical shape model of docs/method.md ("The multi-region

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file pca.h
  *  \brief Principal component analysis of a centred data matrix (one training shape per column), by a thin SVD

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file procrustes.h
  *  \brief Generalised Procrustes alignment of shapes in correspondence (rigid: rotation and translation).

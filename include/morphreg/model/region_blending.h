@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file region_blending.h
  *  \brief Overlapping, blended regions grown from a vertex partition (thesis section 3.4).

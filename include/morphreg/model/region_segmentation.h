@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file region_segmentation.h
  *  \brief Region labels of a mesh (one region per vertex) and their construction from landmark groups, for

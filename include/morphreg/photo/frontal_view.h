@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file frontal_view.h
  *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of docs/landmarks.md) in pixels.

@@ -76,8 +76,10 @@ struct PhotoFitView
  */
 struct PhotoFit
 {
-  ComponentSelection selection;                            ///< the components of \a coefficients
-  Eigen::VectorXd coefficients;                            ///< shape coefficients (mm along the orthonormal basis)
+  ComponentSelection selection; ///< the components of \a coefficients
+  /** \brief Shape coefficients in prior standard deviations (statismo's unit; docs/coefficients.md). */
+  Eigen::VectorXd coefficients;
+  Eigen::VectorXd coefficients_mm;                         ///< the same as lengths: mm along the orthonormal basis
   double scale = 1.0;                                      ///< s: world units per model millimetre
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity (); ///< R
   Eigen::Vector3d translation = Eigen::Vector3d::Zero ();  ///< t, world units
@@ -90,20 +92,19 @@ struct PhotoFit
    *  error returns its starting profile fit, and says "profile" here. */
   std::string returned;
   int tps_rounds = 0;                         ///< TPS-ICP rounds whose result was kept (0 for the other fits)
-  Eigen::VectorXd coefficient_sigmas;         ///< the coefficients in prior standard deviations (stacked like them)
   std::vector<std::string> ignored_landmarks; ///< outline landmarks left out (PhotoFitting::setOutlineLandmarkWeight)
   std::vector<PhotoFitView> views;            ///< per photo: camera, constraints, hair
   ShapePriorChoice prior;                     ///< how lambda_2 was chosen
 
   /** \brief The largest |coefficient| in prior standard deviations (0 without components).
-   *  \return the largest |coefficient_sigmas| entry
+   *  \return the largest |coefficients| entry
    */
   double
   maxCoefficientSigma () const;
 
   /** \brief The shape's Mahalanobis distance from the mean head: the norm of the coefficients in prior standard
    *  deviations.
-   *  \return the norm of coefficient_sigmas
+   *  \return the norm of coefficients
    */
   double
   shapeDistance () const;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_normalisation.h
  *  \brief The normalised photo frame of docs/method.md ("Fitting to two orthogonal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_view_io.h
  *  \brief JSON files of the annotated photos of the two-view fit (layouts in README.md, "Photo annotations").
@@ -16,7 +17,7 @@
 #include <morphreg/photo/frontal_view.h>
 #include <morphreg/photo/photo_view.h>
 #include <morphreg/photo/profile_view.h>
-#include <morphreg/photo/rgb_image.h>
+#include <morphreg/io/rgb_image.h>
 
 #include <optional>
 #include <string>

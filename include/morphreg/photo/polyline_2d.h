@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file polyline_2d.h
  *  \brief Closest points on a 2D polyline (the profile silhouette of the two-view fit).

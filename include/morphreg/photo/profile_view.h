@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file profile_view.h
  *  \brief A profile (side) photo annotated for the two-view fit: the head's silhouette as a polyline and the nose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file cached_correspondence_estimation.h
  *  \brief Nearest-neighbour correspondences as pcl::registration::CorrespondenceEstimation finds them, with the k-d

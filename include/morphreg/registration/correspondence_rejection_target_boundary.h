@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file correspondence_rejection_target_boundary.h
  *  \brief Rejects correspondences whose target point lies on the target surface's boundary.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file fit_plausibility.h
  *  \brief Whether a finished head fit is believable, so that a failed registration is never silent. A fit is judged
@@ -32,7 +33,7 @@ struct FitMeasures
    *  measured. The head points are those the fitted surface covers (their closest fitted point is not on its
    *  boundary) within 25 mm of it: farther ones are other things (a wall, a chair, the body, hair spikes). */
   double explained_share = 1.0;
-  int scored_points = 0; ///< the scan's head points scored for explained_share
+  int scored_points = 0;     ///< the scan's head points scored for explained_share
   double folded_share = 0.0; ///< share of the surface (by the mean's areas) turned over against the mean's
   IcpDivergence divergence = IcpDivergence::none; ///< what diverged, if anything
   std::string divergence_message;                 ///< the divergence's sentence

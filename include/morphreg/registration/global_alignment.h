@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file global_alignment.h
  *  \brief A landmark-free start for MorphableICP from any rotation, on scans that hold more than the head
@@ -9,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,10 @@ struct GlobalAlignmentSettings
   int screen_iterations = 8;      ///< iterations every refined pose runs before only the best 3 go on
   double inlier_fraction = 0.7;   ///< share of the closest pairs kept in each similarity ICP step
   double truncation_ratio = 0.15; ///< distances are truncated at this share of the model's radius in the scores
+  /** Where the sensor of a one-view scan stood (scan frame), e.g. a depth camera's origin: only the model surface
+   *  facing it is expected on the scan, so a profile or a face alone is not penalised for the side it cannot show.
+   *  Unset: the scan may show the head from every side. */
+  std::optional<Eigen::Vector3d> viewpoint;
 };
 
 /** \brief The pose found by alignHeadGlobally, how sure it is and how it was chosen. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file initial_alignment.h
  *  \brief Starting similarities for MorphableICP: from landmark pairs (Umeyama), or a coarse guess from centroids,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file iteration_progress.h
  *  \brief Progress of a running MorphableICP fit, one call per iteration with its correspondences and their RMS

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file morphable_convergence.h
  *  \brief When MorphableICP's phases stop, in the spirit of pcl::registration::DefaultConvergenceCriteria.
@@ -15,10 +16,12 @@ namespace morphreg
  *  mean squared vertex motion of an update below the motion epsilon or the change of the cost per row below the
  *  fitness epsilon (converged); and the divergence rules: the normal equations could not be solved, a coefficient
  *  left the prior (more than max_sigma standard deviations) or, where the phase checks it, the cost per row stayed
- *  above 1.05 times the phase's best for rising_iterations iterations in a row.
+ *  above 1.05 times the phase's best for rising_iterations iterations in a row. Where the best is scored on the
+ *  current rows (checkCost's second argument), a phase whose cost has not improved on its best by 0.1 % for
+ *  rising_iterations iterations in a row has settled: fitness_converged.
  *
- *  Per iteration: checkCost with the cost at the current state (improved() then says whether it is the phase's
- *  best), the step, update; hasConverged() ends the phase.
+ *  Per iteration: checkCost with the cost at the current state and at the phase's best on the same rows (improved()
+ *  then says whether the current state is the better one), the step, update; hasConverged() ends the phase.
  */
 class MorphableConvergence
 {
@@ -51,10 +54,13 @@ public:
 
   /** \brief Records the cost per row at the state about to be updated.
    *  \param[in] cost the cost per row (mm^2) at the current state
+   *  \param[in] best_cost the phase's best state scored on the same rows (NaN: the best cost recorded so far). The
+   *  rows change with every correspondence search, and rejectors admit more of them as a fit improves, so only a
+   *  comparison on the same rows says whether the state got worse.
    *  \return false if it diverged (the cost rose too often)
    */
   bool
-  checkCost (double cost);
+  checkCost (double cost, double best_cost = std::numeric_limits<double>::quiet_NaN ());
 
   /** \brief Whether the last checkCost was the phase's best.
    *  \return true if the state just checked is the best of the phase, the one to keep
@@ -150,6 +156,7 @@ private:
   bool check_rising_ = false;
   Eigen::VectorXd sigma_;
   int rising_ = 0;
+  int stalled_ = 0; ///< iterations in a row without progress on the best, compared on the same rows
   bool improved_ = false;
   double best_cost_ = std::numeric_limits<double>::infinity ();
   double previous_cost_ = std::numeric_limits<double>::infinity ();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file morphable_icp.h
  *  \brief ICP with shape parameters (docs/method.md, "ICP with shape parameters"): registers a scan to a
@@ -6,6 +7,7 @@
 #include <morphreg/common/landmarks.h>
 #include <morphreg/common/length_unit.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/registration/correspondence_rejection_normal_compatibility.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
 #include <morphreg/registration/morphable_convergence.h>
 #include <morphreg/registration/pose_shape_least_squares.h>
@@ -84,7 +86,7 @@ enum class IcpInitialisation
  *  icp.setTargetLandmarks (marked);                        // optional: >= 3 start with Umeyama
  *  pcl::PointCloud<pcl::PointNormal> fitted;
  *  icp.align (fitted);                                     // identity guess: landmarks or coarse start
- *  Eigen::VectorXd m = icp.getShapeCoefficients ();
+ *  Eigen::VectorXd sd = icp.getShapeCoefficients ();       // prior standard deviations (statismo's unit)
  *  pcl::PolygonMesh mesh = icp.getFittedMesh ();
  *  \endcode
  */
@@ -298,6 +300,38 @@ public:
     return boundary_rejector_;
   }
 
+  /** \brief Where the sensor of a one-view target stood (target frame and unit), which estimated target normals
+   *  face; unset (the default): the origin of an organised target cloud, else none, and estimated normals face away
+   *  from the target's centre (see TargetSurface::setViewpoint).
+   *  \param[in] viewpoint the sensor's position, or std::nullopt
+   */
+  void
+  setTargetViewpoint (std::optional<Eigen::Vector3d> viewpoint)
+  {
+    viewpoint_ = viewpoint;
+    target_prepared_ = false;
+  }
+
+  /** \brief Whether the default rejector chain also holds getNormalCompatibilityRejector (on by default) and its
+   *  largest angle between a model vertex's normal and its target point's (degrees, default 60).
+   *  \param[in] enabled whether the default chain rejects correspondences whose normals disagree
+   *  \param[in] max_angle_deg the largest angle kept (0 to 180)
+   */
+  void
+  setRejectIncompatibleNormals (bool enabled, double max_angle_deg = 60.0);
+
+  /** \brief The rejector of correspondences whose normals disagree, on this registration's target surface (its
+   *  normals given by the scan, or estimated and turned outwards: towards the sensor of an organised cloud, else away
+   *  from the scan's centre). After getTargetBoundaryRejector in the default chain; a chain of
+   *  addCorrespondenceRejector replaces the default, so add both to keep them.
+   *  \return the normal-compatibility rejector bound to this registration's target surface
+   */
+  CorrespondenceRejectorNormalCompatibility::Ptr
+  getNormalCompatibilityRejector () const
+  {
+    return normal_rejector_;
+  }
+
   /** \brief Residuals against each target point projected onto the least-squares plane of its neighbourhood
    *  (the k of setRejectTargetBoundary) instead of the raw point: scan noise then averages out instead of pulling
    *  the model towards the nearest noisy points. Automatic by default: on for noisy targets (depth cameras), off for
@@ -366,11 +400,22 @@ public:
 
   // ---- results --------------------------------------------------------------------------------------------
 
-  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()).
-   *  \return the coefficients (mm along the orthonormal basis)
+  /** \brief Shape coefficients of the last align() (stacked like getComponentSelection()) in prior standard
+   *  deviations, as statismo, scalismo, BFM and eos read them (see docs/coefficients.md).
+   *  \return the coefficients: each one's length divided by its component's prior standard deviation
    */
   const Eigen::VectorXd&
   getShapeCoefficients () const
+  {
+    return coefficients_sd_;
+  }
+
+  /** \brief Shape coefficients of the last align() as lengths: mm along the model's orthonormal components, what
+   *  MorphableModel::generate takes (stacked like getComponentSelection()).
+   *  \return the coefficients (mm)
+   */
+  const Eigen::VectorXd&
+  getShapeCoefficientsMm () const
   {
     return coefficients_;
   }
@@ -548,6 +593,9 @@ private:
   bool area_weighting_ = false;
   Eigen::VectorXd vertex_area_weights_; ///< per model vertex, mean 1 (setModel)
   bool reject_boundary_ = true;
+  bool reject_incompatible_normals_ = true;
+  std::optional<Eigen::Vector3d> viewpoint_;        ///< setTargetViewpoint's
+  std::optional<Eigen::Vector3d> target_viewpoint_; ///< the viewpoint in force for the prepared target
   double max_sigma_ = 8.0;
   int rising_iterations_ = 3;
   LandmarkPositions landmarks_;
@@ -558,10 +606,12 @@ private:
   TargetSurface::Ptr target_surface_;
   bool target_prepared_ = false;
   CorrespondenceRejectorTargetBoundary::Ptr boundary_rejector_;
+  CorrespondenceRejectorNormalCompatibility::Ptr normal_rejector_;
   std::vector<pcl::registration::CorrespondenceRejector::Ptr> chain_; ///< the rejectors of this align()
   std::vector<PoseShapeRow> landmark_rows_;
 
-  Eigen::VectorXd coefficients_;
+  Eigen::VectorXd coefficients_;    ///< mm along the components
+  Eigen::VectorXd coefficients_sd_; ///< the same in prior standard deviations
   Eigen::Matrix3Xd fitted_vertices_;
   Eigen::VectorXd vertex_residuals_;
   IcpReport report_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file pose_shape_least_squares.h
  *  \brief The Gauss-Newton solver of every fit of X = s R (mu + M m) + t to weighted point rows: MorphableICP,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_report.h
  *  \brief What a MorphableICP run did: why it stopped, every iteration, and the fit quality it reached.

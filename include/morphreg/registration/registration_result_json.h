@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_result_json.h
  *  \brief A finished MorphableICP fit as JSON: its verdict, similarity, coefficients per region, residuals,
@@ -41,7 +42,8 @@ nlohmann::json
 similarityJson (const Eigen::Matrix4d& transform);
 
 /** \brief The JSON of \a icp's finished fit of \a model: "status" ("ok" or "failed") and "checks"
- *  (checkRegistration, with the measures), "initialisation", "similarity", "initial_similarity", "coefficients" (per region name),
+ *  (checkRegistration, with the measures), "initialisation", "similarity", "initial_similarity", "coefficients" (per region name, in prior
+ *  standard deviations; "coefficients_unit" says so) and "coefficients_mm" (the same as lengths),
  *  "residuals_mm" (scan to model over the correspondences; "per_vertex" statistics), "iterations" and
  *  "termination". Callers add what they know of the scan, the model file and the outputs.
  *  \param[in] icp a registration after align()

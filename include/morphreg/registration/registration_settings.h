@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_settings.h
  *  \brief The settings of a scan registration by their command-line names (`morphreg register --iterations ...`),
@@ -86,7 +87,7 @@ requireValidSettings (const RegistrationSettings& settings);
  */
 void
 configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& settings,
-                       const MorphableModel::Ptr& model);
+                       const MorphableModel::ConstPtr& model);
 
 /** \brief The settings as the JSON object of registration reports (keys with their units, e.g.
  *  "max_correspondence_distance_mm").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file robust_kernels.h
  *  \brief The robust (IRLS) kernels of the registrations: weights of residual distances and their automatic width.

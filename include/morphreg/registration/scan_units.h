@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_units.h
  *  \brief A scan brought to millimetres before a registration: its unit given or guessed from its size against the
@@ -20,10 +21,12 @@ namespace morphreg
  *  \param[in] units the scan's unit, or "auto"
  *  \param[in] model the model it will be registered to (mm)
  *  \param[in] scan_name the scan's name for messages (its file)
+ *  \param[in] one_view whether the scan is one depth camera's view (see guessLengthUnit); an organised \a scan is
+ *  one in any case
  *  \return the unit used, the size ratio and why
  */
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
-                          const MorphableModel& model, const std::string& scan_name);
+                          const MorphableModel& model, const std::string& scan_name, bool one_view = false);
 
 } // namespace morphreg

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file surface_distance.h
  *  \brief How close a fitted model surface lies to a target surface without known correspondence, the accuracy

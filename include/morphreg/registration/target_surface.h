@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file target_surface.h
  *  \brief The registration target as a surface: per point its neighbourhood's plane, the point projected onto it
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <memory>
 #include <vector>
 
@@ -32,7 +34,7 @@ constexpr double kNoisyTargetRatio = 0.15;
 /** \brief Computed lazily, once per target point when it first becomes a correspondence: the \a k nearest
  *  neighbours' least-squares plane; the point projected onto it (with smoothing; scan noise then averages out instead
  *  of pulling a fit towards the nearest noisy points); the target's own normal where it has a valid one, else the
- *  plane's; and the boundary flag: the largest angular gap between the neighbours around the point, in that plane,
+ *  plane's, turned outwards (see setViewpoint); and the boundary flag: the largest angular gap between the neighbours around the point, in that plane,
  *  exceeds 90 degrees (hole borders, isolated outliers).
  */
 class TargetSurface
@@ -50,6 +52,14 @@ public:
    */
   void
   setInputTarget (Eigen::Matrix3Xd points, Eigen::Matrix3Xd normals, NeighbourSearch search);
+
+  /** \brief Where the sensor stood (the target's frame), or none: estimated normals are turned towards it, or
+   *  (without one) away from the target's centroid, so that normals agree in sign with a model's outward ones; given
+   *  normals are kept (all turned over when most of them point towards the centroid). Forgets what was computed.
+   *  \param[in] viewpoint the sensor's position, e.g. the origin of a depth camera's organised cloud
+   */
+  void
+  setViewpoint (std::optional<Eigen::Vector3d> viewpoint);
 
   /** \brief The neighbourhood size k (>= 4; default 20); forgets what was computed when it changes.
    *  \param[in] k the target points each plane is fitted to: more smooth more and flag fewer boundary points
@@ -162,12 +172,18 @@ private:
   void
   computePoint (pcl::index_t index);
 
+  /** Turns every given normal over when most point towards the centroid (a scan written with inward normals). */
+  void
+  turnGivenNormalsOutwards ();
+
   /** Measures the noise ratio and settles smoothing_ for the automatic mode (once per target). */
   void
   decideSmoothing ();
 
   Eigen::Matrix3Xd raw_points_;
   Eigen::Matrix3Xd given_normals_;
+  Eigen::Vector3d centroid_ = Eigen::Vector3d::Zero (); ///< of the raw points
+  std::optional<Eigen::Vector3d> viewpoint_;
   NeighbourSearch search_;
   int neighbours_ = 20;
   TargetSmoothing mode_ = TargetSmoothing::automatic;

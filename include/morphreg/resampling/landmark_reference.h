@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file landmark_reference.h
  *  \brief The reference mesh of a resampling from landmarks alone (METHOD section 5): the template warped by a 3D thin

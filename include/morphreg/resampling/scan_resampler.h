@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_resampler.h
  *  \brief A raw scan brought into a reference topology (docs/method.md, "Raw scans"): every reference vertex moved

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file depth_camera_simulator.h
  *  \brief Simulated frames of a consumer structured-light depth camera (Kinect v1 class) looking at a mesh, with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file head_generator.h
  *  \brief Deterministic synthetic human heads in one fixed topology: the project's built-in head population.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file head_parameters.h
  *  \brief The anthropometric parameters (mm) that shape a synthetic head, with plausible population ranges.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file photo_simulator.h
  *  \brief Simulated, annotated orthographic photos of a head (a profile silhouette and frontal landmarks), with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file scan_simulator.h
  *  \brief Simulated laser scans of a head mesh, with the ground truth a registration test needs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file registration_visualizer.h
  *  \brief Overlays of a registration on pcl::visualization::PCLVisualizer: target scan, fitted model, correspondences,
@@ -19,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pcl
 {
@@ -112,7 +114,9 @@ public:
   createBeforeAfterViewports (int& before, int& after, const std::string& before_caption = "before",
                               const std::string& after_caption = "after");
 
-  /** \brief Shows a target scan as points (uniform colour, \a point_size pixels).
+  /** \brief Shows a target scan as points (uniform colour, \a point_size pixels). Missing points (NaN, as in an
+   *  organised depth-camera frame) are left out; an infinite coordinate or a cloud without a valid point throws
+   *  InvalidInputError.
    *  \param[in] cloud the scan
    *  \param[in] id the shape's id
    *  \param[in] viewport where to show it (0: every viewport)
@@ -122,6 +126,19 @@ public:
   void
   addTargetCloud (const pcl::PointCloud<PointT>& cloud, const std::string& id = "target", int viewport = 0,
                   double point_size = 2.0);
+
+  /** \brief Shows a scan over a fit: at most \a max_points of its points, drawn at random (a scanner's regular grid
+   *  drawn densely over a surface makes moiré), 2 pixels wide and in a neutral grey, so the fit's colours stay
+   *  readable. Missing (NaN) points are left out, as in addTargetCloud.
+   *  \param[in] cloud the scan
+   *  \param[in] max_points the most points drawn
+   *  \param[in] id the shape's id
+   *  \param[in] viewport where to show it (0: every viewport)
+   */
+  template <typename PointT>
+  void
+  addScanOverlay (const pcl::PointCloud<PointT>& cloud, std::size_t max_points, const std::string& id = "scan",
+                  int viewport = 0);
 
   /** \brief Shows a target scan given as a mesh (its vertex colours if it has any, else the target colour).
    *  \param[in] mesh the scan
@@ -211,7 +228,9 @@ public:
   colourBarRegion ();
 
   /** \brief Draws each landmark as a sphere of \a radius (mm) in the colour of its \a role, labelled with its id
-   *  when \a labels is set. Shapes are named \a id_prefix + landmark id (+ "_label").
+   *  when \a labels is set: dark text on a light box framed in the role's colour, beside the landmark, at a size in
+   *  pixels that grows with the screenshot (readable at any zoom). Shapes are named \a id_prefix + landmark id
+   *  (+ "_label").
    *  \param[in] landmarks the landmarks by id (mm)
    *  \param[in] role source or target, which sets the colour
    *  \param[in] radius the spheres' radius (mm)
@@ -222,6 +241,38 @@ public:
   void
   addLandmarks (const LandmarkPositions& landmarks, LandmarkRole role, double radius = 2.5, bool labels = true,
                 const std::string& id_prefix = "", int viewport = 0);
+
+  /** \brief Changes a shape's colour (RGB in [0, 1]): a cloud's points or a mesh without vertex colours.
+   *  Throws InvalidInputError for an unknown id.
+   *  \param[in] r red
+   *  \param[in] g green
+   *  \param[in] b blue
+   *  \param[in] id the shape's id
+   */
+  void
+  setColour (double r, double g, double b, const std::string& id);
+
+  /** \brief Shows or hides what was added under \a id: a cloud, a mesh, a residual heat map (with its colour bar),
+   *  a landmark's sphere or label, correspondence lines. Throws InvalidInputError if nothing has that id.
+   *  \param[in] id the shape's id
+   *  \param[in] visible whether it is drawn
+   */
+  void
+  setVisibility (const std::string& id, bool visible);
+
+  /** \brief Whether what was added under \a id is drawn (false for an unknown id).
+   *  \param[in] id the shape's id
+   *  \return its visibility
+   */
+  bool
+  isVisible (const std::string& id) const;
+
+  /** \brief The shapes resetCamera() and screenshots frame: e.g. only the fitted head of a head-and-shoulders scan.
+   *  Empty (the default): everything visible.
+   *  \param[in] ids the shapes' ids
+   */
+  void
+  setFramedShapes (const std::vector<std::string>& ids);
 
   /** \brief A callback for pcl::Registration::registerVisualizationCallback: each call shows the transformed
    *  source, the target (added on the first call) and up to \a max_lines of the current correspondences, with
@@ -250,7 +301,8 @@ public:
   }
 
   /** \brief Points the shared camera along -\a view_direction (default: looking at the face, +Z towards the
-   *  viewer) with \a up upwards, and fits everything shown in every viewport (again at each screenshot's size).
+   *  viewer) with \a up upwards, and frames the points of what is shown (setFramedShapes) so that they fill the
+   *  picture, beside the colour bar if there is one (again at each screenshot's size).
    *  \param[in] view_direction from the scene towards the camera
    *  \param[in] up the screen's up direction in the scene
    */
@@ -289,6 +341,9 @@ private:
   addTargetPositions (const CloudXYZ::ConstPtr& cloud, const std::string& id, int viewport, double point_size);
 
   void
+  addOverlayPositions (const CloudXYZ::ConstPtr& cloud, std::size_t max_points, const std::string& id, int viewport);
+
+  void
   addMesh (const pcl::PolygonMesh& mesh, const Eigen::Vector3d& colour, double opacity, const std::string& id,
            int viewport);
 
@@ -298,7 +353,15 @@ private:
                           int viewport);
 
   void
-  addColourBar (double max_residual_mm, int viewport);
+  addColourBar (double max_residual_mm, const std::string& owner, int viewport);
+
+  void
+  addLabel (const std::string& text, const Eigen::Vector3d& position, const Eigen::Vector3d& colour,
+            const std::string& id, int viewport);
+
+  /** The label font size (pixels) for a window \a height pixels high. */
+  static int
+  labelFontSize (int height);
 
   void
   showRegistrationState (const CloudXYZ::ConstPtr& source, const pcl::Indices& source_indices,
@@ -308,9 +371,13 @@ private:
   void
   requireWindow (const char* method) const;
 
-  /** \brief Places the camera of every viewport along camera_view_ so all that is shown fits the window. */
+  /** \brief Places the camera of every viewport along camera_view_ so the framed points fill the window. */
   void
   fitCamera ();
+
+  /** \brief The points (world frame) of the visible framed shapes, at most some tens of thousands. */
+  std::vector<Eigen::Vector3d>
+  framedPoints () const;
 
   Eigen::Vector3d
   textColour () const;
@@ -319,6 +386,9 @@ private:
   Display display_;
   Eigen::Vector3d background_;
   std::map<int, vtkSmartPointer<vtkScalarBarActor>> colour_bars_;
+  std::map<int, std::string> colour_bar_owners_; ///< the heat map id of each viewport's colour bar
+  std::vector<std::string> label_ids_;           ///< landmark labels, resized with each screenshot
+  std::vector<std::string> framed_ids_;
   std::size_t registration_updates_ = 0;
   /** The view direction (towards the camera) and up vector of the last resetCamera(), refitted per screenshot. */
   std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> camera_view_;
@@ -330,6 +400,8 @@ private:
 #define MORPHREG_DECLARE_REGISTRATION_VISUALIZER(T)                                                                    \
   extern template void morphreg::RegistrationVisualizer::addTargetCloud<T> (const pcl::PointCloud<T>&,                 \
                                                                             const std::string&, int, double);          \
+  extern template void morphreg::RegistrationVisualizer::addScanOverlay<T> (const pcl::PointCloud<T>&, std::size_t,    \
+                                                                            const std::string&, int);                  \
   extern template void morphreg::RegistrationVisualizer::addCorrespondences<T, T> (                                    \
       const pcl::PointCloud<T>&, const pcl::PointCloud<T>&, const pcl::Correspondences&, std::size_t,                  \
       const std::string&, int);                                                                                        \

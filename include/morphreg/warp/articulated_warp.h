@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file articulated_warp.h
  *  \brief Re-posturing a segmented body mesh with rigid bones: bone motions from the joints, linear blend skinning

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file as_rigid_as_possible.h
  *  \brief As-rigid-as-possible surface refinement (Sorkine and Alexa 2007) towards given positions, with the sparse

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file limb_parts.h
  *  \brief The largest warp error per limb part, where a rigid bone should keep the limb's shape: thigh, shin and

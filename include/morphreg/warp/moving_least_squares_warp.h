@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file moving_least_squares_warp.h
  *  \brief A landmark warp by moving least squares: every point gets the affine map that best carries the landmarks,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file segmented_warp.h
  *  \brief Thin plate spline warping by segments (one spline per body part) recombined into one mesh, with the seams

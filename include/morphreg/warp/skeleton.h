@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file skeleton.h
  *  \brief A skeleton of rigid bones between named joints, and the rigid motion of each bone between two postures

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file skinning_weights.h
  *  \brief Smooth skinning weights of a segmented mesh for a skeleton, derived from the segment labels and geodesic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file thin_plate_spline.h
  *  \brief Thin plate spline warps (docs/method.md, "Thin plate splines"): exact or regularised fits from landmark pairs, and

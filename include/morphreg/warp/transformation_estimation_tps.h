@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file transformation_estimation_tps.h
  *  \brief PCL-style estimation of a thin plate spline warp from corresponding points, next to PCL's

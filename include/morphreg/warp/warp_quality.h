@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file warp_quality.h
  *  \brief How good a warp is against a known true mesh in the same topology: vertex errors, and what happens at

@@ -1,15 +1,18 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The real-scan zoo's helper (scripts/real_scan_zoo.sh): poses scans, renders depth-camera frames of them, and scores
 // a fit against the scan's surface by the convention of ../shared/data/real_head_scans/README.md.
 //   morphreg_zoo_tool pose SCAN OUT.ply SEED [m]            the scan under a random similarity (randomPose), in mm or m
 //   morphreg_zoo_tool depth MESH OUT.pcd VIEW DISTANCE SEED [scene]
 //                                                          a Kinect-v1-like frame (metres, camera frame) from the front,
-//                                                          45 degrees or the profile; the head crop unless "scene"
+//                                                          45 degrees or the profile; the head crop unless "scene"; also
+//                                                          as OUT.png (16-bit, mm) with OUT.intrinsics.json
 //   morphreg_zoo_tool score FIT.ply TRUTH [POSE.json]       the face median and more, as one JSON line
 // Each OUT gets OUT.pose.json: the mm mesh-to-output similarity and the output's unit (1 for mm, 0.001 for m).
 #include "../real_scan_support.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/depth_image_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/registration/surface_distance.h>
@@ -113,6 +116,16 @@ depth (const std::vector<std::string>& args)
     cropToHead (frame, mesh, 300.0);
   saveCloud (args.at (1), *frame.cloud);
   writePose (args.at (1), camera.matrix (), 1e-3);
+  // The same frame as a depth camera saves it: a 16-bit PNG in mm and the intrinsics.
+  const std::string stem = args.at (1).substr (0, args.at (1).find_last_of ('.'));
+  DepthImage image{frame.intrinsics.width, frame.intrinsics.height, frame.depth};
+  for (std::size_t pixel = 0; pixel < image.depth.size (); ++pixel)
+    if (!std::isfinite ((*frame.cloud)[pixel].z))
+      image.depth[pixel] = 0;
+  saveDepthPng (stem + ".png", image);
+  const DepthIntrinsics& k = frame.intrinsics;
+  writeJsonFile (stem + ".intrinsics.json",
+                 {{"width", k.width}, {"height", k.height}, {"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}});
   return 0;
 }
 

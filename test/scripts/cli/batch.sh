@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Batch registration end to end: batch.sh <morphreg> <model.h5> <manifest.csv> <work dir> <case>
 # Runs are stopped at a known scan by the test-only hook MORPHREG_BATCH_TEST_HOLD=N:DIR (tools/batch_test_hold.h:
 # the run writes DIR/held.<share> when it takes its scan N and waits for DIR/release.<share>), never by timing; every

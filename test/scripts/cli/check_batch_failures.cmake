@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # A check of run_command.cmake (CHECKS) for a batch with failing scans, -DSUMMARY=summary.csv: each failure is named
 # with its file and problem, and the other scans are ok with their RMS and iterations.
 file(READ "${SUMMARY}" summary)

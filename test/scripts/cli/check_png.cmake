@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # A check of run_command.cmake (CHECKS) with -DPNG=file.png -DWIDTH=w -DHEIGHT=h: the file is a PNG of that size
 # (signature and IHDR chunk) and not trivially small.
 file(SIZE "${PNG}" bytes)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # A check of run_command.cmake (CHECKS) for `morphreg register` with -DUNITS=mm|cm|m|in -DDETECTION=auto|given:
 # the report gives the scan's unit UNITS, found as DETECTION says, and stdout says the scan was rescaled to mm exactly
 # when UNITS is not mm.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # A check of run_command.cmake (CHECKS) for a successful `morphreg resample` with -DMIN_COVERAGE=c: the resampling's
 # status is "ok", its coverage at least MIN_COVERAGE, and observed + filled vertices make up the model's.
 string(JSON resampling ERROR_VARIABLE missing GET "${json}" resampling status)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # A check of run_command.cmake (CHECKS) for one scan of build-model --from-scans, -DSCAN_REPORT=scan.json: the scan's
 # report gives its coverage, the registration's components and the refinement's prior.
 file(READ "${SCAN_REPORT}" scan_json)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Checks that the markdown file DOC shows the file FILE verbatim in a fenced code block, so that the file a test
 # runs and the text a reader copies are one: cmake -DDOC=doc.md -DFILE=script -P doc_shows_file.cmake
 file(READ "${DOC}" doc)

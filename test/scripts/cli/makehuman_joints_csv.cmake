@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Writes the 51 major joints of one MakeHuman subject and pose as a landmark CSV (id,x,y,z) in MakeHuman's unit
 # (decimetres; warp --units dm converts), for the command-line tests of warp --method articulated.
 #   cmake -DBODIES=<makehuman_bodies folder> -DSUBJECT=<e.g. base or base_seated> -DOUT=<file.csv>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # The one runner of every command-line and sample test (test/support/command_test.cmake declares them):
 #   cmake -DCOMMAND=<program;args...> [checks...] -P run_command.cmake
 # Lists arrive ";"-separated. The run passes only when every check below holds:
@@ -21,9 +22,12 @@
 #                 `err`, `json` (the report's text) and every -D given, and call fail(<text>)
 #   REQUIRES_DATA files or folders the test needs (../shared/data): when one is absent the test prints
 #                 "SKIPPED: <path> is absent" and ctest reports it skipped
-#   CASE_DIR      a bad-input case's folder, made afresh with the SETUP steps (copy,SRC,DST: a copy; head,SRC,DST,N:
-#                 its first N bytes); "@CASE@" in COMMAND, ERROR and SETUP stands for it. Every file SETUP made must
-#                 be unchanged afterwards and the folder must hold nothing else: no output, whole or partial.
+#   CASE_DIR      a bad-input case's folder, made afresh with the SETUP steps (copy,SRC,DST: a copy, its folder made;
+#                 head,SRC,DST,N: its first N bytes; symlink,TARGET,LINK and hardlink,SRC,DST: links; fifo,-,DST: a
+#                 FIFO; mkdir,-,DST: a folder); "@CASE@" in COMMAND, ERROR and SETUP stands for it. Every file SETUP
+#                 made must be unchanged afterwards (a copy placed where the run writes is an old output that must
+#                 survive), FIFOs and folders must remain, and the folder must hold nothing else: no output, whole or
+#                 partial.
 cmake_minimum_required(VERSION 3.18)
 foreach(path IN LISTS REQUIRES_DATA)
   if(NOT EXISTS "${path}")
@@ -40,6 +44,7 @@ endfunction()
 
 # Bad-input cases: the folder and its inputs.
 set(inputs "")
+set(specials "") # FIFOs and folders SETUP made: they must remain, but are not read (a FIFO would block)
 if(CASE_DIR)
   file(REMOVE_RECURSE "${CASE_DIR}")
   file(MAKE_DIRECTORY "${CASE_DIR}")
@@ -49,14 +54,28 @@ if(CASE_DIR)
     list(GET parts 0 op)
     list(GET parts 1 source)
     list(GET parts 2 destination)
-    if(NOT EXISTS "${source}")
+    if(NOT source STREQUAL "-" AND NOT EXISTS "${source}")
       message(FATAL_ERROR "setup: ${source} does not exist")
     endif()
-    if(op STREQUAL "copy")
+    if(op STREQUAL "fifo" OR op STREQUAL "mkdir")
+      if(op STREQUAL "fifo")
+        execute_process(COMMAND mkfifo "${destination}" RESULT_VARIABLE made)
+      else()
+        file(MAKE_DIRECTORY "${destination}")
+      endif()
+      list(APPEND specials "${destination}")
+      continue()
+    elseif(op STREQUAL "copy")
+      get_filename_component(folder "${destination}" DIRECTORY)
+      file(MAKE_DIRECTORY "${folder}")
       file(COPY_FILE "${source}" "${destination}")
     elseif(op STREQUAL "head")
       list(GET parts 3 bytes)
       execute_process(COMMAND head -c ${bytes} "${source}" OUTPUT_FILE "${destination}")
+    elseif(op STREQUAL "symlink")
+      file(CREATE_LINK "${source}" "${destination}" SYMBOLIC)
+    elseif(op STREQUAL "hardlink")
+      file(CREATE_LINK "${source}" "${destination}")
     else()
       message(FATAL_ERROR "setup: unknown step '${op}'")
     endif()
@@ -206,8 +225,13 @@ endif()
 if(CASE_DIR)
   file(GLOB_RECURSE present LIST_DIRECTORIES false "${CASE_DIR}/*" "${CASE_DIR}/.*")
   list(REMOVE_DUPLICATES present)
+  foreach(file IN LISTS specials)
+    if(NOT EXISTS "${file}")
+      fail("the input ${file} was removed")
+    endif()
+  endforeach()
   foreach(file IN LISTS present)
-    if(NOT file IN_LIST inputs)
+    if(NOT file IN_LIST inputs AND NOT file IN_LIST specials)
       fail("an output was left behind: ${file}")
     endif()
   endforeach()

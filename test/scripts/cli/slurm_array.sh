@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: BSD-3-Clause
 # register --scans as a Slurm job array, on a one-node Slurm started for the test (scripts/local_slurm.sh):
 #   slurm_array.sh <morphreg> <model.h5> <batch scans folder> <work dir> <project folder>
 # Submits docs/register_study.sbatch itself (the script docs/cluster.md shows) as an array of 3 tasks over a

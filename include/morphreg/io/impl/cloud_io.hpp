@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -5,6 +6,7 @@
 #include <morphreg/io/field_precision.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/file_validation.h>
+#include <morphreg/io/gltf_reader.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/pcd_reader.h>
 
@@ -20,15 +22,19 @@ template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr
 loadCloud (const std::string& path)
 {
-  const FileFormat format = checkGeometryFile (path, ".pcd .ply .obj .stl .off", "point cloud");
+  const FileFormat format = checkGeometryFile (path, ".pcd .ply .obj .stl .off .gltf .glb", "point cloud");
   typename pcl::PointCloud<PointT>::Ptr cloud (new pcl::PointCloud<PointT>);
   if (format == FileFormat::Obj) { // its vertices, faces or not
     pcl::fromPCLPointCloud2 (readObjFile (path).cloud, *cloud);
     return cloud;
   }
   if (format == FileFormat::StlAscii || format == FileFormat::StlBinary || format == FileFormat::Off) {
-    // mesh-only formats: the mesh's vertices are the cloud
-    pcl::fromPCLPointCloud2 (loadPolygonMesh (path).cloud, *cloud);
+    // mesh formats: the mesh's vertices are the cloud (an OFF file of points alone too)
+    pcl::fromPCLPointCloud2 (loadMeshFile (path).cloud, *cloud);
+    return cloud;
+  }
+  if (format == FileFormat::Gltf || format == FileFormat::Glb) { // its triangles' and points' vertices, in mm
+    pcl::fromPCLPointCloud2 (toPolygonMesh (readGltfFile (path)).cloud, *cloud);
     return cloud;
   }
   if (format == FileFormat::Pcd) { // morphreg's own reader: PCL's crashes on some malformed files

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/model/morphable_model.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
 #include <morphreg/common/cloud_matrix.h>
@@ -6,6 +7,7 @@
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/model/coefficient_units.h>
 #include <morphreg/registration/cached_correspondence_estimation.h>
 #include <morphreg/registration/global_alignment.h>
 #include <morphreg/registration/initial_alignment.h>
@@ -61,6 +63,7 @@ MorphableICP<PointTarget, Scalar>::MorphableICP ()
   this->correspondence_estimation_.reset (new CachedCorrespondenceEstimation<PointTarget, PointTarget, Scalar>);
   target_surface_ = std::make_shared<TargetSurface> ();
   boundary_rejector_ = std::make_shared<CorrespondenceRejectorTargetBoundary> (target_surface_);
+  normal_rejector_ = std::make_shared<CorrespondenceRejectorNormalCompatibility> (target_surface_);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -177,6 +180,14 @@ MorphableICP<PointTarget, Scalar>::setRejectTargetBoundary (bool enabled, int ne
 
 template <typename PointTarget, typename Scalar>
 void
+MorphableICP<PointTarget, Scalar>::setRejectIncompatibleNormals (bool enabled, double max_angle_deg)
+{
+  normal_rejector_->setMaximumAngle (max_angle_deg);
+  reject_incompatible_normals_ = enabled;
+}
+
+template <typename PointTarget, typename Scalar>
+void
 MorphableICP<PointTarget, Scalar>::setTargetSmoothing (TargetSmoothing smoothing)
 {
   target_surface_->setSmoothing (smoothing);
@@ -280,6 +291,9 @@ MorphableICP<PointTarget, Scalar>::alignInMillimetres (PointCloudSource& output,
 {
   const PointCloudTargetConstPtr user_target = this->target_;
   const LandmarkPositions user_landmarks = landmarks_;
+  const std::optional<Eigen::Vector3d> user_viewpoint = viewpoint_;
+  if (viewpoint_)
+    *viewpoint_ *= to_mm;
   typename PointCloudTarget::Ptr scaled (new PointCloudTarget (*user_target));
   for (auto& point : *scaled)
     point.getVector3fMap () *= static_cast<float> (to_mm);
@@ -290,6 +304,7 @@ MorphableICP<PointTarget, Scalar>::alignInMillimetres (PointCloudSource& output,
     scaled_guess.template topRows<3> () *= static_cast<Scalar> (to_mm);
   const auto restore = [&] () {
     landmarks_ = user_landmarks;
+    viewpoint_ = user_viewpoint;
     setInputTarget (user_target);
   };
   setInputTarget (scaled);
@@ -340,8 +355,10 @@ MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess)
   const Eigen::Matrix3Xd target = pointsOf (*this->target_);
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
   if (mode == IcpInitialisation::global) {
+    GlobalAlignmentSettings settings;
+    settings.viewpoint = target_viewpoint_;
     const GlobalAlignment found =
-        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normalsIfAny (*this->target_));
+        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normalsIfAny (*this->target_), settings);
     report_.initialisation_detail = found.method;
     report_.initialisation_confidence = found.confidence;
     report_.head_points = static_cast<int> (found.head_indices.size ());
@@ -373,11 +390,19 @@ MorphableICP<PointTarget, Scalar>::prepareEstimators ()
         [tree, cloud] (pcl::index_t i, int k, pcl::Indices& indices, std::vector<float>& squared) {
           tree->nearestKSearch ((*cloud)[i], k, indices, squared);
         });
+    // An organised cloud is one sensor's view: its estimated normals face that sensor.
+    const bool one_view = cloud->isOrganized () && !viewpoint_;
+    target_viewpoint_ =
+        one_view ? std::optional<Eigen::Vector3d> (cloud->sensor_origin_.template head<3> ().template cast<double> ())
+                 : viewpoint_;
+    target_surface_->setViewpoint (target_viewpoint_);
     target_prepared_ = true;
   }
   chain_ = this->correspondence_rejectors_;
   if (chain_.empty () && reject_boundary_)
     chain_.push_back (boundary_rejector_);
+  if (this->correspondence_rejectors_.empty () && reject_incompatible_normals_)
+    chain_.push_back (normal_rejector_);
   pcl::PCLPointCloud2::Ptr target_blob;
   for (const auto& rejector : chain_) {
     if (rejector->requiresTargetNormals () && !pcl::traits::has_normal_v<PointTarget>)
@@ -490,7 +515,8 @@ MorphableICP<PointTarget, Scalar>::runPhase (const Phase& phase, const PoseShape
                            " found) and " + std::to_string (landmark_rows_.size ()) + " landmarks",
                        "the max correspondence distance, the rejectors and the initial alignment");
     visualize (ev);
-    if (!convergence.checkCost (solver.cost (state, rows) / static_cast<double> (rows.size ())))
+    const double per_row = 1.0 / static_cast<double> (rows.size ());
+    if (!convergence.checkCost (per_row * solver.cost (state, rows), per_row * solver.cost (best, rows)))
       break;
     if (convergence.improved ())
       best = state;
@@ -687,6 +713,7 @@ void
 MorphableICP<PointTarget, Scalar>::store (const PoseShapeState& state, PointCloudSource& output)
 {
   coefficients_ = detail::restack (state.coefficients, state.selection, selection_);
+  coefficients_sd_ = coefficientsInStandardDeviations (*model_, coefficients_, selection_);
   fitted_vertices_ = state.posed ();
   const Eigen::Matrix3Xd normals = vertexNormals (TriangleMesh{fitted_vertices_, model_->triangles ()});
   output.resize (fitted_vertices_.cols ());

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/visualization/registration_visualizer.h>
@@ -24,8 +25,15 @@ void
 RegistrationVisualizer::addTargetCloud (const pcl::PointCloud<PointT>& cloud, const std::string& id, int viewport,
                                         double point_size)
 {
-  requireFiniteNonEmpty (cloud, "target cloud '" + id + "'");
   addTargetPositions (detail::positionsOf (cloud), id, viewport, point_size);
+}
+
+template <typename PointT>
+void
+RegistrationVisualizer::addScanOverlay (const pcl::PointCloud<PointT>& cloud, std::size_t max_points,
+                                        const std::string& id, int viewport)
+{
+  addOverlayPositions (detail::positionsOf (cloud), max_points, id, viewport);
 }
 
 template <typename PointSource, typename PointTarget>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file landmark_pairs.h
  *  \brief The checks and merging every landmark warp (thin plate spline, moving least squares) applies to its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file tps_kernel.hpp
  *  \brief The thin plate spline kernels and the blocked, vectorised (OpenMP SIMD + threads) evaluation of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file tps_solver.h
  *  \brief The thin plate spline fit in double precision (validation, merging, null-space solve), shared by every

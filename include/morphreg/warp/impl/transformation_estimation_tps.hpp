@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 #include <morphreg/common/error.h>
 #include <morphreg/warp/impl/thin_plate_spline.hpp>

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+// The visualisation component's PNG output of a VTK render window, and its check for an X display.
+#include <string>
+
+class vtkRenderWindow;
+
+namespace morphreg
+{
+namespace detail
+{
+/** Throws morphreg::Error naming \a who when $DISPLAY is unset: Debian's VTK renders through X even offscreen. */
+void
+requireXDisplay (const std::string& who);
+
+/** Renders \a window and writes it as a PNG, atomically; IoError naming \a png_path if it cannot be written whole. */
+void
+writeWindowPng (vtkRenderWindow& window, const std::string& png_path);
+} // namespace detail
+} // namespace morphreg
