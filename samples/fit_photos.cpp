@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Fits a morphable head model to a profile photo (the silhouette) and a frontal photo (named landmarks) with
-// TwoViewFitting (docs/method.md, "Fitting to two orthogonal photographs": approach 1, "joint", or approach 2,
-// "tps"), writes the fitted head as PLY and the fit's report as JSON.
+// PhotoFitting (docs/method.md, "Fitting to photographs": approach 1, "joint", or approach 2, "tps", on the
+// orthographic pair), writes the fitted head as PLY and the fit's report as JSON.
 //
 //   sample_fit_photos [--profile side.json --frontal front.json --model model.h5 [--photo front.png]]
 //                     [--approach joint|tps] [--out fitted.ply] [--report fit.json] [--scale 5] [--heads 30]
@@ -18,9 +18,9 @@
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/photo/frontal_texture.h>
+#include <morphreg/photo/photo_texture.h>
 #include <morphreg/photo/photo_view_io.h>
-#include <morphreg/photo/two_view_fitting.h>
+#include <morphreg/photo/photo_fitting.h>
 #include <morphreg/synthetic/photo_simulator.h>
 #include <morphreg/common/colour_map.h>
 
@@ -49,8 +49,8 @@ checkerboard (int width, int height)
 }
 
 /** Approach 1 ("joint") or 2 ("tps") of \a fitting on the two annotation files. */
-morphreg::TwoViewFit
-fitFiles (const morphreg::TwoViewFitting& fitting, const std::string& approach, const std::string& side,
+morphreg::PhotoFit
+fitFiles (const morphreg::PhotoFitting& fitting, const std::string& approach, const std::string& side,
           const std::string& front)
 {
   const morphreg::ProfileView profile = morphreg::loadProfileView (side);
@@ -64,7 +64,7 @@ fitFiles (const morphreg::TwoViewFitting& fitting, const std::string& approach, 
 Eigen::VectorXd
 fitSyntheticPhotos (const morphreg::synthetic::HeadGenerator& generator, int heads,
                     const morphreg::MorphableModel::ConstPtr& model, const std::filesystem::path& folder,
-                    const std::string& approach, morphreg::TwoViewFit& fit)
+                    const std::string& approach, morphreg::PhotoFit& fit)
 {
   const morphreg::synthetic::SyntheticHead head = generator.sample (1 + static_cast<std::uint64_t> (heads));
   morphreg::synthetic::PhotoSimulator::Parameters camera;
@@ -78,9 +78,9 @@ fitSyntheticPhotos (const morphreg::synthetic::HeadGenerator& generator, int hea
   std::printf ("photos: %zu silhouette points in %s, %zu landmarks in %s\n", photos.profile.silhouette ().size (),
                side.c_str (), photos.frontal.landmarks ().size (), front.c_str ());
 
-  morphreg::TwoViewFitting fitting (model);
+  morphreg::PhotoFitting fitting (model);
   // The simulator projects vertices for the outline landmarks (jaw, chin, neck): here they are fixed points.
-  fitting.setContourLandmarkWeight (morphreg::TwoViewFitting::kDefaultFrontalWeight);
+  fitting.setOutlineLandmarks (morphreg::OutlineLandmarkMode::vertex);
   fit = fitFiles (fitting, approach, side, front);
   // The fitted head in the true head's frame: the known pose undone.
   const Eigen::Matrix3Xd back =
@@ -122,11 +122,11 @@ fitPhotos (int argc, char** argv)
   const std::string out = options.text ("--out");
   const std::filesystem::path folder = std::filesystem::absolute (out).parent_path ();
 
-  morphreg::TwoViewFit fit;
+  morphreg::PhotoFit fit;
   morphreg::VertexColours colours;
   if (from_files) {
     const morphreg::MorphableModel::ConstPtr model = morphreg::loadModel (options.text ("--model"));
-    fit = fitFiles (morphreg::TwoViewFitting (model), approach, options.text ("--profile"), options.text ("--frontal"));
+    fit = fitFiles (morphreg::PhotoFitting (model), approach, options.text ("--profile"), options.text ("--frontal"));
     if (!options.text ("--photo").empty ()) {
       const morphreg::VertexTexture texture = morphreg::frontalTexture (
           fit.image_mesh, morphreg::loadFrontalView (options.text ("--frontal")).normalisation (),
@@ -143,10 +143,12 @@ fitPhotos (int argc, char** argv)
                  model->numRegions ());
     colours = morphreg::residualColours (fitSyntheticPhotos (generator, heads, model, folder, approach, fit), scale);
   }
-  const morphreg::TwoViewIteration& final_residuals = fit.final_residuals;
-  std::printf ("fit (%s): %zu iterations; profile RMS %.3f mm over %d profile-line vertices, landmark RMS %.3f mm\n",
-               approach.c_str (), fit.history.size (), final_residuals.profile_rms,
-               final_residuals.profile_correspondences, final_residuals.landmark_rms);
+  const morphreg::PhotoFitIteration& final_residuals = fit.final_residuals;
+  std::printf ("fit (%s): %zu iterations; outline RMS %.3f mm over %d outline points, landmark RMS %.3f mm; "
+               "lambda_2 %.3f (%s)\n",
+               approach.c_str (), fit.history.size (), final_residuals.outline_rms,
+               final_residuals.outline_correspondences, final_residuals.landmark_rms, fit.prior.weight,
+               fit.prior.rule.c_str ());
   if (colours.size () > 0) {
     morphreg::savePolygonMesh (out, morphreg::toPolygonMesh (fit.model_mesh, colours));
     if (from_files)
@@ -159,7 +161,7 @@ fitPhotos (int argc, char** argv)
     std::printf ("wrote %s (model frame, mm)\n", out.c_str ());
   }
   if (!options.text ("--report").empty ()) {
-    morphreg::saveTwoViewFitReport (options.text ("--report"), fit);
+    morphreg::savePhotoFitReport (options.text ("--report"), fit);
     std::printf ("wrote %s\n", options.text ("--report").c_str ());
   }
 }

@@ -8,7 +8,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/photo/photo_view_io.h>
-#include <morphreg/photo/two_view_settings.h>
+#include <morphreg/photo/photo_fit_options.h>
 #include <morphreg/synthetic/photo_simulator.h>
 
 #include <pybind11/stl.h>
@@ -95,7 +95,7 @@ bindViews (py::module_& m)
 /** The fit and its report. */
 struct PhotoFitResult
 {
-  TwoViewFit fit;
+  PhotoFit fit;
   nlohmann::json report;
 };
 
@@ -121,7 +121,7 @@ bindResult (py::module_& m)
       .def_property_readonly (
           "image_vertices",
           [] (const PhotoFitResult& r) { return toArray (Eigen::Matrix3Xd (r.fit.image_mesh.vertices)); },
-          "The fitted head in the normalised photo frame.")
+          "The fitted head in the views' frame (the normalised photo frame of the pair).")
       .def_property_readonly (
           "faces",
           [] (const PhotoFitResult& r) { return toArray (TriangleMesh::Triangles (r.fit.model_mesh.triangles)); })
@@ -131,26 +131,31 @@ bindResult (py::module_& m)
 }
 
 PhotoFitResult
-fitPhotos (const MorphableModel::Ptr& model, const ProfileView& profile, const FrontalView* frontal,
-           const std::string& approach, const py::handle& components, double smoothness, double shape_prior,
-           double coefficient_limit, double frontal_weight, double contour_weight, double sagittal_weight)
+fitPhotoPair (const MorphableModel::Ptr& model, const ProfileView& profile, const FrontalView* frontal,
+              const std::string& approach, const py::handle& components, double smoothness,
+              const std::optional<double>& shape_prior, double landmark_noise, double coefficient_limit,
+              double landmark_weight, const std::string& outline_landmarks, double outline_landmark_weight,
+              double sagittal_weight)
 {
-  TwoViewSettings settings;
-  settings.approach = approach;
-  settings.components = componentCounts (components);
-  settings.smoothness = smoothness;
-  settings.shape_prior = shape_prior;
-  settings.coefficient_limit = coefficient_limit;
-  settings.frontal_weight = frontal_weight;
-  settings.contour_weight = contour_weight;
-  settings.sagittal_weight = sagittal_weight;
+  PhotoFitOptions options;
+  options.approach = approach;
+  options.components = componentCounts (components);
+  options.smoothness = smoothness;
+  options.shape_prior = shape_prior;
+  options.landmark_noise = landmark_noise;
+  options.coefficient_limit = coefficient_limit;
+  options.landmark_weight = landmark_weight;
+  options.outline_landmarks = outline_landmarks;
+  options.outline_landmark_weight = outline_landmark_weight;
+  options.sagittal_weight = sagittal_weight;
   PhotoFitResult result;
   {
     py::gil_scoped_release released;
-    result.fit = fitTwoViews (model, profile, frontal, settings, frontal ? "profile and frontal" : "profile");
+    result.fit = fitPhotos (model, orthographicPairViews (profile, frontal), options,
+                            frontal ? "profile and frontal" : "profile");
   }
-  result.report = twoViewFitJson (result.fit);
-  result.report["settings"] = toJson (settings);
+  result.report = photoFitJson (result.fit);
+  result.report["settings"] = toJson (options);
   return result;
 }
 
@@ -191,14 +196,17 @@ bindPhoto (py::module_& m)
   bindViews (m);
   bindResult (m);
   bindSimulator (m);
-  const TwoViewSettings d;
-  m.def ("fit_photos", &fitPhotos, py::arg ("model"), py::arg ("profile"), py::arg ("frontal") = nullptr,
+  const PhotoFitOptions d;
+  m.def ("fit_photos", &fitPhotoPair, py::arg ("model"), py::arg ("profile"), py::arg ("frontal") = nullptr,
          py::kw_only (), py::arg ("approach") = d.approach, py::arg ("components") = d.components.front (),
          py::arg ("smoothness") = d.smoothness, py::arg ("shape_prior") = d.shape_prior,
-         py::arg ("coefficient_limit") = d.coefficient_limit, py::arg ("frontal_weight") = d.frontal_weight,
-         py::arg ("contour_weight") = d.contour_weight, py::arg ("sagittal_weight") = d.sagittal_weight,
+         py::arg ("landmark_noise") = d.landmark_noise, py::arg ("coefficient_limit") = d.coefficient_limit,
+         py::arg ("landmark_weight") = d.landmark_weight, py::arg ("outline_landmarks") = d.outline_landmarks,
+         py::arg ("outline_landmark_weight") = d.outline_landmark_weight,
+         py::arg ("sagittal_weight") = d.sagittal_weight,
          "Fits the model to a profile view and (unless approach='profile') a frontal view, as `morphreg\n"
-         "fit-photos` does; the keyword arguments are its options. Returns a PhotoFitResult.");
+         "fit-photos --profile --frontal` does; the keyword arguments are its options (shape_prior None: chosen\n"
+         "from the data). Returns a PhotoFitResult.");
 }
 
 } // namespace python

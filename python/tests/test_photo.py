@@ -55,7 +55,7 @@ def test_views_from_pixels(model, photos):
 def test_bad_input(model, photos):
     with pytest.raises(morphreg.InvalidInputError, match="approach \"side\" is none of profile, joint, tps"):
         morphreg.fit_photos(model, photos.profile, photos.frontal, approach="side")
-    with pytest.raises(morphreg.InvalidInputError, match="needs the frontal landmarks"):
+    with pytest.raises(morphreg.InvalidInputError, match="0 landmarks fix model vertices; at least 3 are needed"):
         morphreg.fit_photos(model, photos.profile)
     with pytest.raises(morphreg.InvalidInputError, match=r"silhouette: shape \(10, 3\), expected \(N, 2\)"):
         morphreg.ProfileView(1000, 1200, np.zeros((10, 3)), [0.0, 0.0])

@@ -158,11 +158,14 @@ frontalLandmarkIds ()
 }
 
 bool
-isFrontalContourLandmarkId (const std::string& id)
+isOutlineLandmarkId (const std::string& id)
 {
   const auto& ids = knownLandmarkIds ();
   const auto contour_begin = ids.begin () + 28, contour_end = ids.begin () + 40; // docs/landmarks.md 29-40
-  return id == "chin" || std::find (contour_begin, contour_end, id) != contour_end;
+  const auto& ibug = ibug68LandmarkIds ();
+  const auto jaw_end = ibug.begin () + 17; // iBUG-68 points 0-16: the jaw line
+  return id == "chin" || std::find (contour_begin, contour_end, id) != contour_end ||
+         std::find (ibug.begin (), jaw_end, id) != jaw_end;
 }
 
 LandmarkVertices

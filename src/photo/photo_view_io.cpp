@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
+#include <morphreg/io/file_checks.h>
 #include <morphreg/io/json_file.h>
+#include <morphreg/photo/jpeg_exif.h>
+#include <morphreg/photo/photo_camera_io.h>
 #include <morphreg/photo/photo_view_io.h>
 
 #include <limits>
@@ -107,5 +110,58 @@ saveFrontalView (const std::string& path, const FrontalView& view)
   document["view"] = "frontal";
   document["image"] = imageSize (view.normalisation ());
   writeJsonFile (path, document);
+}
+
+OutlineAnnotation
+loadOutline (const std::string& path)
+{
+  const json document = readJsonFile (path);
+  const json& points = member (document, "outline", path);
+  if (!points.is_array ())
+    throw FormatError (path + ": \"outline\" must be an array of [x, y] points");
+  OutlineAnnotation outline;
+  for (size_t k = 0; k < points.size (); ++k)
+    outline.points.push_back (readPixel (points[k], path + ": outline[" + std::to_string (k) + "]"));
+  if (document.contains ("hairline"))
+    outline.hairline = readPixel (document.at ("hairline"), path + ": hairline");
+  return outline;
+}
+
+void
+saveOutline (const std::string& path, const OutlineAnnotation& outline)
+{
+  json points = json::array ();
+  for (const Eigen::Vector2d& point : outline.points)
+    points.push_back ({point.x (), point.y ()});
+  json document = {{"outline", points}};
+  if (outline.hairline)
+    document["hairline"] = {outline.hairline->x (), outline.hairline->y ()};
+  writeJsonFile (path, document);
+}
+
+LoadedPhotoView
+loadPhotoView (const PhotoViewFiles& files)
+{
+  RgbImage image = loadRgbImage (files.image);
+  if (files.landmarks.empty () && files.outline.empty ())
+    throw InvalidInputError (files.image + ": the photo has neither landmarks nor an outline (--landmarks, --outline)");
+  const LandmarkPixels landmarks = files.landmarks.empty () ? LandmarkPixels () : loadLandmarkPixels (files.landmarks);
+  for (const auto& [id, pixel] : landmarks)
+    if ((pixel.array () < -0.1 * Eigen::Array2d (image.width, image.height)).any () ||
+        (pixel.array () > 1.1 * Eigen::Array2d (image.width, image.height)).any ())
+      throw InvalidInputError (files.landmarks + ": landmark '" + id + "' (" + std::to_string (pixel.x ()) + ", " +
+                               std::to_string (pixel.y ()) + ") lies outside the " + std::to_string (image.width) +
+                               " x " + std::to_string (image.height) + " px photo " + files.image);
+  PhotoView view (image.width, image.height, landmarks, files.image);
+  if (const std::string extension = fileExtension (files.image); extension == ".jpg" || extension == ".jpeg")
+    if (const auto focal = jpegFocalLength35mm (files.image))
+      view.setFocalLength35mm (*focal);
+  if (!files.camera.empty ())
+    view.setCamera (loadPhotoCamera (files.camera, files.image, image.width, image.height));
+  if (!files.outline.empty ()) {
+    const OutlineAnnotation outline = loadOutline (files.outline);
+    view.setOutline (outline.points, outline.hairline);
+  }
+  return {std::move (view), std::move (image)};
 }
 } // namespace morphreg

@@ -13,12 +13,18 @@ Polyline2d::Polyline2d (Eigen::Matrix2Xd points) : points_ (std::move (points))
     throw InvalidInputError ("Polyline2d: " + std::to_string (points_.cols ()) + " points; at least 2 are needed");
   if (!points_.allFinite ())
     throw InvalidInputError ("Polyline2d: non-finite coordinates");
+  double area = 0.0;
+  for (Eigen::Index k = 0; k < points_.cols (); ++k) {
+    const Eigen::Vector2d a = points_.col (k), b = points_.col ((k + 1) % points_.cols ());
+    area += a.x () * b.y () - b.x () * a.y ();
+  }
+  orientation_ = area < 0.0 ? -1.0 : 1.0;
 }
 
-Eigen::Vector2d
-Polyline2d::closestPoint (const Eigen::Vector2d& query) const
+Polyline2d::Projection
+Polyline2d::project (const Eigen::Vector2d& query) const
 {
-  Eigen::Vector2d best = points_.col (0);
+  Projection best{points_.col (0), 0, 0.0};
   double best_distance = std::numeric_limits<double>::infinity ();
   for (Eigen::Index k = 0; k + 1 < points_.cols (); ++k) {
     const Eigen::Vector2d a = points_.col (k);
@@ -29,11 +35,25 @@ Polyline2d::closestPoint (const Eigen::Vector2d& query) const
     const double distance = (candidate - query).squaredNorm ();
     if (distance < best_distance) {
       best_distance = distance;
-      best = candidate;
+      best = {candidate, k, t};
     }
   }
   return best;
 }
+
+Eigen::Vector2d
+Polyline2d::outwardNormal (Eigen::Index segment) const
+{
+  Eigen::Vector2d edge = Eigen::Vector2d::Zero ();
+  // A repeated point makes an empty segment: take the direction of the nearest segment that has one.
+  for (Eigen::Index offset = 0; edge.squaredNorm () == 0.0 && offset < points_.cols (); ++offset)
+    for (const Eigen::Index k : {segment + offset, segment - offset})
+      if (k >= 0 && k + 1 < points_.cols () && edge.squaredNorm () == 0.0)
+        edge = points_.col (k + 1) - points_.col (k);
+  // In pixel coordinates (y down) a positive area runs clockwise on screen: the outside is to the left of travel.
+  return orientation_ * Eigen::Vector2d (edge.y (), -edge.x ()).normalized ();
+}
+
 bool
 Polyline2d::isEnd (const Eigen::Vector2d& point) const
 {

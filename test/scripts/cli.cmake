@@ -357,6 +357,36 @@ morphreg_cli_test(RegisterRealScanWithoutLandmarks FIXTURES_REQUIRED cli_ict30
   ARGS register --scan ${real_scan} --model ${cli_dir}/ict30.h5 --components 30 --area-weighting --shape-prior 1.5
        --tangential-weight 0.1 --no-target-smoothing --quiet --out ${cli_dir}/real_fit.ply)
 
+# fit-photos on menpo3d_james's two real photos (about 25 degrees to either side) with the cameras recovered with the
+# scan (james_cameras.json, K R t and P by image) and their 68 landmarks as iBUG .pts files, which the test writes
+# from the CSVs: those list the points in james.ljson's group order (chin, leye, reye, leyebrow, nose, reyebrow,
+# mouth), not iBUG-68's, so each .pts line k holds CSV point ibug_from_ljson[k]. Measured: landmark RMS 2.34 mm.
+set(james ${MORPHREG_SHARED_DATA_DIR}/real_head_scans/menpo3d_james)
+if(EXISTS ${james}/james_cameras.json)
+  set(ibug_from_ljson 0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 29 30 31 32 33 43 44 45 46 47 34 35 36 37 38 39 40 41
+      42 17 18 19 20 21 22 23 24 25 26 27 28 48 49 50 51 52 53 54 55 56 57 58 59 60 61 62 63 64 65 66 67)
+  foreach(side left right)
+    file(STRINGS ${james}/james_photo_${side}_landmarks68.csv csv_lines REGEX "^[0-9]")
+    set(pts "version: 1\nn_points: 68\n{\n")
+    foreach(k ${ibug_from_ljson})
+      list(GET csv_lines ${k} line)
+      string(REPLACE "," " " line "${line}")
+      string(APPEND pts "${line}\n")
+    endforeach()
+    file(WRITE ${cli_dir}/james_${side}.pts "${pts}}\n")
+  endforeach()
+endif()
+morphreg_cli_test(FitPhotosJamesRealPhotosWithTheirCameras FIXTURES_REQUIRED cli_ict30
+  REQUIRES_DATA ${james}/james_cameras.json ${ict_dir}/ict_head_pca_basis.npy
+  MAXIMA "landmark RMS ([0-9.]+) mm=>3.0"
+  OUTPUT "fit \\(joint\\): [0-9]+ iterations.*wrote .*james_fit.ply \\(model frame, mm; colours: the photos"
+  REPORT ${cli_dir}/james_fit.json REPORT_MATCH "\"camera_estimated\": false" "\"rule\": \"left-out landmarks\""
+  FILES ${cli_dir}/james_fit.ply
+  ARGS fit-photos --model ${cli_dir}/ict30.h5 --view ${james}/james_photo_left.jpg --landmarks ${cli_dir}/james_left.pts
+       --camera ${james}/james_cameras.json --view ${james}/james_photo_right.jpg
+       --landmarks ${cli_dir}/james_right.pts --camera ${james}/james_cameras.json --report ${cli_dir}/james_fit.json
+       --out ${cli_dir}/james_fit.ply)
+
 morphreg_cli_test(DemoRunsWithoutScreenshot
   OUTPUT "demo: 6 heads.*fitted mesh .*fitted.ply, report .*report.json\n.*vertex RMS [0-9.]+ mm"
   REPORT ${cli_dir}/demo/report.json FILES ${cli_dir}/demo/fitted.ply
@@ -510,20 +540,21 @@ morphreg_cli_test(FitPhotosTakesComponentsAndShapePrior FIXTURES_REQUIRED "cli_s
        --truth ${cli_dir}/small/photo_0_truth.json --report ${cli_dir}/photos_prior.json
        --out ${cli_dir}/photos_prior.ply)
 morphreg_cli_test(FitPhotosProfileNeedsNoFrontal FIXTURES_REQUIRED "cli_small;cli_model"
-  OUTPUT "fit \\(profile\\): [0-9]+ iterations, profile RMS [0-9.]+ mm over [0-9]+ profile-line vertices;"
+  OUTPUT "fit \\(profile\\): [0-9]+ iterations, outline RMS [0-9.]+ mm over [0-9]+ outline points;"
   FORBID "landmark RMS" FILES ${cli_dir}/photos_profile.ply
   ARGS ${small_photos} --approach profile --quiet --out ${cli_dir}/photos_profile.ply)
-# The synthetic frontal photos mark the jaw, chin, neck and head contour: left out (with a warning) unless
-# --contour-weight gives them a weight; the coefficient limit must be > 0.
+# The synthetic frontal photos mark the jaw, chin, neck and head contour: outline constraints by default, left out
+# (with a warning) with --outline-landmarks ignored, fixed vertices with vertex; the coefficient limit must be > 0.
 morphreg_cli_test(FitPhotosLeavesOutOutlineLandmarks FIXTURES_REQUIRED "cli_small;cli_model"
-  OUTPUT "photo_0_frontal.json: the outline landmarks .*chin.* are left out"
+  OUTPUT "the outline landmarks .*chin.* are left out"
   REPORT ${cli_dir}/photos_outline.json FILES ${cli_dir}/photos_outline.ply
   ARGS ${small_photos} --frontal ${cli_dir}/small/photo_0_frontal.json --report ${cli_dir}/photos_outline.json
-       --out ${cli_dir}/photos_outline.ply)
+       --outline-landmarks ignored --out ${cli_dir}/photos_outline.ply)
 morphreg_cli_test(FitPhotosContourWeightUsesOutlineLandmarks FIXTURES_REQUIRED "cli_small;cli_model"
   OUTPUT "wrote .*photos_contour.ply" FORBID "left out|largest coefficient [2-9]\\.[0-9]*[1-9]"
   REPORT ${cli_dir}/photos_contour.json FILES ${cli_dir}/photos_contour.ply
-  ARGS ${small_photos} --frontal ${cli_dir}/small/photo_0_frontal.json --contour-weight 1 --coefficient-limit 2
+  ARGS ${small_photos} --frontal ${cli_dir}/small/photo_0_frontal.json --outline-landmarks vertex
+       --outline-landmark-weight 1 --coefficient-limit 2
        --report ${cli_dir}/photos_contour.json --out ${cli_dir}/photos_contour.ply)
 morphreg_cli_expect_exit(FitPhotosCoefficientLimitMustBePositive 2 "--coefficient-limit"
   fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
@@ -561,6 +592,31 @@ morphreg_cli_expect_exit(FitPhotosRejects_frontal_no_nose 1 "frontal_no_nose.jso
 set_tests_properties(CliTest.FitPhotosJointNeedsFrontal CliTest.FitPhotosRejects_profile_left
   CliTest.FitPhotosRejects_profile_nine CliTest.FitPhotosRejects_frontal_no_nose
   PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+
+# fit-photos --view: each --landmarks, --camera and --outline belongs to the --view before it; bad groups, cameras
+# and landmarks are named with their file.
+set(view_photo ${PROJECT_SOURCE_DIR}/docs/images/heads.png) # 1500 x 760 px
+file(WRITE ${cli_dir}/view_landmarks.csv "id,x,y\nnose_tip,700,400\nleft_eye_outer,760,330\nright_eye_outer,640,330\n"
+           "left_mouth_corner,730,470\nright_mouth_corner,670,470\nchin,700,560\n")
+file(WRITE ${cli_dir}/view_far_landmarks.csv "id,x,y\nnose_tip,700,400\nchin,700,5000\n")
+file(WRITE ${cli_dir}/view_camera_no_t.json "{\"K\": [[3000, 0, 750], [0, 3000, 380], [0, 0, 1]], "
+           "\"R\": [[1, 0, 0], [0, -1, 0], [0, 0, -1]]}")
+file(WRITE ${cli_dir}/view_camera_singular.json "{\"P\": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 1]]}")
+set(view_model fit-photos --model ${cli_dir}/small_model.h5 --out ${cli_dir}/bad_view.ply)
+foreach(case
+    "LandmarksBeforeView;give it after the --view photo it belongs to;--landmarks;${cli_dir}/view_landmarks.csv;--view;${view_photo}"
+    "ViewAndPairTogether;cannot be fitted together;--view;${view_photo};--landmarks;${cli_dir}/view_landmarks.csv;--profile;${cli_dir}/small/photo_0_profile.json"
+    "ViewWithoutAnnotations;heads.png: the photo has neither landmarks nor an outline;--view;${view_photo}"
+    "LandmarksOutsideThePhoto;lies outside the 1500 x 760 px photo;--view;${view_photo};--landmarks;${cli_dir}/view_far_landmarks.csv"
+    "CameraWithoutT;view_camera_no_t.json (camera of heads.png): missing \"t\";--view;${view_photo};--landmarks;${cli_dir}/view_landmarks.csv;--camera;${cli_dir}/view_camera_no_t.json"
+    "SingularCamera;view_camera_singular.json (camera of heads.png): P's left 3 x 3 block is singular;--view;${view_photo};--landmarks;${cli_dir}/view_landmarks.csv;--camera;${cli_dir}/view_camera_singular.json"
+    "TooFewLandmarksForACamera;heads.png: a camera is estimated from at least 6 landmarks the model has, got 5;--view;${view_photo};--landmarks;${cli_dir}/view_landmarks.csv")
+  list(GET case 0 name)
+  list(GET case 1 text)
+  list(SUBLIST case 2 -1 view_args)
+  morphreg_cli_expect_exit(FitPhotosView${name} 1 "${text}" ${view_model} ${view_args})
+  set_tests_properties(CliTest.FitPhotosView${name} PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
+endforeach()
 
 # warp: one small head onto the next head's landmarks, with the error against that head (measured mean 3.58 mm).
 set(small_warp warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json

@@ -264,7 +264,7 @@ bad_file(tiny_silhouette.json "{\"view\": \"profile\", \"image\": {\"width\": 10
 bad_file(malformed_profile.json "{\"view\": \"profile\", \"image\": {\"width\": 1000")
 bad_file(negative_size.json "{\"view\": \"profile\", \"image\": {\"width\": -1000, \"height\": 1200}, \"units\": \"px\","
          "\"nose_tip\": [649, 600], \"silhouette\": [[641, 608], [642, 605], [643, 603]]}")
-foreach(case "tiny_silhouette;tiny_silhouette.json;check that the silhouette traces" "malformed_profile;malformed_profile.json: "
+foreach(case "tiny_silhouette;tiny_silhouette.json;check that the outline traces" "malformed_profile;malformed_profile.json: "
         "negative_size;negative_size.json: ;image size -1000 x 1200 px must be positive")
   list(GET case 0 kind)
   list(SUBLIST case 1 -1 text)

@@ -84,14 +84,15 @@ keepKnownLandmarks (LandmarkPositions& landmarks, const LandmarkVertices& known)
 std::vector<std::string>
 frontalLandmarkIds ();
 
-/** \brief Whether \a id is a point of a frontal photo's outline rather than a fixed point of the face: the jaw, chin,
- *  neck and head-contour ids (docs/landmarks.md 29-40) and the menton `chin`. Where the outline runs over the head depends
- *  on the head's shape and pose, so no one vertex of a model marks it.
+/** \brief Whether \a id is a point of a photo's outline rather than a fixed point of the face: the jaw, chin,
+ *  neck and head-contour ids (docs/landmarks.md 29-40), the menton `chin` and iBUG-68's jaw line (ibug68_00 ..
+ *  ibug68_16). Where the outline runs over the head depends on the head's shape and pose, so no one vertex of a model
+ *  marks it.
  *  \param[in] id the landmark id
  *  \return true for an outline id
  */
 bool
-isFrontalContourLandmarkId (const std::string& id);
+isOutlineLandmarkId (const std::string& id);
 
 /** \brief The entries of \a landmarks whose id is one of frontalLandmarkIds().
  *  \param[in] landmarks landmark vertices of a mesh or model

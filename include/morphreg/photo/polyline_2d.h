@@ -18,12 +18,38 @@ public:
    */
   explicit Polyline2d (Eigen::Matrix2Xd points);
 
+  /** \brief Where a query lands on the polyline. */
+  struct Projection
+  {
+    Eigen::Vector2d point; ///< the closest point
+    Eigen::Index segment;  ///< the segment it lies on (from point segment to point segment + 1)
+    double along;          ///< its position on the segment, 0 at the segment's start, 1 at its end
+  };
+
   /** \brief The point of the polyline closest to \a query.
    *  \param[in] query the point
    *  \return the closest point on any segment
    */
   Eigen::Vector2d
-  closestPoint (const Eigen::Vector2d& query) const;
+  closestPoint (const Eigen::Vector2d& query) const
+  {
+    return project (query).point;
+  }
+
+  /** \brief The point of the polyline closest to \a query, with its segment.
+   *  \param[in] query the point
+   *  \return the closest point, its segment and its position on it
+   */
+  Projection
+  project (const Eigen::Vector2d& query) const;
+
+  /** \brief The unit normal of segment \a segment on the side away from the region the polyline bounds when it is
+   *  closed by a straight line from its last point to its first (the head, for an outline traced around it).
+   *  \param[in] segment a segment index (0 .. points - 2)
+   *  \return the outward unit normal
+   */
+  Eigen::Vector2d
+  outwardNormal (Eigen::Index segment) const;
 
   /** \brief Whether \a point (a closestPoint result) is one of the polyline's two ends: a query beyond the traced
    *  part of a silhouette lands there, and says nothing about where the outline goes.
@@ -45,5 +71,6 @@ public:
 
 private:
   Eigen::Matrix2Xd points_;
+  double orientation_ = 1.0; ///< +1 or -1: the sign of the closed polyline's area, which side is outside
 };
 } // namespace morphreg

@@ -2,7 +2,7 @@
 #pragma once
 /** \file pose_shape_least_squares.h
  *  \brief The Gauss-Newton solver of every fit of X = s R (mu + M m) + t to weighted point rows: MorphableICP,
- *  TwoViewFitting and the similarity-only refinement of the coarse and global starts (no shape unknowns).
+ *  PhotoFitting and the similarity-only refinement of the coarse and global starts (no shape unknowns).
  */
 #include <morphreg/model/morphable_model.h>
 
@@ -208,7 +208,7 @@ private:
 /** \brief The one rule for too few correspondences. Each iteration of a fit counts its point rows (the
  *  correspondences left after rejection, plus landmark rows) and, if they are fewer than \a needed, throws
  *  TooFewCorrespondencesError naming \a who, the counts and what to check: MorphableICP needs as many rows as
- *  unknowns (7, or 6 without scale, plus the phase's coefficients); TwoViewFitting needs 3 profile rows (the
+ *  unknowns (7, or 6 without scale, plus the phase's coefficients); PhotoFitting needs 3 outline rows (the
  *  landmarks and the prior fix the rest). The coarse and global starts score many hypotheses: one left with fewer
  *  rows than the similarity's 7 unknowns stops refining and loses on its score instead.
  *  \param[in] rows the point rows of this iteration

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
-#include <morphreg/photo/frontal_texture.h>
+#include <morphreg/photo/photo_texture.h>
+#include <morphreg/photo/photo_view.h>
 
 #include <algorithm>
 #include <cmath>
@@ -56,12 +57,72 @@ sampleBilinear (const RgbImage& image, const Eigen::Vector2d& p)
       fy * ((1 - fx) * image.pixel (x0, y1).cast<double> () + fx * image.pixel (x1, y1).cast<double> ());
   return colour.array ().round ().cast<unsigned char> ();
 }
+
+/** One photo's colour of each vertex and its weight (0 where the camera does not see the vertex). */
+struct ViewColours
+{
+  Eigen::Matrix3Xd colours;
+  Eigen::VectorXd weights;
+};
+
+ViewColours
+viewColours (const TriangleMesh& mesh, const TexturePhoto& photo, double depth_tolerance)
+{
+  const RgbImage& image = *photo.image;
+  if (image.width <= 0 || image.height <= 0 ||
+      image.data.size () != 3 * static_cast<size_t> (image.width) * static_cast<size_t> (image.height))
+    throw InvalidInputError ("blendedTexture: an image is empty or its data does not match its size");
+  const Eigen::Index n = mesh.numVertices ();
+  const PhotoCamera& camera = photo.camera;
+  // Vertices in pixels: (x, y) in the photo, and how near the camera they lie, in pixels at the head.
+  const double pixels_per_unit = camera.pixelsPerUnit (mesh.vertices.rowwise ().mean ());
+  Eigen::Matrix3Xd pixels (3, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    pixels.col (i).head<2> () = camera.project (mesh.vertices.col (i));
+    pixels (2, i) = -camera.toCamera (mesh.vertices.col (i)).z () * pixels_per_unit;
+  }
+  const std::vector<double> depth = depthBuffer (pixels, mesh.triangles, image.width, image.height);
+  const Eigen::Matrix3Xd normals = vertexNormals (mesh);
+  ViewColours view{Eigen::Matrix3Xd::Zero (3, n), Eigen::VectorXd::Zero (n)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double x = pixels (0, i), y = pixels (1, i);
+    const double facing = normals.col (i).dot (camera.towardsCamera (mesh.vertices.col (i)));
+    if (!(facing > 0.0) || !(x >= 0.0 && x < image.width && y >= 0.0 && y < image.height))
+      continue;
+    const double front = depth[static_cast<size_t> (y) * image.width + static_cast<size_t> (x)];
+    if (pixels (2, i) < front - depth_tolerance)
+      continue;
+    view.weights[i] = facing * facing;
+    view.colours.col (i) = sampleBilinear (image, pixels.col (i).head<2> ()).cast<double> ();
+  }
+  return view;
+}
 } // namespace
 
 int
 VertexTexture::visibleCount () const
 {
   return static_cast<int> (std::count (visible.begin (), visible.end (), true));
+}
+
+VertexTexture
+blendedTexture (const TriangleMesh& mesh, const std::vector<TexturePhoto>& photos, double depth_tolerance)
+{
+  const Eigen::Index n = mesh.numVertices ();
+  Eigen::Matrix3Xd sum = Eigen::Matrix3Xd::Zero (3, n);
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero (n);
+  for (const TexturePhoto& photo : photos) {
+    const ViewColours view = viewColours (mesh, photo, depth_tolerance);
+    sum += view.colours * view.weights.asDiagonal ();
+    weights += view.weights;
+  }
+  VertexTexture texture{VertexColours::Constant (3, n, 128), std::vector<bool> (static_cast<size_t> (n), false)};
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (weights[i] > 0.0) {
+      texture.visible[static_cast<size_t> (i)] = true;
+      texture.colours.col (i) = (sum.col (i) / weights[i]).array ().round ().cast<unsigned char> ();
+    }
+  return texture;
 }
 
 VertexTexture
@@ -72,28 +133,6 @@ frontalTexture (const TriangleMesh& image_mesh, const PhotoNormalisation& fronta
     throw InvalidInputError ("frontalTexture: the image is " + std::to_string (image.width) + " x " +
                              std::to_string (image.height) + " px, but the frontal annotations are for " +
                              std::to_string (frontal.width ()) + " x " + std::to_string (frontal.height ()) + " px");
-  if (image.data.size () != 3 * static_cast<size_t> (image.width) * static_cast<size_t> (image.height))
-    throw InvalidInputError ("frontalTexture: the image data does not match its size");
-  const Eigen::Index n = image_mesh.numVertices ();
-  // Vertices in pixels: (x, y) in the photo, depth towards the camera in pixels.
-  Eigen::Matrix3Xd pixels (3, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    pixels.col (i).head<2> () = frontal.toPixel (image_mesh.vertices.col (i).head<2> ());
-    pixels (2, i) = image_mesh.vertices (2, i) * frontal.longerSide ();
-  }
-  const std::vector<double> depth = depthBuffer (pixels, image_mesh.triangles, image.width, image.height);
-  const Eigen::Matrix3Xd normals = vertexNormals (image_mesh);
-  VertexTexture texture{VertexColours::Constant (3, n, 128), std::vector<bool> (static_cast<size_t> (n), false)};
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double x = pixels (0, i), y = pixels (1, i);
-    if (!(normals (2, i) > 0.0) || !(x >= 0.0 && x < image.width && y >= 0.0 && y < image.height))
-      continue;
-    const double front = depth[static_cast<size_t> (y) * image.width + static_cast<size_t> (x)];
-    if (pixels (2, i) < front - depth_tolerance)
-      continue;
-    texture.visible[i] = true;
-    texture.colours.col (i) = sampleBilinear (image, pixels.col (i).head<2> ());
-  }
-  return texture;
+  return blendedTexture (image_mesh, {{frontalCamera (frontal), &image}}, depth_tolerance);
 }
 } // namespace morphreg

@@ -7,8 +7,8 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
-#include <morphreg/photo/frontal_texture.h>
-#include <morphreg/photo/two_view_fitting.h>
+#include <morphreg/photo/photo_texture.h>
+#include <morphreg/photo/photo_fitting.h>
 #include <morphreg/synthetic/photo_simulator.h>
 
 #include <gtest/gtest.h>
@@ -122,8 +122,8 @@ TEST (FrontalTextureTest, FittedHeadTakesTheColoursAtItsLandmarks)
   morphreg::synthetic::PhotoSimulator::Parameters camera;
   const auto photos = morphreg::synthetic::PhotoSimulator (camera).photograph (
       truth, morphreg::test::frontalLandmarks (), generator.profileLine (), 3);
-  const morphreg::TwoViewFit fit =
-      morphreg::TwoViewFitting (morphreg::test::photoTestModel ().model).fitJoint (photos.profile, photos.frontal);
+  const morphreg::PhotoFit fit =
+      morphreg::PhotoFitting (morphreg::test::photoTestModel ().model).fitJoint (photos.profile, photos.frontal);
   const RgbImage image = gradientImage (camera.width, camera.height, 5);
   const morphreg::VertexTexture texture =
       morphreg::frontalTexture (fit.image_mesh, photos.frontal.normalisation (), image);
@@ -150,5 +150,47 @@ TEST (FrontalTextureTest, FittedHeadTakesTheColoursAtItsLandmarks)
   EXPECT_LE (texture.visibleCount (), facing);
   EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, static_cast<double> (texture.visibleCount ()) / facing, 0.957);
   EXPECT_LT (facing, 0.8 * fit.image_mesh.numVertices ());
+}
+
+/** A \a width x \a height photo of one colour. */
+RgbImage
+plainImage (int width, int height, unsigned char red, unsigned char green, unsigned char blue)
+{
+  RgbImage image{width, height, std::vector<unsigned char> (3 * static_cast<size_t> (width) * height)};
+  for (size_t k = 0; k < image.data.size (); k += 3) {
+    image.data[k] = red;
+    image.data[k + 1] = green;
+    image.data[k + 2] = blue;
+  }
+  return image;
+}
+
+// Texture from every photo (issue 34, item 4): a square facing +Z seen straight on by a red photo and at 60 degrees by
+// a blue one takes both, weighted by the squared cosine of the viewing angle (1 and 1/4: 4/5 red, 1/5 blue); a green
+// photo from behind sees its back and gives nothing.
+TEST (FrontalTextureTest, EveryPhotoColoursTheVerticesItSeesWeightedByTheViewingAngle)
+{
+  const morphreg::TriangleMesh mesh = square (9, 10.0, 0.0);
+  const Eigen::Matrix3d front = Eigen::Vector3d (1.0, -1.0, -1.0).asDiagonal (); // looks along -Z, image y down
+  const auto camera = [&] (double degrees) {
+    return morphreg::PhotoCamera::orthographic (
+        front * Eigen::AngleAxisd (degrees * M_PI / 180.0, Eigen::Vector3d::UnitY ()).toRotationMatrix (), 4.0,
+        Eigen::Vector2d (100.0, 100.0));
+  };
+  const RgbImage red = plainImage (200, 200, 200, 0, 0), blue = plainImage (200, 200, 0, 0, 200),
+                 green = plainImage (200, 200, 0, 200, 0);
+  const morphreg::VertexTexture texture =
+      morphreg::blendedTexture (mesh, {{camera (0.0), &red}, {camera (60.0), &blue}, {camera (180.0), &green}});
+  EXPECT_EQ (texture.visibleCount (), static_cast<int> (mesh.numVertices ()));
+  for (Eigen::Index v = 0; v < mesh.numVertices (); ++v) {
+    EXPECT_NEAR (texture.colours (0, v), 160, 1) << v;
+    EXPECT_EQ (texture.colours (1, v), 0) << v;
+    EXPECT_NEAR (texture.colours (2, v), 40, 1) << v;
+  }
+  // Only the photo from behind: nothing is seen.
+  EXPECT_EQ (morphreg::blendedTexture (mesh, {{camera (180.0), &green}}).visibleCount (), 0);
+  // A photo whose pixels are missing is named.
+  const RgbImage empty{200, 200, {}};
+  EXPECT_THROW (morphreg::blendedTexture (mesh, {{camera (0.0), &empty}}), morphreg::InvalidInputError);
 }
 } // namespace
