@@ -60,7 +60,8 @@ def test_coefficients_are_lengths_over_prior_standard_deviations(fit, model):
     assert np.abs(fit.coefficients_mm).max() > 1.0  # a real fit, not the mean
     assert relative_difference(fit.coefficients, fit.coefficients_mm / sd) <= 1e-12
     vertices = model.instance(fit.coefficients, 5) @ fit.rotation.T * fit.scale + fit.translation
-    assert np.abs(vertices - fit.vertices).max() < 1e-6
+    # The similarity is PCL's single-precision final transformation: about 1e-5 mm at 200 mm from the origin.
+    assert np.abs(vertices - fit.vertices).max() < 1e-4
 
 
 def test_equals_the_command_line(model, model_file, scan, tmp_path):
