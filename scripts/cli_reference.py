@@ -3,11 +3,13 @@
 """Writes docs/cli.md, the command line reference, from the help the `morphreg` executable prints: `morphreg --help`,
 then `morphreg <command> --help` for every subcommand that help lists, each in a code block. The reference is the
 help itself, so the two cannot disagree; --check compares instead of writing and names the first line that differs
-(StyleTest.CliReferenceIsCurrent runs it against the built executable).
+(StyleTest.CliReferenceIsCurrent runs it against the built executable); both refuse a short flag that means
+different options in different subcommands.
 
 usage: cli_reference.py [--check] MORPHREG [OUTPUT]    (OUTPUT: docs/cli.md of this tree by default)
 """
 import argparse
+import re
 import pathlib
 import subprocess
 import sys
@@ -62,6 +64,15 @@ def reference(binary):
     return "\n".join(parts)
 
 
+def short_flag_conflicts(text):
+    """Sentences naming each short flag that stands for different long options in different subcommands."""
+    meanings = {}
+    for short, long in re.findall(r"^\s+(-[A-Za-z]),(--[A-Za-z0-9-]+)", text, flags=re.M):
+        meanings.setdefault(short, set()).add(long)
+    return [f"{short} means {' and '.join(sorted(longs))}" for short, longs in sorted(meanings.items())
+            if len(longs) > 1]
+
+
 def first_difference(expected, actual):
     """A sentence naming the first line where the file `actual` differs from the generated `expected`."""
     want, have = expected.splitlines(), actual.splitlines()
@@ -80,6 +91,9 @@ def main():
     parser.add_argument("output", nargs="?", type=pathlib.Path, default=DEFAULT_OUTPUT)
     args = parser.parse_args()
     text = reference(args.binary)
+    conflicts = short_flag_conflicts(text)
+    if conflicts:
+        sys.exit("short flags must mean one option in every subcommand: " + "; ".join(conflicts))
     if not args.check:
         args.output.write_text(text)
         print(f"wrote {args.output}")

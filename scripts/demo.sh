@@ -9,6 +9,6 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh morphreg_cli
 mkdir -p out/demo
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
-  exec xvfb-run -a -s "-screen 0 1280x1024x24" ./build/tools/morphreg demo --out out/demo "$@"
+  exec xvfb-run -a -s "-screen 0 1280x1024x24" ./build/tools/morphreg demo --out-dir out/demo "$@"
 fi
-exec ./build/tools/morphreg demo --out out/demo "$@"
+exec ./build/tools/morphreg demo --out-dir out/demo "$@"

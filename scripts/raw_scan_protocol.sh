@@ -10,15 +10,15 @@ cli=${MORPHREG:-build/tools/morphreg}
 out=${1:-out/raw_scan_protocol}
 mkdir -p "$out"
 
-"$cli" synth --seed 1 --count 200 --out "$out/population" --quiet
+"$cli" synth --seed 1 --count 200 --out-dir "$out/population" --quiet
 "$cli" build-model --dir "$out/population" --regions "$out/population/regions.json" \
     --landmark-vertices "$out/population/landmark_vertices.json" --components 60 --out "$out/registering.h5" --quiet
-"$cli" synth --seed 1001 --count 100 --scans 100 --scale-deviation 0 --out "$out/scanned" --quiet
+"$cli" synth --seed 1001 --count 100 --scans 100 --scale-deviation 0 --out-dir "$out/scanned" --quiet
 for i in $(seq 0 99); do echo "scan_$i.pcd"; done >"$out/scanned/manifest.csv"
 "$cli" build-model --from-scans "$out/scanned/manifest.csv" --model "$out/registering.h5" --components 20 \
     --report-dir "$out/raw_scans" --out "$out/raw.h5"
 "$cli" build-model --dir "$out/scanned" --components 20 --out "$out/true.h5" --quiet
-"$cli" synth --seed 1101 --count 20 --out "$out/held_out" --quiet
+"$cli" synth --seed 1101 --count 20 --out-dir "$out/held_out" --quiet
 
 # The resampled meshes of the scans that made it (a scan left out has its report but no <id>.ply).
 mapfile -t resampled < <(find "$out/raw_scans" -name 'scan_*.ply' ! -name '*_fit.ply' | sort)

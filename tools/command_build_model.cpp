@@ -294,7 +294,7 @@ registerBuildModelCommand (CLI::App& app)
   CLI::App* command =
       app.add_subcommand ("build-model", "build a (multi-region) PCA model from meshes in correspondence");
   auto* meshes =
-      command->add_option ("-m,--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl .gltf .glb), repeatable");
+      command->add_option ("--mesh", options->meshes, "mesh file (.ply .obj .vtk .stl .gltf .glb), repeatable");
   auto* directory = command->add_option ("-d,--dir", options->directory,
                                          "folder of meshes (the heads of its population.json if present)");
   command->add_option (

@@ -112,12 +112,12 @@ registerDemoCommand (CLI::App& app)
 {
   auto options = std::make_shared<DemoOptions> ();
   CLI::App* command =
-      app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out");
-  command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
+      app.add_subcommand ("demo", "population -> model -> scan of a new head -> registration, into --out-dir");
+  command->add_option ("--out-dir", options->out, "output folder")->capture_default_str ();
   command->add_option ("-n,--count", options->count, "population size")
       ->check (inRange (2, 5000))
       ->capture_default_str ();
-  command->add_option ("-s,--seed", options->seed, "population seed")->capture_default_str ();
+  command->add_option ("--seed", options->seed, "population seed")->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
       ->check (inRange (20, 44))
       ->capture_default_str ();

@@ -119,7 +119,7 @@ registerRenderCommand (CLI::App& app)
       app.add_subcommand ("render", "write a PNG of meshes, clouds and landmarks (run under xvfb-run -a)");
   command
       ->add_option (
-          "-m,--mesh", options->meshes,
+          "--mesh", options->meshes,
           "mesh file (.ply .obj .vtk .stl .off .gltf .glb; drawn with its vertex colours if it has any), repeatable")
       ->check (CLI::ExistingFile);
   command->add_option ("-c,--cloud", options->clouds, "point cloud file (.pcd .ply .obj .gltf .glb), repeatable")

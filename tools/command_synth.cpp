@@ -80,11 +80,11 @@ registerSynthCommand (CLI::App& app)
   auto options = std::make_shared<SynthOptions> ();
   CLI::App* command =
       app.add_subcommand ("synth", "generate synthetic heads (PLY + population.json) and scans of them");
-  command->add_option ("-o,--out", options->out, "output directory")->capture_default_str ();
+  command->add_option ("--out-dir", options->out, "output folder")->capture_default_str ();
   command->add_option ("-n,--count", options->count, "number of heads")
       ->check (inRange (1, 5000))
       ->capture_default_str ();
-  command->add_option ("-s,--seed", options->seed, "seed of the first head (head i uses seed + i)")
+  command->add_option ("--seed", options->seed, "seed of the first head (head i uses seed + i)")
       ->capture_default_str ();
   command->add_option ("-r,--resolution", options->resolution, "mesh resolution (even, 20-44; 40 = 9602 vertices)")
       ->check (inRange (20, 44))

@@ -354,8 +354,8 @@ registerWarpCommand (CLI::App& app)
   auto options = std::make_shared<WarpOptions> ();
   CLI::App* command = app.add_subcommand (
       "warp", "warp a mesh with a 3D thin plate spline (global or segmented) or re-posture it with rigid bones");
-  command->add_option ("-m,--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl .off .gltf .glb)")->required ();
-  command->add_option ("-s,--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
+  command->add_option ("--mesh", options->mesh, "mesh to warp (.ply .obj .vtk .stl .off .gltf .glb)")->required ();
+  command->add_option ("--source", options->source, "source landmarks on the mesh (.pp .json .csv)")->required ();
   command->add_option ("-t,--target", options->target, "target landmarks, same names (.pp .json .csv)")->required ();
   command
       ->add_option ("-o,--out", options->out,

@@ -2,6 +2,7 @@
 // The morphreg command line: subcommands are registered by the tools/command_*.cpp files.
 #include "commands.h"
 #include "console.h"
+#include "option_suggestions.h"
 #include "pipeline.h"
 #include "provenance.h"
 
@@ -26,6 +27,10 @@ main (int argc, char** argv)
               "status is \"failed\").");
   morphreg::tools::registerCommands (app);
   morphreg::tools::addVerbosityOptions (app);
+  if (const std::string unknown = morphreg::tools::unknownArgumentMessage (app, argc, argv); !unknown.empty ()) {
+    std::cerr << "morphreg: " << unknown << "\nRun with --help for more information.\n";
+    return morphreg::tools::kExitBadArguments;
+  }
   try {
     app.parse (argc, argv);
   }

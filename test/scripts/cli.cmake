@@ -27,17 +27,27 @@ morphreg_cli_test(SynthWritesHeadsAndScans FIXTURES_SETUP cli_synth
   OUTPUT "wrote 2 heads, 1 scans and 0 photo pairs"
   FILES ${cli_dir}/synth/head_000.ply ${cli_dir}/synth/head_001.ply ${cli_dir}/synth/scan_0.pcd
         ${cli_dir}/synth/regions.json
-  ARGS synth --count 2 --scans 1 --range-mesh --quiet --out ${cli_dir}/synth)
+  ARGS synth --count 2 --scans 1 --range-mesh --quiet --out-dir ${cli_dir}/synth)
 morphreg_cli_expect_exit(BadArgumentExits2 2 "--count" synth --count 0)
+# An unknown option or command is named with the nearest known one, before a missing required option is reported;
+# negative numbers as values are not taken for options.
+morphreg_cli_test(UnknownOptionNamesTheNearest EXPECT_CODE 2 ERROR "register: unknown option --scna; did you mean --scan?"
+  ARGS register --scna scan.ply)
+morphreg_cli_test(UnknownOptionFarFromAnyIsNamed EXPECT_CODE 2 ERROR "synth: unknown option --zzzzzzzzzz" FORBID "did you mean"
+  ARGS synth --zzzzzzzzzz)
+morphreg_cli_test(UnknownCommandNamesTheNearest EXPECT_CODE 2 ERROR "unknown command regster; did you mean register?"
+  ARGS regster --scan scan.ply)
+morphreg_cli_test(NegativeValueIsNotAnOption EXPECT_CODE 2 ERROR "--noise" FORBID "unknown option"
+  ARGS synth --count 1 --scans 1 --noise -1 --quiet --out-dir ${cli_dir}/negative)
 morphreg_cli_expect_exit(BadScannerSettingIsNamed 2 "--noise" synth --count 1 --scans 1 --noise -1 --quiet
-  --out ${cli_dir}/bad)
+  --out-dir ${cli_dir}/bad)
 
 # build-model and register on a small population (12 heads of 3458 vertices, a coarse scan of the first).
 morphreg_cli_test(SmallPopulation FIXTURES_SETUP cli_small
   FILES ${cli_dir}/small/head_011.ply ${cli_dir}/small/scan_0.pcd ${cli_dir}/small/scan_0_truth.ply
         ${cli_dir}/small/photo_0_profile.json ${cli_dir}/small/photo_0_frontal.json
   ARGS synth --count 12 --resolution 24 --scans 1 --photos 1 --angular-samples 200 --row-spacing 3 --quiet
-       --out ${cli_dir}/small)
+       --out-dir ${cli_dir}/small)
 morphreg_cli_test(BuildModelFromSynthFolder FIXTURES_REQUIRED cli_small FIXTURES_SETUP cli_model
   OUTPUT "small_model.h5: 3458 vertices, 7 region\\(s\\), components per region \\[8,8,8,8,8,8,8\\], 45 landmarks"
   FILES ${cli_dir}/small_model.h5
@@ -246,7 +256,7 @@ set_tests_properties(CliTest.RegisterCorruptModelIsNamed CliTest.RegisterMissing
 morphreg_cli_test(BatchScans FIXTURES_SETUP cli_batch_scans
   FILES ${cli_dir}/batch_scans/scan_0.pcd ${cli_dir}/batch_scans/scan_3.pcd ${cli_dir}/batch_scans/scan_0_landmarks.json
   ARGS synth --count 4 --resolution 24 --scans 4 --angular-samples 200 --row-spacing 3 --quiet
-       --out ${cli_dir}/batch_scans)
+       --out-dir ${cli_dir}/batch_scans)
 file(WRITE ${cli_dir}/batch.csv "scan,landmarks,id\nbatch_scans/scan_0.pcd,batch_scans/scan_0_landmarks.json\n"
            "batch_scans/scan_1.pcd\nbatch_scans/scan_2.pcd,,third\nbatch_scans/scan_3.pcd\n")
 file(WRITE ${cli_dir}/batch_failing.csv "batch_scans/scan_0.pcd\nscan_flat.pcd\nno_such_scan.pcd\nbatch_scans/scan_1.pcd\n")
@@ -391,7 +401,7 @@ morphreg_cli_test(DemoRunsWithoutScreenshot
   OUTPUT "demo: 6 heads.*fitted mesh .*fitted.ply, report .*report.json\n.*vertex RMS [0-9.]+ mm"
   REPORT ${cli_dir}/demo/report.json FILES ${cli_dir}/demo/fitted.ply
   ARGS demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --no-screenshot --quiet
-       --out ${cli_dir}/demo)
+       --out-dir ${cli_dir}/demo)
 
 # Screenshots under a virtual X server, one at a time.
 morphreg_cli_test(RenderWritesPng FIXTURES_REQUIRED cli_synth XVFB OUTPUT "wrote .*render.png \\(320x240\\)"
@@ -490,7 +500,7 @@ morphreg_cli_test(DemoWritesScreenshot XVFB FIXTURES_SETUP cli_demo_shot OUTPUT 
   REPORT ${cli_dir}/demo_shot/report.json FILES ${cli_dir}/demo_shot/overlay.png ${cli_dir}/demo_shot/fitted.ply
   CHECKS ${cli_scripts}/check_png.cmake DEFINE PNG=${cli_dir}/demo_shot/overlay.png WIDTH=400 HEIGHT=300
   ARGS demo --count 6 --resolution 20 --angular-samples 150 --row-spacing 4 --iterations 40 --width 400 --height 300
-       --convergence-plot --quiet --out ${cli_dir}/demo_shot)
+       --convergence-plot --quiet --out-dir ${cli_dir}/demo_shot)
 # The demo's overlay: the fit coloured by residual beside its colour bar, filling the picture.
 morphreg_command_test(CliTest.DemoOverlayShowsFitAndColourBar FIXTURES_REQUIRED cli_demo_shot
   COMMAND ${Python3_EXECUTABLE} ${cli_scripts}/check_png_pixels.py ${cli_dir}/demo_shot/overlay.png 400 300
@@ -505,7 +515,7 @@ morphreg_cli_test(RegisterScreenshotWithoutDisplayFails FIXTURES_REQUIRED "cli_s
        --screenshot ${cli_dir}/no_display.png --out ${cli_dir}/no_display.ply)
 morphreg_cli_test(DemoScreenshotWithoutDisplayFailsEarly EXPECT_CODE 1 ERROR "--no-screenshot"
   ABSENT ${cli_dir}/bad_demo PROPERTIES ENVIRONMENT_MODIFICATION "DISPLAY=unset:"
-  ARGS demo --count 2 --out ${cli_dir}/bad_demo)
+  ARGS demo --count 2 --out-dir ${cli_dir}/bad_demo)
 
 # fit-photos: the small model fitted to the annotated photos of the first head (measured: vertex RMS 1.07 mm against
 # the truth with the joint fit, width RMS 0.20 mm).

@@ -290,7 +290,7 @@ morphreg_bad_input(FitPhotosReportIsTheFrontal 1 TEXT "frontal.json" "input" SET
 morphreg_bad_input(RenderOutIsTheMesh 1 TEXT "head.ply" "input" SETUP ${mesh} XVFB
   ARGS render --mesh @CASE@/head.ply --width 64 --height 64 --out @CASE@/head.ply)
 morphreg_bad_input(SynthOutIsAFile 1 TEXT "head.ply: exists and is not a folder" SETUP ${mesh}
-  ARGS synth --count 1 --resolution 20 --quiet --out @CASE@/head.ply)
+  ARGS synth --count 1 --resolution 20 --quiet --out-dir @CASE@/head.ply)
 morphreg_bad_input(RegisterOutFolderMissing 1 TEXT "@CASE@/no_such_folder" SETUP ${scan} ${model} FORBID "registering"
   ARGS register --scan @CASE@/scan.pcd --model @CASE@/model.h5 --out @CASE@/no_such_folder/fit.ply)
 morphreg_bad_input(RegisterOutUnderAFile 1 TEXT "scan.pcd" SETUP ${scan} ${model} FORBID "registering"
@@ -309,7 +309,7 @@ morphreg_bad_input(FitPhotosDiskFull 1 TEXT "photos.ply" SETUP ${model} ${profil
 morphreg_bad_input(BuildModelDiskFull 1 TEXT "model_out.h5" SETUP ${mesh} ${mesh_1} ${full_disk}
   ARGS build-model --mesh @CASE@/head.ply --mesh @CASE@/head_1.ply --out @CASE@/model_out.h5)
 morphreg_bad_input(SynthDiskFull 1 TEXT "synth/" ${full_disk}
-  ARGS synth --count 2 --resolution 20 --quiet --out @CASE@/synth)
+  ARGS synth --count 2 --resolution 20 --quiet --out-dir @CASE@/synth)
 
 # --- Options out of range ---------------------------------------------------------------------------------------------
 morphreg_bad_input(ComponentsNegative 2 TEXT "--components" SETUP ${scan} ${model}
@@ -317,8 +317,8 @@ morphreg_bad_input(ComponentsNegative 2 TEXT "--components" SETUP ${scan} ${mode
 morphreg_bad_input(IterationsZero 2 TEXT "--iterations" SETUP ${scan} ${model}
   ARGS register --scan @CASE@/scan.pcd ${register_args} --iterations 0)
 morphreg_bad_input(SynthAngularSamplesTooMany 2 TEXT "--angular-samples"
-  ARGS synth --count 1 --scans 1 --angular-samples 2000000000 --out @CASE@/synth)
-morphreg_bad_input(SynthCountTooMany 2 TEXT "--count" ARGS synth --count 2000000000 --out @CASE@/synth)
+  ARGS synth --count 1 --scans 1 --angular-samples 2000000000 --out-dir @CASE@/synth)
+morphreg_bad_input(SynthCountTooMany 2 TEXT "--count" ARGS synth --count 2000000000 --out-dir @CASE@/synth)
 morphreg_bad_input(RenderTooWide 2 TEXT "--width" SETUP ${mesh}
   ARGS render --mesh @CASE@/head.ply --width 100000 --out @CASE@/render.png)
 
@@ -391,7 +391,7 @@ morphreg_bad_input(BatchOutDirIsAFile 1 TEXT "out" SETUP ${mesh} ${mesh_1} ${mod
   copy,${bad}/scans_here.csv,@CASE@/list.csv copy,${small}/population.json,@CASE@/out
   ARGS register --scans @CASE@/list.csv --model @CASE@/model.h5 --out-dir @CASE@/out)
 morphreg_bad_input(DemoOutIsAFile 1 TEXT "demo.ply: exists and is not a folder" SETUP copy,${small}/head_000.ply,@CASE@/demo.ply
-  ARGS demo --count 2 --resolution 20 --no-screenshot --quiet --out @CASE@/demo.ply)
+  ARGS demo --count 2 --resolution 20 --no-screenshot --quiet --out-dir @CASE@/demo.ply)
 # An empty output name is named as such, for every subcommand that writes a file.
 foreach(case "register;register --scan @CASE@/scan.pcd --model @CASE@/model.h5"
         "resample;resample --scan @CASE@/scan.pcd --model @CASE@/model.h5"
@@ -430,7 +430,7 @@ morphreg_bad_input(BuildModelDiskFullKeepsTheOldModel 1 TEXT "model_out.h5" SETU
   ARGS build-model --mesh @CASE@/head.ply --mesh @CASE@/head_1.ply --out @CASE@/model_out.h5)
 morphreg_bad_input(SynthDiskFullKeepsTheOldPopulation 1 TEXT "synth/" ${full_disk}
   SETUP copy,${small}/population.json,@CASE@/synth/population.json copy,${small}/head_000.ply,@CASE@/synth/head_000.ply
-  ARGS synth --count 2 --resolution 20 --quiet --out @CASE@/synth)
+  ARGS synth --count 2 --resolution 20 --quiet --out-dir @CASE@/synth)
 morphreg_bad_input(BuildModelFromScansFailsKeepsTheOldReports 1 TEXT "a model needs at least two"
   SETUP ${model} copy,${bad}/scan_one.pcd,@CASE@/scans/a.pcd copy,${bad}/scan_one.pcd,@CASE@/scans/b.pcd
   copy,${small}/population.json,@CASE@/reports/summary.json
@@ -580,7 +580,7 @@ morphreg_bad_input(JobsNegative 2 TEXT "--jobs" "Value -1 is not from 0 to 4096"
 morphreg_bad_input(RenderOpacity 2 TEXT "--opacity" "Value 2 is not a number from 0 to 1" SETUP ${mesh}
   ARGS render --mesh @CASE@/head.ply --opacity 2 --out @CASE@/r.png)
 morphreg_bad_input(DemoCountOne 2 TEXT "--count" "Value 1 is not from 2 to 5000"
-  ARGS demo --count 1 --no-screenshot --out @CASE@/demo)
+  ARGS demo --count 1 --no-screenshot --out-dir @CASE@/demo)
 morphreg_bad_input(EvaluateModelNoMeshes 2 TEXT "--meshes" SETUP ${model} ARGS evaluate-model --model @CASE@/model.h5)
 morphreg_bad_input(ResampleLandmarkReferenceWithoutLandmarks 1 TEXT "--reference landmarks needs --landmarks"
   SETUP ${scan} ${model}
