@@ -19,7 +19,7 @@ rm -rf "$work" && mkdir -p "$work/loop"
 cd "$work"
 
 "$morphreg" synth --count "$scans" --resolution 24 --scans "$scans" --angular-samples 200 --row-spacing 3 --quiet \
-  --out data > /dev/null
+  --out-dir data > /dev/null
 "$morphreg" build-model --dir data --regions data/regions.json --landmark-vertices data/landmark_vertices.json \
   --components 8 --quiet --out model.h5 > /dev/null
 { echo "scan,landmarks,id"; for ((i = 0; i < scans; ++i)); do echo "data/scan_$i.pcd,,scan_$i"; done; } > manifest.csv
