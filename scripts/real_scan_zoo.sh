@@ -10,17 +10,20 @@
 #   scripts/real_scan_zoo.sh [--poses N] [--check] [--build DIR] [--out DIR] [--jobs N] [--data DIR]
 #     --poses N   random poses per scan and unit (default 8; the ctest runs 1)
 #     --check     exit 1 unless every case exits 0 with status ok within its face-median target
+#     --known-miss NAME  a case known to miss its target (repeatable): reported, not failed; --check fails if it
+#                 meets its target (so that the list only shrinks)
 #     --build     the build folder with tools/morphreg and test/morphreg_zoo_tool (default build)
 #     --out       the work folder (default out/zoo)
 #     --jobs      registrations at once (default 2, each on one core)
 #     --data      the shared data sets (default ../shared/data)
 set -uo pipefail
 cd "$(dirname "$0")/.."
-POSES=8 CHECK=0 BUILD=build OUT=out/zoo JOBS=2 DATA=../shared/data
+POSES=8 CHECK=0 BUILD=build OUT=out/zoo JOBS=2 DATA=../shared/data KNOWN_MISSES=
 while [ $# -gt 0 ]; do
   case $1 in
     --poses) POSES=$2; shift 2 ;;
     --check) CHECK=1; shift ;;
+    --known-miss) KNOWN_MISSES="$KNOWN_MISSES $2"; shift 2 ;;
     --build) BUILD=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
     --jobs) JOBS=$2; shift 2 ;;
@@ -106,16 +109,23 @@ xargs -a "$JOBS_FILE" -d '\n' -P "$JOBS" -I{} bash -c 'run_case "$1"' _ {} > "$R
 
 sort "$ROWS" | python3 -c '
 import sys
+known = set(sys.argv[1].split())
 rows = [line.rstrip("\n").split("|") for line in sys.stdin]
-missed = 0
+missed = failures = 0
 print("%-34s %4s %-7s %12s %7s %7s  %s" % ("case", "rc", "status", "face median", "target", "seconds", "verdict"))
 for name, code, status, median, target, seconds in rows:
     ok = code == "0" and status == "ok" and median != "-" and float(median) <= float(target)
     missed += not ok
-    print("%-34s %4s %-7s %12s %7s %7s  %s" % (name, code, status, median, target, seconds, "ok" if ok else "MISSED"))
+    verdict = "ok" if ok else "MISSED"
+    if name in known:
+        verdict = "ok, but listed as a known miss: take it off the list" if ok else "MISSED (a known miss)"
+        failures += ok
+    else:
+        failures += not ok
+    print("%-34s %4s %-7s %12s %7s %7s  %s" % (name, code, status, median, target, seconds, verdict))
 print("%d of %d cases within their targets" % (len(rows) - missed, len(rows)))
-sys.exit(1 if missed else 0)
-'
+sys.exit(1 if failures else 0)
+' "$KNOWN_MISSES"
 verdict=$?
 [ $CHECK -eq 1 ] && exit $verdict
 exit 0

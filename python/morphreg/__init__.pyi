@@ -226,8 +226,9 @@ class PhotoFitResult:
     def report(self) -> Dict[str, Any]: ...
 
 def fit_photos(model: Model, profile: ProfileView, frontal: Optional[FrontalView] = None, *, approach: str = "joint",
-               components: Union[int, Sequence[int]] = 20, smoothness: float = 0.5, shape_prior: float = 0.3,
-               coefficient_limit: float = 3.0, frontal_weight: float = 0.5, contour_weight: float = 0.0,
+               components: Union[int, Sequence[int]] = 20, smoothness: float = 0.5,
+               shape_prior: Optional[float] = None, landmark_noise: float = 1.0, coefficient_limit: float = 3.0,
+               landmark_weight: float = 0.5, outline_landmarks: str = "outline", outline_landmark_weight: float = 0.5,
                sagittal_weight: float = 1.0) -> PhotoFitResult: ...
 
 class SimulatedPhotos:

@@ -227,7 +227,7 @@ struct FaceBounds
   static constexpr double kMedian = 0.85;       ///< mm, the requirement
   static constexpr double kPercentile75 = 2.5;  ///< mm
   static constexpr double kPercentile95 = 36.0; ///< mm
-  static constexpr double kLandmarks = 8.5;     ///< mm
+  static constexpr double kLandmarks = 8.3;     ///< mm
   static constexpr int kSamples = 23000;        ///< face samples scored, at least (a count: 0.95x the fewest)
 };
 

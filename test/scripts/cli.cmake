@@ -389,7 +389,7 @@ endif()
 morphreg_cli_test(FitPhotosJamesRealPhotosWithTheirCameras FIXTURES_REQUIRED cli_ict30
   REQUIRES_DATA ${james}/james_cameras.json ${ict_dir}/ict_head_pca_basis.npy
   MAXIMA "landmark RMS ([0-9.]+) mm=>3.0"
-  OUTPUT "fit \\(joint\\): [0-9]+ iterations.*wrote .*james_fit.ply \\(model frame, mm; colours: the photos"
+  OUTPUT "fit \\(joint\\): [0-9]+ iterations.*wrote .*james_fit.ply \\(model frame, mm\\) \\(vertex colours: the photos"
   REPORT ${cli_dir}/james_fit.json REPORT_MATCH "\"camera_estimated\": false" "\"rule\": \"left-out landmarks\""
   FILES ${cli_dir}/james_fit.ply
   ARGS fit-photos --model ${cli_dir}/ict30.h5 --view ${james}/james_photo_left.jpg --landmarks ${cli_dir}/james_left.pts
@@ -528,7 +528,7 @@ morphreg_cli_test(FitPhotosAgainstTheTruth FIXTURES_REQUIRED "cli_small;cli_mode
        --report ${cli_dir}/photos.json --out ${cli_dir}/photos.ply)
 morphreg_cli_test(ModelWithoutProfileLine FIXTURES_REQUIRED cli_small FIXTURES_SETUP cli_no_profile
   FILES ${cli_dir}/no_profile_model.h5
-  ARGS build-model -m ${cli_dir}/small/head_000.ply -m ${cli_dir}/small/head_001.ply --quiet
+  ARGS build-model --mesh ${cli_dir}/small/head_000.ply --mesh ${cli_dir}/small/head_001.ply --quiet
        --landmark-vertices ${cli_dir}/small/landmark_vertices.json --out ${cli_dir}/no_profile_model.h5)
 morphreg_cli_expect_exit(FitPhotosWithoutProfileLineIsNamed 1 "no_profile_model.h5: the model has no profile line"
   fit-photos --model ${cli_dir}/no_profile_model.h5 --profile ${cli_dir}/small/photo_0_profile.json

@@ -354,14 +354,13 @@ public:
 
   /** \brief Stop and revert to the best state when a coefficient exceeds \a max_sigma prior standard deviations
    *  (<= 0: never; default 8) or, in a shape phase, the cost per row stayed above 1.05 times the phase's best for
-   *  \a rising_iterations iterations in a row (default 5: the default rejectors admit more pairs as a fit improves,
-   *  which can raise the cost per row for a few iterations on a good path). The similarity stage is not checked for
-   *  a rising cost: while its correspondences settle, the IRLS weights change and its cost per row may rise.
+   *  \a rising_iterations iterations in a row (default 3). The similarity stage is not checked for a rising cost:
+   *  while its correspondences settle, the IRLS weights change and its cost per row may rise on a good path.
    *  \param[in] max_sigma the coefficients' limit in prior standard deviations (<= 0: none)
    *  \param[in] rising_iterations iterations with a rising cost that count as divergence
    */
   void
-  setDivergenceGuard (double max_sigma, int rising_iterations = 5);
+  setDivergenceGuard (double max_sigma, int rising_iterations = 3);
 
   // ---- landmarks and initialisation -----------------------------------------------------------------------
 
@@ -598,7 +597,7 @@ private:
   std::optional<Eigen::Vector3d> viewpoint_;        ///< setTargetViewpoint's
   std::optional<Eigen::Vector3d> target_viewpoint_; ///< the viewpoint in force for the prepared target
   double max_sigma_ = 8.0;
-  int rising_iterations_ = 5;
+  int rising_iterations_ = 3;
   LandmarkPositions landmarks_;
   double landmark_weight_ = 1.0;
   IcpInitialisation initialisation_ = IcpInitialisation::automatic;
