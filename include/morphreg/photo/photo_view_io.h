@@ -88,8 +88,8 @@ struct PhotoViewFiles
 /** \brief A photo read for a fit: its view and its pixels (for the texture). */
 struct LoadedPhotoView
 {
-  PhotoView view;  ///< the landmarks, outline and camera
-  RgbImage image;  ///< the photo's pixels
+  PhotoView view; ///< the landmarks, outline and camera
+  RgbImage image; ///< the photo's pixels
 };
 
 /** \brief Reads a photo and its annotations: the image's size, a JPEG's EXIF focal length, the landmarks, camera and
