@@ -33,3 +33,9 @@ find_package(JPEG REQUIRED) # and libjpeg-dev
 
 # The file readers' libraries beyond PCL (core's io folder; the fuzz build links them too).
 set(MORPHREG_IO_LIBRARIES tinyxml2::tinyxml2 draco::draco PNG::PNG JPEG::JPEG)
+
+# Debian's interpreter (/usr/bin/python3) is preferred over others first on the PATH (pyenv, a venv): numpy, h5py,
+# pytest and Open3D come from Debian's packages, for the Python module and the test scripts alike.
+if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+endif()

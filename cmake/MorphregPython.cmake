@@ -1,11 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# The Python module (python/), on by default when Python 3's headers and pybind11 are found. Debian's interpreter
-# (/usr/bin/python3) is preferred over others on the PATH: numpy, pytest and Open3D come from Debian's packages.
+# The Python module (python/), on by default when Python 3's headers and pybind11 are found (the interpreter is
+# chosen in MorphregDependencies.cmake).
 if(NOT MORPHREG_BUILD_PYTHON)
   return()
-endif()
-if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
-  set(Python3_EXECUTABLE /usr/bin/python3)
 endif()
 find_package(Python3 COMPONENTS Interpreter Development.Module Development.Embed)
 find_package(pybind11 2.6 CONFIG QUIET)
