@@ -69,6 +69,23 @@ measureExplained (const Eigen::Matrix3Xd& scan, const TriangleMesh& fitted, FitM
   measures.explained_share =
       measures.scored_points ? static_cast<double> (explained) / static_cast<double> (measures.scored_points) : 0.0;
 }
+/** FitMeasures::region_coverage of \a model's regions from the per-vertex residuals (NaN: no correspondence). */
+std::vector<std::pair<std::string, double>>
+regionCoverage (const MorphableModel& model, const Eigen::VectorXd& vertex_residuals)
+{
+  std::vector<std::pair<std::string, double>> coverage;
+  for (const ModelRegion& region : model.regions ()) {
+    double own = 0.0, covered = 0.0;
+    for (size_t r = 0; r < region.vertices.size (); ++r)
+      if (region.weights[static_cast<Eigen::Index> (r)] >= 0.5) {
+        own += 1.0;
+        const double residual = vertex_residuals[region.vertices[r]];
+        covered += std::isfinite (residual) && residual <= kExplainedDistance ? 1.0 : 0.0;
+      }
+    coverage.emplace_back (region.name, own > 0.0 ? covered / own : 0.0);
+  }
+  return coverage;
+}
 } // namespace
 
 FitMeasures
@@ -93,6 +110,7 @@ measureFit (const MorphableModel& model, const ComponentSelection& selection, co
   measureExplained (scan, TriangleMesh{fitted_vertices, model.triangles ()}, measures);
   measures.folded_share =
       foldedShare (model, measures.scale > 0.0 ? Eigen::Matrix3d (linear / measures.scale) : linear, fitted_vertices);
+  measures.region_coverage = regionCoverage (model, vertex_residuals);
   measures.divergence = report.divergence;
   measures.divergence_message = report.message;
   return measures;

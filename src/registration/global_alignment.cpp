@@ -5,6 +5,8 @@
 #include <morphreg/mesh/surface_sampling.h>
 #include <morphreg/registration/global_alignment.h>
 
+#include "distance_field.h"
+#include "sensor_footprint.h"
 #include "similarity_refinement.h"
 
 #include <Eigen/Geometry>
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
@@ -20,6 +23,9 @@ namespace morphreg
 {
 namespace
 {
+using detail::DistanceField;
+using detail::Grid;
+using detail::gridOver;
 using detail::PointTree;
 
 /** Points with unit normals (sign arbitrary) and the surface area each stands for (relative). */
@@ -144,49 +150,6 @@ surfaceOnly (const OrientedPoints& thinned)
   return kept;
 }
 
-/** A dense 3D grid of cells of edge \a cell from \a origin. */
-struct Grid
-{
-  Eigen::Vector3d origin;
-  double cell;
-  Eigen::Array3i size;
-
-  Eigen::Index
-  count () const
-  {
-    return static_cast<Eigen::Index> (size[0]) * size[1] * size[2];
-  }
-
-  /** The cell holding \a p, or -1 outside the grid. */
-  Eigen::Index
-  index (const Eigen::Vector3d& p) const
-  {
-    const Eigen::Array3d f = (p - origin).array () / cell;
-    if ((f < 0.0).any () || (f >= size.cast<double> ()).any ())
-      return -1;
-    const Eigen::Array3i i = f.cast<int> ();
-    return (static_cast<Eigen::Index> (i[2]) * size[1] + i[1]) * size[0] + i[0];
-  }
-
-  Eigen::Vector3d
-  centre (Eigen::Index index) const
-  {
-    const Eigen::Index x = index % size[0], y = (index / size[0]) % size[1], z = index / (size[0] * size[1]);
-    return origin +
-           cell * (Eigen::Vector3d (static_cast<double> (x), static_cast<double> (y), static_cast<double> (z)) +
-                   Eigen::Vector3d::Constant (0.5));
-  }
-};
-
-/** A grid of edge at least \a cell over the box [low, high], with at most about 128 cells along its longest side. */
-Grid
-gridOver (const Eigen::Vector3d& low, const Eigen::Vector3d& high, double cell)
-{
-  const double edge = std::max (cell, (high - low).maxCoeff () / 128.0);
-  const Eigen::Array3i size = ((high - low).array () / edge).ceil ().cast<int> ().max (1);
-  return {low, edge, size};
-}
-
 /** Sums each cell's 3 x 3 x 3 neighbourhood (separable box filter), in place. */
 void
 boxFilter (const Grid& grid, std::vector<double>& values)
@@ -250,93 +213,6 @@ houghSpheres (const OrientedPoints& surface, double r_min, double r_max, double 
   return spheres;
 }
 
-/** Truncated distances to the nearest of some seed points, on a grid (exact squared Euclidean distance
- *  transform, Felzenszwalb and Huttenlocher's lower envelope of parabolas, one axis at a time). */
-class DistanceField
-{
-public:
-  DistanceField (const Grid& grid, const Eigen::Matrix3Xd& seeds, double truncation)
-    : grid_ (grid), truncation_ (static_cast<float> (truncation))
-  {
-    const double infinity = 1e20;
-    std::vector<double> squared (grid_.count (), infinity);
-    for (Eigen::Index i = 0; i < seeds.cols (); ++i) {
-      const Eigen::Index c = grid_.index (seeds.col (i));
-      if (c >= 0)
-        squared[c] = 0.0;
-    }
-    const Eigen::Index strides[3] = {1, grid_.size[0], static_cast<Eigen::Index> (grid_.size[0]) * grid_.size[1]};
-    for (int axis = 0; axis < 3; ++axis) {
-      const int length = grid_.size[axis];
-      const Eigen::Index lines = grid_.count () / length;
-#pragma omp parallel for schedule(static)
-      for (Eigen::Index line = 0; line < lines; ++line) {
-        // The first cell of this line: all coordinates but \a axis from \a line.
-        const Eigen::Index below = line % strides[axis], above = line / strides[axis];
-        const Eigen::Index first = below + above * strides[axis] * length;
-        std::vector<double> f (length), d (length);
-        for (int q = 0; q < length; ++q)
-          f[q] = squared[first + q * strides[axis]];
-        transform1d (f, d);
-        for (int q = 0; q < length; ++q)
-          squared[first + q * strides[axis]] = d[q];
-      }
-    }
-    distances_.resize (grid_.count ());
-    for (Eigen::Index i = 0; i < grid_.count (); ++i)
-      distances_[i] = std::min (truncation_, static_cast<float> (std::sqrt (squared[i]) * grid_.cell));
-  }
-
-  /** The truncated distance at \a p (the truncation outside the grid). */
-  float
-  at (const Eigen::Vector3d& p) const
-  {
-    const Eigen::Index c = grid_.index (p);
-    return c < 0 ? truncation_ : distances_[c];
-  }
-
-private:
-  static void
-  transform1d (const std::vector<double>& f, std::vector<double>& d)
-  {
-    const int n = static_cast<int> (f.size ());
-    std::vector<int> v (n);
-    std::vector<double> z (n + 1);
-    int k = 0;
-    v[0] = 0;
-    z[0] = -std::numeric_limits<double>::infinity ();
-    z[1] = std::numeric_limits<double>::infinity ();
-    for (int q = 1; q < n; ++q) {
-      double s;
-      while (true) {
-        s = ((f[q] + q * q) - (f[v[k]] + v[k] * v[k])) / (2.0 * q - 2.0 * v[k]);
-        if (s > z[k] || k == 0)
-          break;
-        --k;
-      }
-      if (s <= z[k]) { // k == 0 and the new parabola is lower everywhere
-        v[0] = q;
-        z[1] = std::numeric_limits<double>::infinity ();
-        continue;
-      }
-      ++k;
-      v[k] = q;
-      z[k] = s;
-      z[k + 1] = std::numeric_limits<double>::infinity ();
-    }
-    k = 0;
-    for (int q = 0; q < n; ++q) {
-      while (z[k + 1] < q)
-        ++k;
-      d[q] = (q - v[k]) * (q - v[k]) + f[v[k]];
-    }
-  }
-
-  Grid grid_;
-  float truncation_;
-  std::vector<float> distances_;
-};
-
 /** Rotations covering SO(3): the model's up axis (+Y) turned onto \a directions Fibonacci-sphere directions, each
  *  with \a twists turns about that axis. */
 std::vector<Eigen::Matrix3d>
@@ -398,7 +274,32 @@ kept (const Eigen::Matrix3Xd& points, const std::vector<char>& keep)
   return result;
 }
 
-/** A pose and its score (lower is better), its coverage and the anchor it was searched about. */
+/** A one-view scan as its sensor sees it: the direction to the sensor from the scan's centroid and the scan's
+ *  outline across it. */
+struct SensorView
+{
+  Eigen::Vector3d scan_centroid;
+  Eigen::Vector3d towards;
+  detail::SensorFootprint footprint;
+};
+
+/** The view of \a scan (3 x N) from settings.viewpoint, its outline in cells of edge \a cell; none without a
+ *  viewpoint. */
+std::optional<SensorView>
+sensorView (const Eigen::Matrix3Xd& scan, double cell, const GlobalAlignmentSettings& settings)
+{
+  if (!settings.viewpoint)
+    return std::nullopt;
+  const Eigen::Vector3d centroid = scan.rowwise ().mean ();
+  const Eigen::Vector3d towards = (*settings.viewpoint - centroid).normalized ();
+  return SensorView{centroid, towards, detail::SensorFootprint (scan, towards, cell)};
+}
+
+/** The anchor of the poses placed by the side of the model facing the sensor (viewPoses), not about a point. */
+constexpr int kViewAnchor = -1;
+
+/** A pose and its score (lower is better), its coverage and the anchor it was searched about (an index into the
+ *  anchors, or kViewAnchor). */
 struct Pose
 {
   Eigen::Matrix4d similarity;
@@ -410,18 +311,20 @@ struct Pose
 /** How well \a samples (model surface samples with normals) posed by \a pose and \a scan agree: the mean of the
  *  distances from each posed sample to the tangent plane of its closest scan point (a sparse scan is a surface
  *  between its points), the truncation where that point is farther than it or the normals disagree by more than 45
- *  degrees, averaged with the mean truncated distance from the scan points within the posed model's reach to their
- *  closest posed sample (a face turned backwards lies inside the scan's face: only this direction sees the nose
+ *  degrees, averaged with the mean truncated distance from the scan points within the posed model's reach (at its
+ *  own size at least) to their closest posed sample (a face turned backwards lies inside the scan's face: only this direction sees the nose
  *  sticking out); and the share of the samples within \a near. A scale outside [min_scale, max_scale] scores the
  *  truncation. */
 void
 scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoints& all_samples, double truncation,
-           double near, double min_scale, double max_scale, const std::optional<Eigen::Vector3d>& viewpoint, Pose& pose)
+           double near, const GlobalAlignmentSettings& settings, Pose& pose)
 {
   const double scale = detail::similarityScale (pose.similarity);
+  const double min_scale = settings.min_radius_ratio, max_scale = settings.max_radius_ratio;
   const std::vector<char> facing =
-      pose.similarity.allFinite () ? facingSamples (pose.similarity, all_samples.points, all_samples.normals, viewpoint)
-                                   : std::vector<char> ();
+      pose.similarity.allFinite ()
+          ? facingSamples (pose.similarity, all_samples.points, all_samples.normals, settings.viewpoint)
+          : std::vector<char> ();
   if (!pose.similarity.allFinite () || !(scale >= min_scale && scale <= max_scale) ||
       std::count (facing.begin (), facing.end (), 1) < 10) {
     pose.score = truncation;
@@ -444,7 +347,8 @@ scorePose (const PointTree& tree, const OrientedPoints& scan, const OrientedPoin
     covered += d <= near ? 1.0 : 0.0;
   }
   const Eigen::Vector3d centre = posed.rowwise ().mean ();
-  const double reach = (posed.colwise () - centre).colwise ().norm ().maxCoeff ();
+  // The model's reach at its own size at least: a model shrunk into the scan must not shed the points it leaves out.
+  const double reach = (posed.colwise () - centre).colwise ().norm ().maxCoeff () * std::max (1.0, 1.0 / scale);
   const auto posed_tree = detail::pointTree (posed);
   double backward = 0.0, count = 0.0;
   for (Eigen::Index j = 0; j < scan.points.cols (); ++j)
@@ -502,6 +406,7 @@ struct ModelFrame
   double radius;
   double voxel;
   Sphere sphere;
+  std::shared_ptr<const DistanceField> field; ///< truncated distance to the model's surface, in the model's frame
 };
 
 ModelFrame
@@ -517,7 +422,32 @@ modelFrame (const TriangleMesh& model_mean, const GlobalAlignmentSettings& setti
   if (spheres.empty ())
     throw InvalidInputError ("alignHeadGlobally: the model mean has no head-like sphere");
   model.sphere = spheres.front ();
+  // Dense enough (about 2 mm apart on a head) for the field's cells of half a voxel.
+  const OrientedPoints dense = surfaceSamples (model_mean, 30000, 13);
+  const double truncation = settings.truncation_ratio * model.radius;
+  model.field = std::make_shared<const DistanceField> (
+      detail::gridAround (dense.points, truncation + model.voxel, 0.5 * model.voxel), dense.points, truncation);
   return model;
+}
+
+/** The mean truncated distance from the points of \a scan within \a reach of \a centre (scan frame) to the model's
+ *  surface posed by \a similarity, read from the model's distance field at each point mapped back to the model's
+ *  frame: the scan-to-model half of a pose's score, so that a face is not matched to a smaller, smoother part of
+ *  the model (the back of the head) that leaves its nose and chin out. */
+double
+backwardScore (const ModelFrame& model, const Eigen::Matrix3Xd& scan, const Eigen::Matrix4d& similarity,
+               const Eigen::Vector3d& centre, double reach, double truncation)
+{
+  const double scale = detail::similarityScale (similarity);
+  const Eigen::Matrix3d inverse = similarity.topLeftCorner<3, 3> ().transpose () / (scale * scale);
+  const Eigen::Vector3d translation = similarity.topRightCorner<3, 1> ();
+  double sum = 0.0, count = 0.0;
+  for (Eigen::Index j = 0; j < scan.cols (); ++j)
+    if ((scan.col (j) - centre).squaredNorm () <= reach * reach) {
+      sum += std::min (scale * model.field->at (inverse * (scan.col (j) - translation)), truncation);
+      count += 1.0;
+    }
+  return count > 0.0 ? sum / count : truncation;
 }
 
 /** The scan thinned to the model's voxels, without isolated points, with normals. */
@@ -549,50 +479,177 @@ anchorsOf (const ModelFrame& model, const OrientedPoints& surface, const std::ve
   return anchors;
 }
 
-/** The best-scoring grid rotations about every anchor (scored on a distance transform of the scan), at most
- *  settings.refined_poses over all anchors, best first. */
-std::vector<Pose>
-gridPoses (const ModelFrame& model, const OrientedPoints& surface, const std::vector<Anchor>& anchors,
-           const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
+/** What every grid rotation is scored with: the model's score samples, weighted (samples off the model's head sphere,
+ *  on the nose, chin, ears and neck, tell the rotations apart; the cranium hardly does). */
+struct GridScoring
 {
-  const Eigen::Matrix3Xd samples = detail::evenSamples (model.samples.points, settings.score_samples);
-  const Eigen::Matrix3Xd normals = detail::evenSamples (model.samples.normals, settings.score_samples);
-  // Samples off the model's head sphere (nose, chin, ears, neck) tell the rotations apart; the cranium hardly does.
-  Eigen::VectorXd weights (samples.cols ());
-  for (Eigen::Index i = 0; i < samples.cols (); ++i)
-    weights[i] =
-        1.0 + 4.0 * std::min (1.0, std::abs ((samples.col (i) - model.sphere.centre).norm () - model.sphere.radius) /
-                                       (0.3 * model.sphere.radius));
-  const double truncation = settings.truncation_ratio * model.radius;
+  Eigen::Matrix3Xd samples, normals;
+  Eigen::VectorXd weights;
+  double truncation;
+  double reach; ///< the farthest sample from the model's centroid
+};
+
+GridScoring
+gridScoring (const ModelFrame& model, const GlobalAlignmentSettings& settings)
+{
+  GridScoring scoring;
+  scoring.samples = detail::evenSamples (model.samples.points, settings.score_samples);
+  scoring.normals = detail::evenSamples (model.samples.normals, settings.score_samples);
+  scoring.weights.resize (scoring.samples.cols ());
+  for (Eigen::Index i = 0; i < scoring.samples.cols (); ++i)
+    scoring.weights[i] =
+        1.0 +
+        4.0 * std::min (1.0, std::abs ((scoring.samples.col (i) - model.sphere.centre).norm () - model.sphere.radius) /
+                                 (0.3 * model.sphere.radius));
+  scoring.truncation = settings.truncation_ratio * model.radius;
+  scoring.reach = (scoring.samples.colwise () - model.centroid).colwise ().norm ().maxCoeff ();
+  return scoring;
+}
+
+/** The grid score of \a similarity (lower is better): the weighted mean of the scan's distance \a field at the posed
+ *  samples that face the sensor, averaged with the backward score of the \a scan points (a few hundred about the
+ *  place searched) near the posed model (within its reach at its own size at least); the truncation when the sensor sees less than a quarter of the model. */
+double
+gridScore (const GridScoring& scoring, const ModelFrame& model, const DistanceField& field,
+           const Eigen::Matrix3Xd& scan, const Eigen::Matrix4d& similarity,
+           const std::optional<Eigen::Vector3d>& viewpoint)
+{
+  const std::vector<char> facing = facingSamples (similarity, scoring.samples, scoring.normals, viewpoint);
+  const Eigen::Matrix3d linear = similarity.topLeftCorner<3, 3> ();
+  const Eigen::Vector3d translation = similarity.topRightCorner<3, 1> ();
+  double sum = 0.0, weight = 0.0;
+  for (Eigen::Index i = 0; i < scoring.samples.cols (); ++i)
+    if (facing[static_cast<size_t> (i)]) {
+      sum += scoring.weights[i] * field.at (linear * scoring.samples.col (i) + translation);
+      weight += scoring.weights[i];
+    }
+  if (weight < 0.25 * scoring.weights.sum ())
+    return scoring.truncation;
+  const double reach = std::max (1.0, detail::similarityScale (similarity)) * scoring.reach;
+  return 0.5 * (sum / weight + backwardScore (model, scan, similarity, linear * model.centroid + translation, reach,
+                                              scoring.truncation));
+}
+
+/** About settings.score_samples of the \a scan points within \a radius of \a centre (all of them if fewer): the
+ *  scan-to-model half of the grid scores about an anchor, taken where the head may be and not from a whole room. */
+Eigen::Matrix3Xd
+scanSamplesNear (const Eigen::Matrix3Xd& scan, const Eigen::Vector3d& centre, double radius,
+                 const GlobalAlignmentSettings& settings)
+{
+  std::vector<char> inside (static_cast<size_t> (scan.cols ()));
+  for (Eigen::Index i = 0; i < scan.cols (); ++i)
+    inside[static_cast<size_t> (i)] = (scan.col (i) - centre).squaredNorm () <= radius * radius;
+  return detail::evenSamples (kept (scan, inside), settings.score_samples);
+}
+
+/** The best-scoring grid rotations about every anchor, settings.rotations_per_anchor of them per anchor. */
+std::vector<Pose>
+anchorPoses (const ModelFrame& model, const OrientedPoints& surface, const std::vector<Anchor>& anchors,
+             const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
+{
+  const GridScoring scoring = gridScoring (model, settings);
   std::vector<Pose> poses;
   for (size_t a = 0; a < anchors.size (); ++a) {
     const Anchor& anchor = anchors[a];
-    const Eigen::Matrix3Xd centred = samples.colwise () - anchor.model;
-    const double reach = centred.colwise ().norm ().maxCoeff ();
-    const Eigen::Vector3d half = Eigen::Vector3d::Constant (anchor.scale * reach + truncation);
+    const double reach = (scoring.samples.colwise () - anchor.model).colwise ().norm ().maxCoeff ();
+    const Eigen::Vector3d half = Eigen::Vector3d::Constant (anchor.scale * reach + scoring.truncation);
     const DistanceField field (gridOver (anchor.scan - half, anchor.scan + half, model.voxel), surface.points,
-                               truncation);
+                               scoring.truncation);
+    const Eigen::Matrix3Xd near = scanSamplesNear (surface.points, anchor.scan,
+                                                   std::max (1.0, anchor.scale) * reach + scoring.truncation, settings);
     std::vector<double> scores (rotations.size ());
 #pragma omp parallel for schedule(static)
-    for (size_t r = 0; r < rotations.size (); ++r) {
-      const Eigen::Matrix3Xd posed = ((anchor.scale * rotations[r]) * centred).colwise () + anchor.scan;
-      const std::vector<char> facing =
-          facingSamples (detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan), samples,
-                         normals, settings.viewpoint);
-      double sum = 0.0, weight = 0.0;
-      for (Eigen::Index i = 0; i < posed.cols (); ++i)
-        if (facing[static_cast<size_t> (i)]) {
-          sum += weights[i] * field.at (posed.col (i));
-          weight += weights[i];
-        }
-      // A pose showing the sensor less than a quarter of the model is no view of a head.
-      scores[r] = weight >= 0.25 * weights.sum () ? sum / weight : truncation;
-    }
+    for (size_t r = 0; r < rotations.size (); ++r)
+      scores[r] = gridScore (scoring, model, field, near,
+                             detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan),
+                             settings.viewpoint);
     for (size_t r : bestDistinct (rotations, scores, settings.rotations_per_anchor))
       poses.push_back ({detail::similarityAbout (anchor.scale, rotations[r], anchor.model, anchor.scan), scores[r], 0.0,
                         static_cast<int> (a)});
   }
-  // Only the best grid scores over all anchors go on (an anchor off the head scores badly for every rotation).
+  return poses;
+}
+
+/** The similarity of \a scale and \a rotation that lays the part of the model facing the sensor onto the scan: its
+ *  centroid first on the scan's, then (twice) the centroid of the part within the scan's \a footprint moved onto
+ *  the scan's centroid, so that model parts a cropped scan lacks (the neck, the crown) do not pull it aside. */
+Eigen::Matrix4d
+viewPlacement (const GridScoring& scoring, const SensorView& view, double scale, const Eigen::Matrix3d& rotation)
+{
+  const Eigen::Vector3d& towards = view.towards;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+  double count = 0.0;
+  for (Eigen::Index i = 0; i < scoring.samples.cols (); ++i)
+    if ((rotation * scoring.normals.col (i)).dot (towards) > 0.0) {
+      sum += scoring.samples.col (i);
+      count += 1.0;
+    }
+  Eigen::Matrix4d similarity =
+      detail::similarityAbout (scale, rotation, sum / std::max (count, 1.0), view.scan_centroid);
+  for (int step = 0; step < 2; ++step) {
+    Eigen::Vector3d inside = Eigen::Vector3d::Zero ();
+    double inside_count = 0.0;
+    for (Eigen::Index i = 0; i < scoring.samples.cols (); ++i) {
+      const Eigen::Vector3d posed =
+          similarity.topLeftCorner<3, 3> () * scoring.samples.col (i) + similarity.topRightCorner<3, 1> ();
+      if ((rotation * scoring.normals.col (i)).dot (towards) > 0.0 && view.footprint.covers (posed)) {
+        inside += posed;
+        inside_count += 1.0;
+      }
+    }
+    if (inside_count < 10.0)
+      break;
+    similarity.topRightCorner<3, 1> () += view.scan_centroid - inside / inside_count;
+  }
+  return similarity;
+}
+
+/** The head scales the one-view search tries (small to large heads against the model's mean), those within the
+ *  searched radius range; none without a viewpoint. */
+std::vector<double>
+viewScales (const GlobalAlignmentSettings& settings)
+{
+  std::vector<double> scales;
+  if (settings.viewpoint)
+    for (double scale : {0.8, 0.92, 1.05, 1.2})
+      if (scale >= settings.min_radius_ratio && scale <= settings.max_radius_ratio)
+        scales.push_back (scale);
+  return scales;
+}
+
+/** One-view scans (settings.viewpoint set): a face seen from the front has no head sphere, and the model's centroid
+ *  lies deep behind it, so per grid rotation the model's side facing the sensor is laid onto the scan
+ *  (viewPlacement) at a few head scales; the best distinct rotations per scale. None without a viewpoint. */
+std::vector<Pose>
+viewPoses (const ModelFrame& model, const OrientedPoints& surface, const std::optional<SensorView>& view,
+           const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
+{
+  if (!view)
+    return {};
+  const GridScoring scoring = gridScoring (model, settings);
+  const Eigen::Matrix3Xd scan = detail::evenSamples (surface.points, settings.score_samples);
+  const DistanceField field (detail::gridAround (surface.points, 0.6 * model.radius + scoring.truncation, model.voxel),
+                             surface.points, scoring.truncation);
+  std::vector<Pose> poses;
+  for (double scale : viewScales (settings)) {
+    std::vector<Eigen::Matrix4d> similarities (rotations.size ());
+    std::vector<double> scores (rotations.size ());
+#pragma omp parallel for schedule(static)
+    for (size_t r = 0; r < rotations.size (); ++r) {
+      similarities[r] = viewPlacement (scoring, *view, scale, rotations[r]);
+      scores[r] = gridScore (scoring, model, field, scan, similarities[r], settings.viewpoint);
+    }
+    for (size_t r : bestDistinct (rotations, scores, settings.rotations_per_anchor))
+      poses.push_back ({similarities[r], scores[r], 0.0, kViewAnchor});
+  }
+  return poses;
+}
+
+/** The settings.refined_poses best of \a poses, best first (an anchor off the head scores badly for every
+ *  rotation, and only the best grid scores over all anchors go on). */
+std::vector<Pose>
+bestPoses (std::vector<Pose> poses, const GlobalAlignmentSettings& settings)
+{
   std::sort (poses.begin (), poses.end (), [] (const Pose& a, const Pose& b) { return a.score < b.score; });
   poses.resize (std::min<size_t> (poses.size (), static_cast<size_t> (settings.refined_poses)));
   return poses;
@@ -612,14 +669,15 @@ refinePoses (const ModelFrame& model, const OrientedPoints& surface, const Point
     for (size_t k = 0; k < active.size (); ++k) {
       Pose& pose = poses[active[k]];
       const Eigen::Vector3d centre =
-          pose.similarity.topLeftCorner<3, 3> () * anchors[pose.anchor].model + pose.similarity.topRightCorner<3, 1> ();
+          pose.similarity.topLeftCorner<3, 3> () *
+              (pose.anchor == kViewAnchor ? model.centroid : anchors[static_cast<size_t> (pose.anchor)].model) +
+          pose.similarity.topRightCorner<3, 1> ();
       const Eigen::Matrix3Xd seen =
           kept (samples, facingSamples (pose.similarity, samples, normals, settings.viewpoint));
       if (seen.cols () >= 10)
         pose.similarity = detail::refineSimilarity (tree, surface.points, surface.normals, centre, seen,
                                                     pose.similarity, iterations, settings.inlier_fraction);
-      scorePose (*tree, surface, model.samples, truncation, 2.0 * model.voxel, settings.min_radius_ratio,
-                 settings.max_radius_ratio, settings.viewpoint, pose);
+      scorePose (*tree, surface, model.samples, truncation, 2.0 * model.voxel, settings, pose);
     }
   };
   const auto by_score = [&poses] (size_t a, size_t b) { return poses[a].score < poses[b].score; };
@@ -677,18 +735,21 @@ headIndices (const Eigen::Matrix3Xd& scan, const Eigen::Matrix3Xd& samples, cons
 /** The sentence of GlobalAlignment::method. */
 std::string
 methodSentence (const GlobalAlignment& result, const ModelFrame& model, const OrientedPoints& surface, size_t spheres,
-                bool sphere_won, size_t rotations, Eigen::Index scan_points)
+                size_t viewed, const std::string& winner, size_t rotations, Eigen::Index scan_points)
 {
   std::ostringstream method;
   method.precision (3);
   method << "global: the scan thinned to " << surface.points.cols () << " points (" << model.voxel << " mm voxels); "
-         << spheres << " head sphere(s) by Hough vote and the scan's centroid as anchors, the winner "
-         << (sphere_won ? "a sphere" : "the centroid") << " at (" << result.head_centre.transpose ()
-         << "), head radius " << result.head_radius << " mm (the model's " << model.sphere.radius << " mm); "
-         << rotations << " rotations per anchor scored on a distance transform; " << result.poses_refined
-         << " poses refined by similarity ICP; best truncated distance " << result.score << " mm, runner-up "
-         << result.runner_up_score << " mm; coverage " << result.coverage << "; " << result.head_indices.size ()
-         << " of " << scan_points << " scan points on the head";
+         << spheres << " head sphere(s) by Hough vote and the scan's centroid as anchors"
+         << (viewed ? ", and the model's side facing the sensor laid onto the scan at " + std::to_string (viewed) +
+                          " scales"
+                    : std::string ())
+         << "; the winner " << winner << " at (" << result.head_centre.transpose () << "), head radius "
+         << result.head_radius << " mm (the model's " << model.sphere.radius << " mm); " << rotations
+         << " rotations per anchor or scale scored on distance transforms of the scan and the model; "
+         << result.poses_refined << " poses refined by similarity ICP; best truncated distance " << result.score
+         << " mm, runner-up " << result.runner_up_score << " mm; coverage " << result.coverage << "; "
+         << result.head_indices.size () << " of " << scan_points << " scan points on the head";
   return method.str ();
 }
 } // namespace
@@ -706,7 +767,11 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
                                                     settings.centre_candidates, model.sphere.radius);
   const std::vector<Anchor> anchors = anchorsOf (model, surface, spheres, settings);
   const std::vector<Eigen::Matrix3d> rotations = rotationGrid (settings.rotation_directions, settings.rotation_twists);
-  std::vector<Pose> poses = gridPoses (model, surface, anchors, rotations, settings);
+  const std::optional<SensorView> view = sensorView (surface.points, model.voxel, settings);
+  std::vector<Pose> poses = anchorPoses (model, surface, anchors, rotations, settings);
+  const std::vector<Pose> seen_poses = viewPoses (model, surface, view, rotations, settings);
+  poses.insert (poses.end (), seen_poses.begin (), seen_poses.end ());
+  poses = bestPoses (std::move (poses), settings);
   const std::vector<size_t> ranked =
       refinePoses (model, surface, detail::pointTree (surface.points), anchors, settings, poses);
 
@@ -718,15 +783,23 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
   result.runner_up_score = runnerUpScore (poses, ranked, model.radius);
   const double distinctness = result.runner_up_score > 0.0 ? 1.0 - result.score / result.runner_up_score : 1.0;
   result.confidence = std::clamp (result.coverage * distinctness, 0.0, 1.0);
-  const Anchor& anchor = anchors[static_cast<size_t> (best.anchor)];
+  const size_t viewed = viewScales (settings).size ();
+  const double scale = detail::similarityScale (best.similarity);
+  const Anchor view_anchor{
+      model.sphere.centre,
+      best.similarity.topLeftCorner<3, 3> () * model.sphere.centre + best.similarity.topRightCorner<3, 1> (), scale};
+  const Anchor& anchor = best.anchor == kViewAnchor ? view_anchor : anchors[static_cast<size_t> (best.anchor)];
   result.head_centre = anchor.scan;
   result.head_radius = anchor.scale * model.sphere.radius;
-  result.rotations_scored = static_cast<int> (rotations.size () * anchors.size ());
+  result.rotations_scored = static_cast<int> (rotations.size () * (anchors.size () + viewed));
   result.poses_refined = static_cast<int> (poses.size ());
   result.head_indices =
       headIndices (scan, model.samples.points, best.similarity, settings.truncation_ratio * model.radius);
-  result.method = methodSentence (result, model, surface, spheres.size (),
-                                  static_cast<size_t> (best.anchor) < spheres.size (), rotations.size (), scan.cols ());
+  const std::string winner = best.anchor == kViewAnchor                            ? "the side facing the sensor"
+                             : static_cast<size_t> (best.anchor) < spheres.size () ? "a sphere"
+                                                                                   : "the centroid";
+  result.method =
+      methodSentence (result, model, surface, spheres.size (), viewed, winner, rotations.size (), scan.cols ());
   return result;
 }
 

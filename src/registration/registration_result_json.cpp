@@ -87,6 +87,16 @@ similarityJson (const Eigen::Matrix4d& transform)
           {"translation", {transform (0, 3), transform (1, 3), transform (2, 3)}}};
 }
 
+/** FitMeasures::region_coverage as an object: region name -> share. */
+nlohmann::json
+regionCoverageJson (const FitMeasures& measures)
+{
+  nlohmann::json coverage = nlohmann::json::object ();
+  for (const auto& [name, share] : measures.region_coverage)
+    coverage[name] = share;
+  return coverage;
+}
+
 /** The measures as the report's "checks" object holds them, with the verdict. */
 nlohmann::json
 checksJson (const FitMeasures& measures, const FitPlausibility& checks)
@@ -102,7 +112,8 @@ checksJson (const FitMeasures& measures, const FitPlausibility& checks)
             {"explained_share", measures.explained_share},
             {"explained_within_mm", kExplainedDistance},
             {"scored_scan_points", measures.scored_points},
-            {"folded_share", measures.folded_share}}}};
+            {"folded_share", measures.folded_share},
+            {"region_coverage", regionCoverageJson (measures)}}}};
 }
 
 nlohmann::json

@@ -145,8 +145,19 @@ TEST (FitPlausibilityTest, MeasuresTheScanExplained)
   const auto measures = morphreg::measureFit (model, none, Eigen::VectorXd (), Eigen::Matrix4d::Identity (),
                                               head.vertices, residuals, scan, report, 5);
   EXPECT_NEAR (measures.explained_share, 0.5, 0.03);
+  ASSERT_EQ (measures.region_coverage.size (), 1u) << "one region, the whole head";
+  EXPECT_EQ (measures.region_coverage.front ().second, 1.0) << "every vertex has a correspondence within 0.5 mm";
   EXPECT_GT (measures.scored_points, head.numVertices () / 2);
   EXPECT_EQ (measures.folded_share, 0.0);
+  // The scan seen from the front only: the back half of the vertices without correspondences.
+  Eigen::VectorXd front_only = residuals;
+  for (Eigen::Index v = 0; v < head.numVertices (); ++v)
+    if (head.vertices (2, v) < centre.z ())
+      front_only[v] = std::nan ("");
+  const double front_share = (head.vertices.row (2).array () >= centre.z ()).cast<double> ().mean ();
+  const auto front = morphreg::measureFit (model, none, Eigen::VectorXd (), Eigen::Matrix4d::Identity (), head.vertices,
+                                           front_only, scan, report, 5);
+  EXPECT_DOUBLE_EQ (front.region_coverage.front ().second, front_share);
   EXPECT_THROW (morphreg::measureFit (model, none, Eigen::VectorXd (), Eigen::Matrix4d::Identity (), head.vertices,
                                       residuals.head (5), scan, report, 5),
                 InvalidInputError);

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace morphreg
@@ -35,6 +36,10 @@ struct FitMeasures
   double explained_share = 1.0;
   int scored_points = 0;     ///< the scan's head points scored for explained_share
   double folded_share = 0.0; ///< share of the surface (by the mean's areas) turned over against the mean's
+  /** Per model region (its name and share): the share of its own vertices (blending weight >= 0.5) with an
+   *  accepted correspondence within kExplainedDistance: what the scan covers of the head (a face-only scan leaves
+   *  the back of the head and the neck near 0, where the fit shows the model's prior, not the person). */
+  std::vector<std::pair<std::string, double>> region_coverage;
   IcpDivergence divergence = IcpDivergence::none; ///< what diverged, if anything
   std::string divergence_message;                 ///< the divergence's sentence
 };
