@@ -15,6 +15,7 @@
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
+#include <morphreg/common/head_scale_unit.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/depth_image_io.h>
 #include <morphreg/io/file_format.h>
@@ -232,7 +233,7 @@ convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const
   const LengthUnitGuess unit =
       morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
   if (scan.viewpoint)
-    *scan.viewpoint *= millimetresPer (unit.unit);
+    *scan.viewpoint *= unit.scale_to_mm;
   if (unit.unit != LengthUnit::millimetre)
     out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
   return unit;
@@ -299,27 +300,29 @@ namespace
  *  throws FitCheckFailure.
  */
 [[noreturn]] void
-reportLostFit (const RegisterOptions& options, std::size_t scan_points, const TooFewCorrespondencesError& error)
+reportLostFit (const RegisterOptions& options, std::size_t scan_points, const std::string& lost)
 {
   const std::string report_path = reportPath (options);
   nlohmann::json report = {{"status", "failed"},
-                           {"checks", {{"passed", false}, {"failures", {error.what ()}}}},
+                           {"checks", {{"passed", false}, {"failures", {lost}}}},
                            {"scan", {{"file", options.scan}, {"points", scan_points}}},
                            {"settings", settingsJson (options)},
                            {"fitted_mesh", nullptr}};
   addProvenance (options, report);
   writeReport (report_path, report);
-  throw FitCheckFailure (std::string (error.what ()) + "; no mesh written (see " + report_path + ")", report);
+  throw FitCheckFailure (lost + "; no mesh written (see " + report_path + ")", report);
 }
 
 /** The report's description of the scan and how its unit was found. */
 nlohmann::json
 scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
 {
-  nlohmann::json scan = {
-      {"file", options.scan},          {"points", scan_points},
-      {"units", toString (unit.unit)}, {"unit_detection", options.units == "auto" ? "auto" : "given"},
-      {"unit_reason", unit.reason},    {"scale_to_mm", millimetresPer (unit.unit)}};
+  nlohmann::json scan = {{"file", options.scan},
+                         {"points", scan_points},
+                         {"units", unit.estimated ? "estimated" : toString (unit.unit)},
+                         {"unit_detection", options.units == "auto" ? "auto" : "given"},
+                         {"unit_reason", unit.reason},
+                         {"scale_to_mm", unit.scale_to_mm}};
   const FileFormat format = sniffFileFormat (options.scan);
   if (const auto file_unit = specifiedLengthUnit (format))
     scan["file_unit"] = {{"unit", toString (*file_unit)},
@@ -337,7 +340,7 @@ fittedScanColours (const RegisterOptions& options, const LengthUnitGuess& unit, 
 {
   if (!options.intrinsics.empty ())
     return std::nullopt;
-  return scanColoursAt (options.scan, millimetresPer (unit.unit), options.colours, vertices, warnings);
+  return scanColoursAt (options.scan, unit.scale_to_mm, options.colours, vertices, warnings);
 }
 
 /** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
@@ -380,9 +383,9 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
   throw FitCheckFailure (reasons + " (see " + report_path + ")", report);
 }
 
-/** Runs \a icp's fit with progress shown unless quiet; a lost scan is reported and thrown (reportLostFit). */
+/** Runs \a icp's fit with progress shown unless quiet; TooFewCorrespondencesError when it loses the scan. */
 void
-alignScan (Icp& icp, const RegisterOptions& options, std::size_t scan_points)
+alignScan (Icp& icp, const RegisterOptions& options)
 {
   const Progress progress ("registering " + options.scan, options.iterations, options.quiet);
   if (!options.quiet)
@@ -391,13 +394,133 @@ alignScan (Icp& icp, const RegisterOptions& options, std::size_t scan_points)
   try {
     icp.align (aligned);
   }
-  catch (const TooFewCorrespondencesError& e) {
-    reportLostFit (options, scan_points, e);
+  catch (const TooFewCorrespondencesError&) {
+    throw;
   }
   catch (const InvalidInputError& e) { // the scan passed the checks before the fit, but the fit cannot use it
     throw InvalidInputError (options.scan + ": cannot be registered: " + e.what ());
   }
   progress.finish (static_cast<int> (icp.getRegistrationReport ().history.size ()));
+}
+
+/** A fit of the scan at one scale: the scan in mm at that scale, and the registration, or why it lost the scan. */
+struct UnitFit
+{
+  ScanCloud scan;           ///< the scan in mm at unit.scale_to_mm
+  LengthUnitGuess unit;     ///< the unit or scale the scan was brought to mm by
+  std::unique_ptr<Icp> icp; ///< the finished registration; null when the fit lost the scan
+  std::string lost;         ///< why the fit lost the scan (too few correspondences), if it did
+  double seconds = 0.0;     ///< the fit's time
+};
+
+/** \a scan with its points (and viewpoint) times \a factor. */
+ScanCloud
+scaledScan (const ScanCloud& scan, double factor)
+{
+  ScanCloud scaled{pcl::make_shared<pcl::PointCloud<pcl::PointNormal>> (*scan.cloud), scan.viewpoint};
+  const auto to_mm = static_cast<float> (factor);
+  if (to_mm != 1.0f)
+    for (auto& point : *scaled.cloud)
+      point.getVector3fMap () *= to_mm;
+  if (scaled.viewpoint)
+    *scaled.viewpoint *= factor;
+  return scaled;
+}
+
+/** Registers \a scan (mm) to \a model with the options' settings and landmarks. */
+UnitFit
+fitScan (const RegisterOptions& options, const MorphableModel::Ptr& model, ScanCloud scan, const LengthUnitGuess& unit,
+         std::ostream& warnings)
+{
+  UnitFit fit{std::move (scan), unit, std::make_unique<Icp> (), "", 0.0};
+  Icp& icp = *fit.icp;
+  configureRegistration (icp, options, model);
+  icp.setTargetViewpoint (fit.scan.viewpoint);
+  if (!options.landmarks.empty ())
+    icp.setTargetLandmarks (modelLandmarks (options, *model, *fit.scan.cloud, warnings), options.landmark_weight);
+  icp.setInputTarget (fit.scan.cloud);
+  const auto start = Clock::now ();
+  try {
+    alignScan (icp, options);
+  }
+  catch (const TooFewCorrespondencesError& e) {
+    fit.lost = e.what ();
+    fit.icp.reset ();
+  }
+  fit.seconds = secondsSince (start);
+  return fit;
+}
+
+/** The fit's similarity scale (model to scan). */
+double
+fittedScale (Icp& icp)
+{
+  return std::cbrt (icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ().determinant ());
+}
+
+/** Whether --units auto looks for the scan's scale in its head: its size is a head in no unit, or the fit at the unit
+ *  its size suggested lost the scan or found the head at a size no head has (checkFitPlausibility's scale bounds). */
+bool
+needsHeadScale (const RegisterOptions& options, const UnitFit& fit)
+{
+  if (options.units != "auto" || !options.intrinsics.empty ())
+    return false;
+  if (!fit.unit.recognised || !fit.icp)
+    return true;
+  const FitPlausibilitySettings limits;
+  const double scale = fittedScale (*fit.icp);
+  return scale < limits.min_scale || scale > limits.max_scale;
+}
+
+/** What the fit at the provisional scale or the final fit found, for the message of a scan refused as no head. */
+std::string
+whyNoHead (const UnitFit& fit, const MorphableModel& model)
+{
+  if (!fit.icp)
+    return "lost the scan (" + fit.lost + ")";
+  std::string failures;
+  for (const std::string& failure : checkRegistration (*fit.icp, model).failures)
+    failures += (failures.empty () ? "" : "; ") + failure;
+  return "failed its checks (" + failures + ")";
+}
+
+/** The scan's unit found from its head (--units auto, see needsHeadScale): a fit at a provisional scale measures the
+ *  head (provisionalHeadScale), the unit or estimated scale follows from its size (unitFromHeadScale), and the scan
+ *  is fitted again at it. When no head is found, the fit at the unit its size suggested stands if there was one;
+ *  else the scan is refused (InvalidInputError naming it, its size and what was tried). */
+UnitFit
+fitAtHeadScale (const RegisterOptions& options, const MorphableModel::Ptr& model, const ScanCloud& as_read,
+                UnitFit suggested, std::ostream& out, std::ostream& warnings)
+{
+  const LengthUnitGuess provisional = provisionalHeadScale (suggested.unit);
+  const std::string tried = suggested.unit.recognised ? "read as " + toString (suggested.unit.unit) + ", the fit " +
+                                                            whyNoHead (suggested, *model) + "; "
+                                                      : "";
+  UnitFit measured = fitScan (options, model, scaledScan (as_read, provisional.scale_to_mm), provisional, warnings);
+  std::string failure = "at the provisional scale the fit " + whyNoHead (measured, *model);
+  // the global alignment searches heads of 0.6-1.6 times the model: a fit far outside found no head to measure
+  constexpr double kSmallestHead = 0.5, kLargestHead = 2.0;
+  if (measured.icp && (fittedScale (*measured.icp) < kSmallestHead || fittedScale (*measured.icp) > kLargestHead))
+    measured.icp.reset ();
+  if (measured.icp) {
+    const FitPlausibilitySettings limits;
+    const LengthUnitGuess unit =
+        unitFromHeadScale (provisional, fittedScale (*measured.icp), limits.min_scale, limits.max_scale);
+    UnitFit final = fitScan (options, model, scaledScan (as_read, unit.scale_to_mm), unit, warnings);
+    final.unit.reason = provisional.reason + "; " + unit.reason;
+    if (final.icp && checkRegistration (*final.icp, *model).plausible) {
+      out << "units: " << options.scan << ": " << final.unit.reason << "; rescaled to mm\n";
+      return final;
+    }
+    std::ostringstream at;
+    at << unit.reason << "; at x" << std::setprecision (4) << unit.scale_to_mm << " to mm the fit "
+       << whyNoHead (final, *model);
+    failure = at.str ();
+  }
+  if (suggested.unit.recognised)
+    return suggested;
+  throw InvalidInputError (options.scan + ": no head found, so its unit cannot be estimated: " + provisional.reason +
+                           "; " + tried + failure + ". Give --units if it is a head");
 }
 } // namespace
 
@@ -406,20 +529,21 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  ScanCloud loaded = loadScan (options);
-  const auto& scan = loaded.cloud;
-  const LengthUnitGuess unit = convertScanToMillimetres (loaded, options, *model, out);
-  Icp icp;
-  configureRegistration (icp, options, model);
-  icp.setTargetViewpoint (loaded.viewpoint);
-  if (!options.landmarks.empty ())
-    icp.setTargetLandmarks (modelLandmarks (options, *model, *scan, warnings), options.landmark_weight);
-  icp.setInputTarget (scan);
+  const ScanCloud as_read = loadScan (options);
+  ScanCloud loaded = scaledScan (as_read, 1.0);
+  const LengthUnitGuess guess = convertScanToMillimetres (loaded, options, *model, out);
+  UnitFit fit{std::move (loaded), guess, nullptr, "", 0.0};
   const double load_seconds = model_seconds + secondsSince (start);
-
-  const auto fit_start = Clock::now ();
-  alignScan (icp, options, scan->size ());
-  const double fit_seconds = secondsSince (fit_start);
+  if (guess.recognised || options.units != "auto")
+    fit = fitScan (options, model, std::move (fit.scan), guess, warnings);
+  if (needsHeadScale (options, fit))
+    fit = fitAtHeadScale (options, model, as_read, std::move (fit), out, warnings);
+  if (!fit.icp)
+    reportLostFit (options, fit.scan.cloud->size (), fit.lost);
+  Icp& icp = *fit.icp;
+  const auto& scan = fit.scan.cloud;
+  const LengthUnitGuess& unit = fit.unit;
+  const double fit_seconds = fit.seconds;
 
   const auto write_start = Clock::now ();
   const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
@@ -491,8 +615,9 @@ addScanTreatmentOptions (CLI::App* command, RegisterOptions& options)
       "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
   command
       ->add_option ("--units", options.units,
-                    "the scan's length unit: auto (from its size), mm, cm, m or in (glTF/GLB scans: the unit after "
-                    "reading, which converts glTF's metres to mm)")
+                    "the scan's length unit: auto (from its size; a scan in no unit: its scale estimated from the "
+                    "head), mm, cm, m or in (glTF/GLB scans: the unit after reading, which converts glTF's metres "
+                    "to mm)")
       ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
       ->capture_default_str ();
 }

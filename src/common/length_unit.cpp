@@ -155,6 +155,7 @@ guessLengthUnit (const Eigen::Matrix3Xd& points, double model_radius_mm, bool on
   guess.recognised = head_sized;
   if (!head_sized)
     guess.unit = LengthUnit::millimetre;
+  guess.scale_to_mm = millimetresPer (guess.unit);
   return guess;
 }
 
@@ -182,6 +183,7 @@ guessModelUnit (const Eigen::Matrix3Xd& mean)
                            numberText (kHeadModelRadiusMm) + " mm)";
   if (!guess.recognised)
     guess.unit = LengthUnit::millimetre;
+  guess.scale_to_mm = millimetresPer (guess.unit);
   return guess;
 }
 

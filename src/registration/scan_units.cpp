@@ -47,9 +47,10 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::st
   }
   else {
     unit.unit = parseLengthUnit (units);
+    unit.scale_to_mm = millimetresPer (unit.unit);
     unit.reason = "given: " + units;
   }
-  const auto to_mm = static_cast<float> (millimetresPer (unit.unit));
+  const auto to_mm = static_cast<float> (unit.scale_to_mm);
   if (to_mm != 1.0f)
     for (auto& point : scan)
       point.getVector3fMap () *= to_mm;

@@ -2,6 +2,7 @@
 // guessLengthUnit on head-sized point sets in every unit, the sizes each unit is recognised over, and the unit
 // symbols; the scan checks and the fit's plausibility checks are in test/registration/scan_checks_test.cpp.
 #include <morphreg/common/error.h>
+#include <morphreg/common/head_scale_unit.h>
 #include <morphreg/common/length_unit.h>
 
 #include <gtest/gtest.h>
@@ -136,6 +137,72 @@ TEST (UnitGuessTest, BadInputIsReported)
   EXPECT_NE (message (broken, 90.0).find ("non-finite"), std::string::npos);
   EXPECT_NE (message (ellipsoidHead (100), 0.0).find ("model radius must be positive"), std::string::npos);
   EXPECT_NE (message (ellipsoidHead (100), std::nan ("")).find ("model radius"), std::string::npos);
+}
+
+/** What a fit finds at \a tried's scale of a head-and-shoulders scan whose unit is \a true_mm_per_unit and whose head
+ *  is \a head_scale times the model: the head at tried.scale_to_mm / true_mm_per_unit times its true size. */
+morphreg::LengthUnitGuess
+unitAfterFit (const morphreg::LengthUnitGuess& tried, double true_mm_per_unit, double head_scale)
+{
+  return morphreg::unitFromHeadScale (tried, head_scale * tried.scale_to_mm / true_mm_per_unit, 0.75, 1.33);
+}
+
+// Units that are no units (head_scale_unit.h): 0.1 m, 0.37 mm, 7 mm and 0.093 mm per unit. The size guess reads 0.1 m
+// per unit as inches (0.39 times the true size), 0.37 mm per unit as mm (2.7 times too large), 7 mm per unit as cm
+// (1.43 times too large) and 0.093 mm per unit as nothing; the fit at the suggested unit finds the head at a scale no
+// head has, so the provisional scale brings each to 1.1 times the model, and the head's fitted scale then gives the
+// unit's true mm.
+TEST (HeadScaleUnitTest, ArbitraryUnitsAreEstimatedFromTheHead)
+{
+  const Eigen::Matrix3Xd scan = headAndShoulders ();
+  for (const auto& [mm_per_unit, size_guess] :
+       std::vector<std::pair<double, bool>>{{100.0, true}, {0.37, true}, {7.0, true}, {0.093, false}}) {
+    const morphreg::LengthUnitGuess guess = morphreg::guessLengthUnit (scan / mm_per_unit, modelRadius ());
+    EXPECT_EQ (guess.recognised, size_guess) << mm_per_unit << ": " << guess.reason;
+    const morphreg::LengthUnitGuess provisional = morphreg::provisionalHeadScale (guess);
+    EXPECT_TRUE (provisional.estimated);
+    EXPECT_NEAR (provisional.scale_to_mm * guess.size_ratio, morphreg::kProvisionalHeadRatio, 1e-12);
+    const morphreg::LengthUnitGuess unit = unitAfterFit (provisional, mm_per_unit, 1.0);
+    EXPECT_TRUE (unit.estimated && !unit.recognised) << unit.reason;
+    EXPECT_NEAR (unit.scale_to_mm / mm_per_unit, 1.0, 1e-12) << unit.reason;
+    EXPECT_NE (unit.reason.find ("estimated from the head"), std::string::npos) << unit.reason;
+    // a head 10 % larger than the model is taken at the model's size: the unit comes out 10 % small
+    EXPECT_NEAR (unitAfterFit (provisional, mm_per_unit, 1.1).scale_to_mm / mm_per_unit, 1.0 / 1.1, 1e-12);
+  }
+}
+
+// A known unit is kept whenever it puts the head at a plausible scale (0.75-1.33): a large head in cm (1.28, as Lee
+// Perry-Smith's read at 7.3 mm per unit), a small one in inches, a scan in metres brought to 1.1 times the model.
+TEST (HeadScaleUnitTest, KnownUnitIsPreferredWhenPlausible)
+{
+  morphreg::LengthUnitGuess tried;
+  tried.size_ratio = 0.01;
+  tried.scale_to_mm = 10.0;
+  const morphreg::LengthUnitGuess large_in_cm = morphreg::unitFromHeadScale (tried, 1.28, 0.75, 1.33);
+  EXPECT_EQ (large_in_cm.unit, LengthUnit::centimetre);
+  EXPECT_TRUE (large_in_cm.recognised && !large_in_cm.estimated) << large_in_cm.reason;
+  EXPECT_EQ (large_in_cm.scale_to_mm, 10.0);
+  EXPECT_NE (large_in_cm.reason.find ("taken as cm (x10 to mm), it is 1.28 times the model"), std::string::npos)
+      << large_in_cm.reason;
+  tried.scale_to_mm = 30.0;
+  EXPECT_EQ (morphreg::unitFromHeadScale (tried, 1.0, 0.75, 1.33).unit, LengthUnit::inch); // a head of 0.85
+  tried.scale_to_mm = 1100.0;
+  EXPECT_EQ (morphreg::unitFromHeadScale (tried, 1.05, 0.75, 1.33).unit, LengthUnit::metre);
+  EXPECT_TRUE (morphreg::unitFromHeadScale (tried, 1.6, 0.75, 1.33).estimated); // 0.6 in metres: no unit
+}
+
+TEST (HeadScaleUnitTest, BadInputIsReported)
+{
+  morphreg::LengthUnitGuess tried;
+  EXPECT_THROW (morphreg::provisionalHeadScale (tried), morphreg::InvalidInputError); // no size ratio
+  tried.size_ratio = std::nan ("");
+  EXPECT_THROW (morphreg::provisionalHeadScale (tried), morphreg::InvalidInputError);
+  tried.size_ratio = 1.0;
+  EXPECT_THROW (morphreg::unitFromHeadScale (tried, 0.0, 0.75, 1.33), morphreg::InvalidInputError);
+  EXPECT_THROW (morphreg::unitFromHeadScale (tried, std::nan (""), 0.75, 1.33), morphreg::InvalidInputError);
+  EXPECT_THROW (morphreg::unitFromHeadScale (tried, 1.0, -1.0, 1.33), morphreg::InvalidInputError);
+  tried.scale_to_mm = 0.0;
+  EXPECT_THROW (morphreg::unitFromHeadScale (tried, 1.0, 0.75, 1.33), morphreg::InvalidInputError);
 }
 
 // A model's mean in the unit its file does not state: a head (ellipsoid, RMS radius 90 mm), a face alone and a body

@@ -9,7 +9,7 @@ if(NOT TARGET morphreg_cli)
 endif()
 set(gltf_dir ${CMAKE_CURRENT_BINARY_DIR}/cli/gltf)
 set(gltf_scripts ${CMAKE_CURRENT_SOURCE_DIR}/scripts/cli)
-foreach(program gltf_test_files check_scan_colours)
+foreach(program gltf_test_files check_scan_colours check_unit_estimate)
   add_executable(${program} ${gltf_scripts}/${program}.cpp)
   target_link_libraries(${program} PRIVATE morphreg::core morphreg_test_support draco::draco)
   target_compile_options(${program} PRIVATE -Wall -Wextra)
@@ -23,11 +23,21 @@ morphreg_command_test(CliTest.GltfFilesWritten FIXTURES_SETUP cli_gltf FILES ${g
 set(real_scans ${MORPHREG_SHARED_DATA_DIR}/real_head_scans)
 set(ict_basis ${MORPHREG_SHARED_DATA_DIR}/ict_facekit/ict_head_pca_basis.npy)
 set(ict30 ${CMAKE_CURRENT_BINARY_DIR}/cli/ict30.h5) # CliTest.BuildIct30Model (cli.cmake)
-# The arbitrary unit's version is left out: unit guessing takes its 0.137-times-sized head for centimetres.
-foreach(scan "lee;leeperrysmith_head_mm.ply" "james;menpo3d_james/james.obj"
-        "demoface;meshmonk_demoface/demoface_10k.obj")
+# The arbitrary unit's version (1 unit = 93 mm, read as metres) fits at a scale estimated from the head: its fit,
+# brought into the original's frame by the true scale, lies within BOUND (1.3 times the face median measured
+# 2026-11-29: Lee 0.061, james 0.221, demoface 0.076 mm; the estimate 1 % off moves it 1-3 mm) of the original's.
+foreach(scan "lee;leeperrysmith_head_mm.ply;0.08" "james;menpo3d_james/james.obj;0.29"
+        "demoface;meshmonk_demoface/demoface_10k.obj;0.1")
   list(GET scan 0 name)
   list(GET scan 1 file)
+  list(GET scan 2 bound)
+  morphreg_command_test(CliTest.GltfEstimatedUnit.${name} FIXTURES_REQUIRED "cli_ict30;cli_gltf"
+    REQUIRES_DATA ${real_scans}/${file} ${ict_basis}
+    OUTPUT "estimated scale over the true .* face median from the original fit"
+    COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:morphreg_cli> -DCHECKER=$<TARGET_FILE:check_unit_estimate>
+            -DMODEL=${ict30} -DORIGINAL=${real_scans}/${file} -DVERSION=${gltf_dir}/${name}_arbitrary_unit.glb
+            -DTRUE_SCALE=0.093 -DBOUND=${bound} -DOUT=${gltf_dir}/estimated_${name}
+            -P ${gltf_scripts}/check_unit_estimate.cmake)
   set(versions "")
   foreach(variant plain draco node_transform two_primitives)
     list(APPEND versions ${gltf_dir}/${name}_${variant}.glb)

@@ -43,8 +43,9 @@ enum class GlbVariant
 const GlbVariant kGlbVariants[] = {GlbVariant::plain, GlbVariant::draco, GlbVariant::node_transform,
                                    GlbVariant::two_primitives, GlbVariant::arbitrary_unit};
 
-/** The scene is this many times the scan in the arbitrary unit's version (0.137 m per unit, read as metres). */
-constexpr double kArbitraryUnitScale = 0.137;
+/** The scene is this many times the scan in the arbitrary unit's version: a capture whose unit is 93 mm, read as
+ *  glTF's metres, is 1000 / 93 times its size in mm (a head in no unit: register estimates its scale from the head). */
+constexpr double kArbitraryUnitScale = 1000.0 / 93.0;
 
 inline std::string
 variantName (GlbVariant variant)

@@ -47,6 +47,9 @@ struct LengthUnitGuess
   double size_ratio = 0.0;                  ///< the scan's size over the model's, both as given
   std::string reason;                       ///< one sentence with the numbers behind the choice
   bool recognised = true;                   ///< false when no unit gives the expected size (the unit is then mm)
+  /** mm per scan unit: millimetresPer (unit), or when \a estimated a factor found from the head itself */
+  double scale_to_mm = 1.0;
+  bool estimated = false; ///< true when scale_to_mm is no unit's but estimated (see head_scale_unit.h)
 };
 
 /** \brief Guesses the unit of \a points (3 x N) from their size against a head model's, \a model_radius_mm (the RMS

@@ -278,7 +278,7 @@ LengthUnitGuess
 MorphableICP<PointTarget, Scalar>::resolveTargetUnit () const
 {
   if (target_unit_)
-    return {*target_unit_, 0.0, "given"};
+    return {*target_unit_, 0.0, "given", true, millimetresPer (*target_unit_)};
   const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
   const Eigen::Vector3d centroid = mean.rowwise ().mean ();
   const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
