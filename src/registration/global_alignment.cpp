@@ -507,8 +507,9 @@ gridScoring (const ModelFrame& model, const GlobalAlignmentSettings& settings)
 }
 
 /** The grid score of \a similarity (lower is better): the weighted mean of the scan's distance \a field at the posed
- *  samples that face the sensor, averaged with the backward score of the \a scan points (a few hundred about the
- *  place searched) near the posed model (within its reach at its own size at least); the truncation when the sensor sees less than a quarter of the model. */
+ *  samples that face the sensor; for a one-view scan (a \a viewpoint), averaged with the backward score of the
+ *  \a scan points (a few hundred about the place searched) near the posed model (within its reach at its own size at
+ *  least). The truncation when the sensor sees less than a quarter of the model. */
 double
 gridScore (const GridScoring& scoring, const ModelFrame& model, const DistanceField& field,
            const Eigen::Matrix3Xd& scan, const Eigen::Matrix4d& similarity,
@@ -525,6 +526,8 @@ gridScore (const GridScoring& scoring, const ModelFrame& model, const DistanceFi
     }
   if (weight < 0.25 * scoring.weights.sum ())
     return scoring.truncation;
+  if (!viewpoint) // around a whole head, shoulders, a chair and hair would weigh in the scan-to-model half
+    return sum / weight;
   const double reach = std::max (1.0, detail::similarityScale (similarity)) * scoring.reach;
   return 0.5 * (sum / weight + backwardScore (model, scan, similarity, linear * model.centroid + translation, reach,
                                               scoring.truncation));

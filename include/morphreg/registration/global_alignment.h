@@ -4,7 +4,8 @@
  *  \brief A landmark-free start for MorphableICP from any rotation, on scans that hold more than the head
  *  (shoulders, a chair back, hair) or less (a face alone, one depth camera's view): the head is found as the
  *  strongest head-sized sphere of the scan, or for a one-view scan by laying the model's side facing the sensor onto
- *  the scan; the rotation by scoring a grid over all of SO(3) on distance transforms of the scan and the model; and
+ *  the scan; the rotation by scoring a grid over all of SO(3) on distance transforms of the scan (and, for one view,
+ *  of the model); and
  *  the best distinct poses are refined by a trimmed similarity ICP and scored again.
  */
 #include <morphreg/mesh/triangle_mesh.h>
@@ -68,9 +69,10 @@ struct GlobalAlignment
  *     sphere-like part: shoulders and planes spread their votes), and the same vote on the model's mean gives the
  *     model's head sphere. The radii's ratio is the first scale.
  *  3. For each candidate, the rotations of a grid over SO(3) about the matched sphere centres are scored by the
- *     truncated mean distance of model samples to the scan (a distance transform of the scan) averaged with that of
- *     the scan points to the model (a distance transform of the model, in its frame), so that a face is not taken
- *     for a smaller, smoother part of the head that leaves its nose and chin out.
+ *     truncated mean distance of model samples to the scan (a distance transform of the scan); for a one-view scan
+ *     averaged with that of the scan points about the candidate to the model (a distance transform of the model, in
+ *     its frame), so that a face is not taken for a smaller, smoother part of the head that leaves its nose and chin
+ *     out (around a whole head, the shoulders, a chair and hair would weigh in that half).
  *  4. With settings.viewpoint (one view), per grid rotation and at 0.8 to 1.2 times the model's size, the model's
  *     side facing the sensor is also laid onto the scan (its part within the scan's outline centred on the scan)
  *     and scored the same way, seeing only the model within the scan's outline.
