@@ -128,9 +128,9 @@ BM_BetweenSubjectsTps (benchmark::State& state)
 } // namespace
 
 // Arg: the rigidity (0: skinning alone, 1: the default refinement).
-BENCHMARK (BM_ArticulatedWarp)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
-BENCHMARK (BM_SegmentedTps)->Unit (benchmark::kMillisecond)->UseRealTime ();
-BENCHMARK (BM_BetweenSubjectsMls)->Unit (benchmark::kMillisecond)->UseRealTime ();
-BENCHMARK (BM_BetweenSubjectsTps)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_ArticulatedWarp)->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_SegmentedTps)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_BetweenSubjectsMls)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_BetweenSubjectsTps)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 BENCHMARK_MAIN ();

@@ -137,15 +137,9 @@ BM_MorphregLoadPolygonMeshPly (benchmark::State& state)
 }
 } // namespace
 
-BENCHMARK (BM_PclLoadPly)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->MeasureProcessCPUTime ();
-BENCHMARK (BM_MorphregLoadPolygonMeshPly)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->MeasureProcessCPUTime ();
-BENCHMARK (BM_VtkGltfReader)->Args ({0, 0})->Args ({1, 0})->Unit (benchmark::kMillisecond)->MeasureProcessCPUTime ();
-BENCHMARK (BM_MorphregReadGltf)
-    ->ArgsProduct ({{0, 1}, {0, 1}})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ();
-BENCHMARK (BM_MorphregLoadPolygonMeshGlb)
-    ->ArgsProduct ({{0, 1}, {0, 1}})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_PclLoadPly)->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_MorphregLoadPolygonMeshPly)->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_VtkGltfReader)->Args ({0, 0})->Args ({1, 0})->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_MorphregReadGltf)->ArgsProduct ({{0, 1}, {0, 1}})->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_MorphregLoadPolygonMeshGlb)->ArgsProduct ({{0, 1}, {0, 1}})->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK_MAIN ();

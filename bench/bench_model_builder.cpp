@@ -157,39 +157,21 @@ BM_EigenBdcSvdBaseline (benchmark::State& state)
 // baseline then decomposes the aligned data matrix, i.e. the same matrix the builder's PCA sees), and for the builder
 // the components kept per region and globally (0 = all, 15 = the top of the thesis's 5-15 range). Each baseline runs
 // right before the builder cases it is compared with, so that both see the same load on a shared machine.
-BENCHMARK (BM_EigenBdcSvdBaseline)
-    ->Args ({0, 1})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ()
-    ->Iterations (3);
+BENCHMARK (BM_EigenBdcSvdBaseline)->Args ({0, 1})->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
 BENCHMARK (BM_ModelBuilder)
     ->Args ({0, 1, 0})
     ->Args ({0, 1, 15})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ()
+    ->Apply (morphreg::bench::wallAndProcessCpuMs)
     ->Iterations (3);
-BENCHMARK (BM_EigenBdcSvdBaseline)
-    ->Args ({0, 0})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ()
-    ->Iterations (3);
-BENCHMARK (BM_ModelBuilder)->Args ({0, 0, 0})->Unit (benchmark::kMillisecond)->MeasureProcessCPUTime ()->Iterations (3);
-BENCHMARK (BM_EigenBdcSvdBaseline)
-    ->Args ({1, 1})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ()
-    ->Iterations (3);
+BENCHMARK (BM_EigenBdcSvdBaseline)->Args ({0, 0})->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
+BENCHMARK (BM_ModelBuilder)->Args ({0, 0, 0})->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
+BENCHMARK (BM_EigenBdcSvdBaseline)->Args ({1, 1})->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
 BENCHMARK (BM_ModelBuilder)
     ->Args ({1, 1, 0})
     ->Args ({1, 1, 15})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ()
+    ->Apply (morphreg::bench::wallAndProcessCpuMs)
     ->Iterations (3);
-BENCHMARK (BM_EigenBdcSvdBaseline)
-    ->Args ({1, 0})
-    ->Unit (benchmark::kMillisecond)
-    ->MeasureProcessCPUTime ()
-    ->Iterations (3);
-BENCHMARK (BM_ModelBuilder)->Args ({1, 0, 0})->Unit (benchmark::kMillisecond)->MeasureProcessCPUTime ()->Iterations (3);
+BENCHMARK (BM_EigenBdcSvdBaseline)->Args ({1, 0})->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
+BENCHMARK (BM_ModelBuilder)->Args ({1, 0, 0})->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
 
 BENCHMARK_MAIN ();

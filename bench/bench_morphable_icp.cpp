@@ -105,13 +105,7 @@ BM_PclIcpAlign (benchmark::State& state)
   else
     morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_PclIcpAlign)
-    ->ArgName ("cached")
-    ->Arg (0)
-    ->Arg (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_PclIcpAlign)->ArgName ("cached")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 void
 BM_MorphableIcpAlign (benchmark::State& state)
@@ -144,9 +138,7 @@ BENCHMARK (BM_MorphableIcpAlign)
     ->ArgName ("coarse_start")
     ->Arg (0)
     ->Arg (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 } // namespace
 

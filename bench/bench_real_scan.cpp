@@ -87,7 +87,7 @@ BM_PclIcpOfTheMeanOntoTheScan (benchmark::State& state)
   }
   morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_PclIcpOfTheMeanOntoTheScan)->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
+BENCHMARK (BM_PclIcpOfTheMeanOntoTheScan)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The scan baseline (issue 12): PCL's rigid ICP of the posed cloud back onto the original, from the true pose. */
 void
@@ -105,7 +105,7 @@ BM_PclIcpFromTruePose (benchmark::State& state)
   }
   morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_PclIcpFromTruePose)->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
+BENCHMARK (BM_PclIcpFromTruePose)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The global start alone. */
 void
@@ -120,7 +120,7 @@ BM_GlobalStart (benchmark::State& state)
     benchmark::DoNotOptimize (morphreg::alignHeadGlobally (mesh, f.points, f.normals).confidence);
   morphreg::bench::reportOpenMpThreads (state);
 }
-BENCHMARK (BM_GlobalStart)->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
+BENCHMARK (BM_GlobalStart)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The whole landmark-free registration: global start, similarity and shape stages. */
 void
@@ -138,11 +138,7 @@ BM_RegistrationFromArbitraryPose (benchmark::State& state)
   }
   morphreg::bench::reportOpenMpThreads (state);
 }
-BENCHMARK (BM_RegistrationFromArbitraryPose)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ()
-    ->Iterations (3);
+BENCHMARK (BM_RegistrationFromArbitraryPose)->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
 
 } // namespace
 

@@ -11,6 +11,14 @@ namespace morphreg
 {
 namespace bench
 {
+/** Registers a case's times as wall-clock milliseconds with the process's CPU time over all its threads beside them:
+ *  BENCHMARK (BM_X)->Apply (wallAndProcessCpuMs). */
+inline void
+wallAndProcessCpuMs (benchmark::internal::Benchmark* b)
+{
+  b->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
+}
+
 /** The case runs on the OpenMP threads this process may use (morphreg's loops, and Eigen's products). */
 inline void
 reportOpenMpThreads (benchmark::State& state)

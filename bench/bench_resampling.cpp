@@ -123,13 +123,7 @@ BM_ResamplerSetScan (benchmark::State& state)
   if (state.range (0) == 1) // Embree's build runs on its own thread pool
     morphreg::bench::reportThreads (state, static_cast<int> (std::thread::hardware_concurrency ()));
 }
-BENCHMARK (BM_ResamplerSetScan)
-    ->ArgName ("mesh")
-    ->Arg (0)
-    ->Arg (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_ResamplerSetScan)->ArgName ("mesh")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** resample(): the rays and the hole fills, on the cloud (0) or the mesh (1); the parts as counters (ms, mean over
  *  the iterations). */
@@ -157,13 +151,7 @@ BM_Resample (benchmark::State& state)
   state.counters["holes"] = static_cast<double> (stats.holes.size ());
   morphreg::bench::reportNoExternalBaseline (state);
 }
-BENCHMARK (BM_Resample)
-    ->ArgName ("mesh")
-    ->Arg (0)
-    ->Arg (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_Resample)->ArgName ("mesh")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** A VTK locator over the scan mesh: 0 vtkOBBTree, 1 vtkStaticCellLocator, 2 vtkModifiedBSPTree. */
 vtkSmartPointer<vtkAbstractCellLocator>
@@ -191,12 +179,7 @@ BM_VtkLocatorBuild (benchmark::State& state)
   // vtkStaticCellLocator builds through vtkSMPTools, the other two serially
   morphreg::bench::reportThreads (state, state.range (0) == 1 ? vtkSMPTools::GetEstimatedNumberOfThreads () : 1);
 }
-BENCHMARK (BM_VtkLocatorBuild)
-    ->ArgName ("locator")
-    ->DenseRange (0, 2)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_VtkLocatorBuild)->ArgName ("locator")->DenseRange (0, 2)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The resampler's ray queries without its normal test: from every reference vertex along +n and -n within the
  *  reach, the first hit of each; the locator as in makeLocator. */
@@ -223,12 +206,7 @@ BM_VtkLocatorRays (benchmark::State& state)
   state.counters["hits"] = hits;
   morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_VtkLocatorRays)
-    ->ArgName ("locator")
-    ->DenseRange (0, 2)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_VtkLocatorRays)->ArgName ("locator")->DenseRange (0, 2)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The resampler's Embree scene over the scan mesh. */
 void
@@ -239,7 +217,7 @@ BM_EmbreeBuild (benchmark::State& state)
   sizeCounters (state);
   morphreg::bench::reportThreads (state, static_cast<int> (std::thread::hardware_concurrency ()));
 }
-BENCHMARK (BM_EmbreeBuild)->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
+BENCHMARK (BM_EmbreeBuild)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The queries of BM_VtkLocatorRays through Embree's rtcIntersect1, on one thread. */
 void
@@ -264,7 +242,7 @@ BM_EmbreeRays (benchmark::State& state)
   state.counters["hits"] = hits;
   morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_EmbreeRays)->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
+BENCHMARK (BM_EmbreeRays)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 constexpr int kNeighbours = 24; ///< the resampler's default
 
@@ -315,13 +293,7 @@ BM_NeighbourSearch (benchmark::State& state)
   state.counters["cell_mm"] = cell;
   morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_NeighbourSearch)
-    ->ArgName ("flann")
-    ->Arg (0)
-    ->Arg (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+BENCHMARK (BM_NeighbourSearch)->ArgName ("flann")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 } // namespace
 
 BENCHMARK_MAIN ();

@@ -139,35 +139,21 @@ BENCHMARK (BM_FitMorphreg)
     ->Arg (1000)
     ->Arg (2000)
     ->Arg (5000)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
-BENCHMARK (BM_FitVtk)->Arg (66)->Unit (benchmark::kMillisecond)->UseRealTime ()->MeasureProcessCPUTime ();
-BENCHMARK (BM_FitVtk)
-    ->Arg (500)
-    ->Arg (1000)
-    ->Iterations (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_FitVtk)->Arg (66)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_FitVtk)->Arg (500)->Arg (1000)->Iterations (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK (BM_EvaluateMorphreg)
     ->ArgsProduct ({{66, 500, 1000}, {16384, 1 << 20}, {0, 1}})
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK (BM_EvaluateVtk)
     ->Args ({66, 16384})
     ->Args ({500, 16384})
     ->Args ({1000, 16384})
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK (BM_EvaluateVtk)
     ->Args ({66, 1 << 20})
     ->Args ({500, 1 << 20})
     ->Args ({1000, 1 << 20})
     ->Iterations (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ()
-    ->MeasureProcessCPUTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK_MAIN ();
