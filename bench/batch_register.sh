@@ -8,7 +8,8 @@
 #   batch:         `register --scans` (default --jobs = cores, each fit cores/jobs threads)
 # and prints scans per minute, the ratios, the peak resident memory (/usr/bin/time %M) and the share of each scan's
 # time spent outside the fit (from summary.csv: seconds - fit_seconds, over seconds; and over the whole run: 1 - the
-# fits' seconds / (wall seconds x jobs), which counts the model load and the batch's own work). Results:
+# fits' seconds / (wall seconds x jobs), which counts the model load and the batch's own work). No external baseline:
+# PCL and VTK have no batch registration, so the batch is compared with morphreg's own single-scan command. Results:
 # bench/RESULTS.md.
 set -euo pipefail
 scans=${1:-200}
@@ -58,7 +59,7 @@ def batch(name):
     return seconds, ok, (total - fit) / total, rss, 1 - fit / (seconds * jobs), jobs
 loop_ok = sum(1 for i in range(scans) if '"status": "ok"' in open("loop/scan_%d.json" % i).read())
 loop_rate = scans / loop_seconds * 60
-print("%d scans, %d cores" % (scans, cores))
+print("%d scans, %d cores (no external baseline: the batch against morphreg's own loop)" % (scans, cores))
 print("loop of single register calls: %.1f s, %.1f scans/min, %d ok, peak memory %.0f MB per call"
       % (loop_seconds, loop_rate, loop_ok, loop_rss / 1024))
 for name, label in (("batch_jobs1", "register --scans --jobs 1"), ("batch", "register --scans (jobs = cores)")):

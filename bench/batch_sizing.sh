@@ -11,14 +11,15 @@
 #   2 jobs x 1 thread (both cores, one scan each: the default)
 # and a rerun of the last with every scan done (content hashes of each scan and the model checked, then skipped).
 # Prints wall time per scan, core-seconds per scan, peak resident memory (/usr/bin/time %M) and the outputs' size.
+# No baseline: these are sizes for a plan, not a comparison. Exits 77 (a skip for ctest) without the shared data.
 set -euo pipefail
 scans=${1:-8}
 build=$(realpath "${2:-build}")
 work=${3:-/tmp/morphreg_batch_sizing}
-data=$(realpath "${4:-$(dirname "$0")/../../shared/data}")
+data=$(realpath -m "${4:-$(dirname "$0")/../../shared/data}")
 morphreg=$build/tools/morphreg
 scan=$data/real_head_scans/leeperrysmith_scan_82k_mm.ply
-[ -f "$scan" ] || { echo "batch_sizing: $scan is missing"; exit 1; }
+[ -f "$scan" ] || { echo "batch_sizing: $scan is missing (../shared/data absent): skipped"; exit 77; }
 rm -rf "$work" && mkdir -p "$work"
 cd "$work"
 "$morphreg" build-model --from-ict "$data/ict_facekit" --samples 300 --components 30 --quiet --out ict30.h5 > /dev/null

@@ -3,7 +3,9 @@
 // of a synthetic head (HeadGenerator resolution 44: 11,618 vertices) and of the same head subdivided twice (185,858
 // vertices, the size of a phone capture), plain and Draco-compressed (lossless Edgebreaker), against the baselines
 // in the same process: VTK 9.1's vtkGLTFReader on the same GLB files, and PCL's PLY reader on the mesh as binary PLY.
-// The files are written by the tests' glTF writer (test/support/glb_writer.h) into the temporary folder.
+// The files are written by the tests' glTF writer (test/support/glb_writer.h) into the temporary folder. Every
+// reader runs on one thread (counter "threads").
+#include "bench_report.h"
 #include "support/glb_writer.h"
 
 #include <morphreg/io/gltf_reader.h>
@@ -88,6 +90,7 @@ BM_MorphregReadGltf (benchmark::State& state)
   const std::string path = glbPath (state);
   for (auto _ : state)
     benchmark::DoNotOptimize (morphreg::readGltfFile (path));
+  morphreg::bench::reportThreads (state, 1);
 }
 
 void
@@ -96,6 +99,7 @@ BM_MorphregLoadPolygonMeshGlb (benchmark::State& state)
   const std::string path = glbPath (state);
   for (auto _ : state)
     benchmark::DoNotOptimize (morphreg::loadPolygonMesh (path));
+  morphreg::bench::reportThreads (state, 1);
 }
 
 void
@@ -108,6 +112,7 @@ BM_VtkGltfReader (benchmark::State& state)
     reader->Update ();
     benchmark::DoNotOptimize (reader->GetOutput ());
   }
+  morphreg::bench::reportThreads (state, 1);
 }
 
 void
@@ -119,6 +124,7 @@ BM_PclLoadPly (benchmark::State& state)
     pcl::io::loadPLYFile (path, mesh);
     benchmark::DoNotOptimize (mesh);
   }
+  morphreg::bench::reportThreads (state, 1);
 }
 
 void
@@ -127,12 +133,13 @@ BM_MorphregLoadPolygonMeshPly (benchmark::State& state)
   const std::string path = stems ()[state.range (0)] + ".ply";
   for (auto _ : state)
     benchmark::DoNotOptimize (morphreg::loadPolygonMesh (path));
+  morphreg::bench::reportThreads (state, 1);
 }
 } // namespace
 
-BENCHMARK (BM_PclLoadPly)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond);
-BENCHMARK (BM_MorphregLoadPolygonMeshPly)->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond);
-BENCHMARK (BM_VtkGltfReader)->Args ({0, 0})->Args ({1, 0})->Unit (benchmark::kMillisecond);
-BENCHMARK (BM_MorphregReadGltf)->ArgsProduct ({{0, 1}, {0, 1}})->Unit (benchmark::kMillisecond);
-BENCHMARK (BM_MorphregLoadPolygonMeshGlb)->ArgsProduct ({{0, 1}, {0, 1}})->Unit (benchmark::kMillisecond);
+BENCHMARK (BM_PclLoadPly)->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_MorphregLoadPolygonMeshPly)->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_VtkGltfReader)->Args ({0, 0})->Args ({1, 0})->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_MorphregReadGltf)->ArgsProduct ({{0, 1}, {0, 1}})->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_MorphregLoadPolygonMeshGlb)->ArgsProduct ({{0, 1}, {0, 1}})->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK_MAIN ();

@@ -7,7 +7,9 @@
 //    pose our registration finds (computed once, outside the timings);
 //  - the scan job of issue 12: the posed cloud back onto the original cloud (82,360 onto 82,360), started from the
 //    true pose.
+// PCL's ICP runs on one thread, ours on the OpenMP threads (counter "threads").
 #include "../test/real_scans/real_scan_support.h"
+#include "bench_report.h"
 
 #include <morphreg/common/cloud_matrix.h>
 
@@ -83,8 +85,9 @@ BM_PclIcpOfTheMeanOntoTheScan (benchmark::State& state)
     icp.align (output, f.fitted_pose.cast<float> ());
     benchmark::DoNotOptimize (output.size ());
   }
+  morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_PclIcpOfTheMeanOntoTheScan)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_PclIcpOfTheMeanOntoTheScan)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The scan baseline (issue 12): PCL's rigid ICP of the posed cloud back onto the original, from the true pose. */
 void
@@ -100,8 +103,9 @@ BM_PclIcpFromTruePose (benchmark::State& state)
     icp.align (output, f.pose.inverse ().cast<float> ());
     benchmark::DoNotOptimize (output.size ());
   }
+  morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_PclIcpFromTruePose)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_PclIcpFromTruePose)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The global start alone. */
 void
@@ -114,8 +118,9 @@ BM_GlobalStart (benchmark::State& state)
   const morphreg::TriangleMesh mesh{mean, model.triangles ()};
   for (auto _ : state)
     benchmark::DoNotOptimize (morphreg::alignHeadGlobally (mesh, f.points, f.normals).confidence);
+  morphreg::bench::reportOpenMpThreads (state);
 }
-BENCHMARK (BM_GlobalStart)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_GlobalStart)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The whole landmark-free registration: global start, similarity and shape stages. */
 void
@@ -131,8 +136,9 @@ BM_RegistrationFromArbitraryPose (benchmark::State& state)
     icp.align (output);
     state.counters["iterations"] = static_cast<double> (icp.getRegistrationReport ().history.size ());
   }
+  morphreg::bench::reportOpenMpThreads (state);
 }
-BENCHMARK (BM_RegistrationFromArbitraryPose)->Unit (benchmark::kMillisecond)->UseRealTime ()->Iterations (3);
+BENCHMARK (BM_RegistrationFromArbitraryPose)->Apply (morphreg::bench::wallAndProcessCpuMs)->Iterations (3);
 
 } // namespace
 

@@ -4,7 +4,10 @@
 // triangulated range image (ray casting through Intel Embree); the search structures' build timed apart; and the same
 // ray queries (both directions from every reference vertex, first hit, one thread) through Embree and through VTK's
 // vtkOBBTree, vtkStaticCellLocator and vtkModifiedBSPTree; and the point cloud's 24-nearest-neighbour queries through
-// the resampler's grid and through PCL's KdTreeFLANN.
+// the resampler's grid and through PCL's KdTreeFLANN. setInputScan and resample() have no external baseline (PCL and
+// VTK have no resampler: their labels say so); the ray and neighbour queries run on one thread on both sides, the
+// builds on the threads in the counter "threads" (Embree's own pool and VTK's SMP tools use every core).
+#include "bench_report.h"
 #include "resampling/embree_scene.h"
 #include "resampling/point_grid.h"
 #include "resampling/scan_surface.h"
@@ -21,6 +24,7 @@
 #include <vtkOBBTree.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 
@@ -32,6 +36,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <thread>
 
 namespace
 {
@@ -114,8 +119,11 @@ BM_ResamplerSetScan (benchmark::State& state)
     benchmark::ClobberMemory ();
   }
   sizeCounters (state);
+  morphreg::bench::reportNoExternalBaseline (state);
+  if (state.range (0) == 1) // Embree's build runs on its own thread pool
+    morphreg::bench::reportThreads (state, static_cast<int> (std::thread::hardware_concurrency ()));
 }
-BENCHMARK (BM_ResamplerSetScan)->ArgName ("mesh")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_ResamplerSetScan)->ArgName ("mesh")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** resample(): the rays and the hole fills, on the cloud (0) or the mesh (1); the parts as counters (ms, mean over
  *  the iterations). */
@@ -141,8 +149,9 @@ BM_Resample (benchmark::State& state)
   state.counters["fill_ms"] = benchmark::Counter (1e3 * fill_seconds, benchmark::Counter::kAvgIterations);
   state.counters["coverage"] = stats.coverage;
   state.counters["holes"] = static_cast<double> (stats.holes.size ());
+  morphreg::bench::reportNoExternalBaseline (state);
 }
-BENCHMARK (BM_Resample)->ArgName ("mesh")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_Resample)->ArgName ("mesh")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** A VTK locator over the scan mesh: 0 vtkOBBTree, 1 vtkStaticCellLocator, 2 vtkModifiedBSPTree. */
 vtkSmartPointer<vtkAbstractCellLocator>
@@ -167,8 +176,10 @@ BM_VtkLocatorBuild (benchmark::State& state)
   for (auto _ : state)
     benchmark::DoNotOptimize (makeLocator (static_cast<int> (state.range (0))).Get ());
   sizeCounters (state);
+  // vtkStaticCellLocator builds through vtkSMPTools, the other two serially
+  morphreg::bench::reportThreads (state, state.range (0) == 1 ? vtkSMPTools::GetEstimatedNumberOfThreads () : 1);
 }
-BENCHMARK (BM_VtkLocatorBuild)->ArgName ("locator")->DenseRange (0, 2)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_VtkLocatorBuild)->ArgName ("locator")->DenseRange (0, 2)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The resampler's ray queries without its normal test: from every reference vertex along +n and -n within the
  *  reach, the first hit of each; the locator as in makeLocator. */
@@ -193,8 +204,9 @@ BM_VtkLocatorRays (benchmark::State& state)
   }
   sizeCounters (state);
   state.counters["hits"] = hits;
+  morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_VtkLocatorRays)->ArgName ("locator")->DenseRange (0, 2)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_VtkLocatorRays)->ArgName ("locator")->DenseRange (0, 2)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The resampler's Embree scene over the scan mesh. */
 void
@@ -203,8 +215,9 @@ BM_EmbreeBuild (benchmark::State& state)
   for (auto _ : state)
     benchmark::DoNotOptimize (morphreg::detail::EmbreeScene (fixture ().scan_mesh).scene ());
   sizeCounters (state);
+  morphreg::bench::reportThreads (state, static_cast<int> (std::thread::hardware_concurrency ()));
 }
-BENCHMARK (BM_EmbreeBuild)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_EmbreeBuild)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 /** The queries of BM_VtkLocatorRays through Embree's rtcIntersect1, on one thread. */
 void
@@ -227,8 +240,9 @@ BM_EmbreeRays (benchmark::State& state)
   }
   sizeCounters (state);
   state.counters["hits"] = hits;
+  morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_EmbreeRays)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_EmbreeRays)->Apply (morphreg::bench::wallAndProcessCpuMs);
 
 constexpr int kNeighbours = 24; ///< the resampler's default
 
@@ -277,8 +291,9 @@ BM_NeighbourSearch (benchmark::State& state)
   sizeCounters (state);
   state.counters["mean_kth_mm2"] = sum / static_cast<double> (f.reference.numVertices ());
   state.counters["cell_mm"] = cell;
+  morphreg::bench::reportThreads (state, 1);
 }
-BENCHMARK (BM_NeighbourSearch)->ArgName ("flann")->Arg (0)->Arg (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+BENCHMARK (BM_NeighbourSearch)->ArgName ("flann")->Arg (0)->Arg (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 } // namespace
 
 BENCHMARK_MAIN ();

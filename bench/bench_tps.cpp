@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Thin plate splines: morphreg::ThinPlateSpline against VTK's vtkThinPlateSplineTransform (SetBasisToR) in one run.
 // Fit at n = 66, 500, 1000 landmarks (both), 2000 and 5000 (ours only: VTK's O(n^3) Jacobi takes many minutes);
-// evaluation of 16k and 1M points at n = 66, 500, 1000. Wall-clock times (ours runs on all OpenMP threads, VTK on
-// one); pairs/s = point-landmark pairs per second.
+// evaluation of 16k and 1M points at n = 66, 500, 1000. Wall-clock times; ours runs on all OpenMP threads, and its
+// evaluation also on one (third argument 1), VTK's on one thread (counter "threads"); pairs/s = point-landmark pairs
+// per second.
+#include "bench_report.h"
+
 #include <morphreg/warp/thin_plate_spline.h>
 
 #include <benchmark/benchmark.h>
@@ -74,6 +77,7 @@ BM_FitMorphreg (benchmark::State& state)
     tps.fit (landmarks.source, landmarks.target);
     benchmark::DoNotOptimize (tps.getWeights ().data ());
   }
+  morphreg::bench::reportOpenMpThreads (state);
 }
 
 void
@@ -89,6 +93,7 @@ BM_FitVtk (benchmark::State& state)
     transform->TransformPoint (landmarks.source.col (0).data (), out);
     benchmark::DoNotOptimize (out);
   }
+  morphreg::bench::reportThreads (state, 1);
 }
 
 void
@@ -98,6 +103,7 @@ BM_EvaluateMorphreg (benchmark::State& state)
   const Eigen::Matrix3Xd queries = randomPoints (state.range (1), 2);
   morphreg::ThinPlateSpline<double, 3> tps;
   tps.fit (landmarks.source, landmarks.target);
+  const morphreg::bench::OpenMpThreads threads (state, state.range (2) == 1 ? 1 : 0);
   for (auto _ : state) {
     const Eigen::Matrix3Xd warped = tps.evaluate (queries);
     benchmark::DoNotOptimize (warped.data ());
@@ -123,6 +129,7 @@ BM_EvaluateVtk (benchmark::State& state)
   }
   state.counters["pairs/s"] = benchmark::Counter (double (state.range (0)) * double (state.range (1)),
                                                   benchmark::Counter::kIsIterationInvariantRate);
+  morphreg::bench::reportThreads (state, 1);
 }
 } // namespace
 
@@ -132,25 +139,21 @@ BENCHMARK (BM_FitMorphreg)
     ->Arg (1000)
     ->Arg (2000)
     ->Arg (5000)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ();
-BENCHMARK (BM_FitVtk)->Arg (66)->Unit (benchmark::kMillisecond)->UseRealTime ();
-BENCHMARK (BM_FitVtk)->Arg (500)->Arg (1000)->Iterations (1)->Unit (benchmark::kMillisecond)->UseRealTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_FitVtk)->Arg (66)->Apply (morphreg::bench::wallAndProcessCpuMs);
+BENCHMARK (BM_FitVtk)->Arg (500)->Arg (1000)->Iterations (1)->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK (BM_EvaluateMorphreg)
-    ->ArgsProduct ({{66, 500, 1000}, {16384, 1 << 20}})
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ();
+    ->ArgsProduct ({{66, 500, 1000}, {16384, 1 << 20}, {0, 1}})
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK (BM_EvaluateVtk)
     ->Args ({66, 16384})
     ->Args ({500, 16384})
     ->Args ({1000, 16384})
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK (BM_EvaluateVtk)
     ->Args ({66, 1 << 20})
     ->Args ({500, 1 << 20})
     ->Args ({1000, 1 << 20})
     ->Iterations (1)
-    ->Unit (benchmark::kMillisecond)
-    ->UseRealTime ();
+    ->Apply (morphreg::bench::wallAndProcessCpuMs);
 BENCHMARK_MAIN ();
