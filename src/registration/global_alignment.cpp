@@ -406,7 +406,9 @@ struct ModelFrame
   double radius;
   double voxel;
   Sphere sphere;
-  std::shared_ptr<const DistanceField> field; ///< truncated distance to the model's surface, in the model's frame
+  /** Truncated distance to the model's surface in the model's frame, for the scan-to-model half of the grid scores
+   *  of one-view scans; null without a viewpoint. */
+  std::shared_ptr<const DistanceField> field;
 };
 
 ModelFrame
@@ -422,6 +424,8 @@ modelFrame (const TriangleMesh& model_mean, const GlobalAlignmentSettings& setti
   if (spheres.empty ())
     throw InvalidInputError ("alignHeadGlobally: the model mean has no head-like sphere");
   model.sphere = spheres.front ();
+  if (!settings.viewpoint)
+    return model;
   // Dense enough (about 2 mm apart on a head) for the field's cells of half a voxel.
   const OrientedPoints dense = surfaceSamples (model_mean, 30000, 13);
   const double truncation = settings.truncation_ratio * model.radius;
@@ -547,10 +551,10 @@ scanSamplesNear (const Eigen::Matrix3Xd& scan, const Eigen::Vector3d& centre, do
 
 /** The best-scoring grid rotations about every anchor, settings.rotations_per_anchor of them per anchor. */
 std::vector<Pose>
-anchorPoses (const ModelFrame& model, const OrientedPoints& surface, const std::vector<Anchor>& anchors,
-             const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
+anchorPoses (const ModelFrame& model, const GridScoring& scoring, const OrientedPoints& surface,
+             const std::vector<Anchor>& anchors, const std::vector<Eigen::Matrix3d>& rotations,
+             const GlobalAlignmentSettings& settings)
 {
-  const GridScoring scoring = gridScoring (model, settings);
   std::vector<Pose> poses;
   for (size_t a = 0; a < anchors.size (); ++a) {
     const Anchor& anchor = anchors[a];
@@ -558,8 +562,11 @@ anchorPoses (const ModelFrame& model, const OrientedPoints& surface, const std::
     const Eigen::Vector3d half = Eigen::Vector3d::Constant (anchor.scale * reach + scoring.truncation);
     const DistanceField field (gridOver (anchor.scan - half, anchor.scan + half, model.voxel), surface.points,
                                scoring.truncation);
-    const Eigen::Matrix3Xd near = scanSamplesNear (surface.points, anchor.scan,
-                                                   std::max (1.0, anchor.scale) * reach + scoring.truncation, settings);
+    // Only one-view scans are scored scan to model (gridScore).
+    const Eigen::Matrix3Xd near =
+        settings.viewpoint ? scanSamplesNear (surface.points, anchor.scan,
+                                              std::max (1.0, anchor.scale) * reach + scoring.truncation, settings)
+                           : Eigen::Matrix3Xd ();
     std::vector<double> scores (rotations.size ());
 #pragma omp parallel for schedule(static)
     for (size_t r = 0; r < rotations.size (); ++r)
@@ -624,12 +631,12 @@ viewScales (const GlobalAlignmentSettings& settings)
  *  lies deep behind it, so per grid rotation the model's side facing the sensor is laid onto the scan
  *  (viewPlacement) at a few head scales; the best distinct rotations per scale. None without a viewpoint. */
 std::vector<Pose>
-viewPoses (const ModelFrame& model, const OrientedPoints& surface, const std::optional<SensorView>& view,
-           const std::vector<Eigen::Matrix3d>& rotations, const GlobalAlignmentSettings& settings)
+viewPoses (const ModelFrame& model, const GridScoring& scoring, const OrientedPoints& surface,
+           const std::optional<SensorView>& view, const std::vector<Eigen::Matrix3d>& rotations,
+           const GlobalAlignmentSettings& settings)
 {
   if (!view)
     return {};
-  const GridScoring scoring = gridScoring (model, settings);
   const Eigen::Matrix3Xd scan = detail::evenSamples (surface.points, settings.score_samples);
   const DistanceField field (detail::gridAround (surface.points, 0.6 * model.radius + scoring.truncation, model.voxel),
                              surface.points, scoring.truncation);
@@ -771,8 +778,9 @@ alignHeadGlobally (const TriangleMesh& model_mean, const Eigen::Matrix3Xd& scan,
   const std::vector<Anchor> anchors = anchorsOf (model, surface, spheres, settings);
   const std::vector<Eigen::Matrix3d> rotations = rotationGrid (settings.rotation_directions, settings.rotation_twists);
   const std::optional<SensorView> view = sensorView (surface.points, model.voxel, settings);
-  std::vector<Pose> poses = anchorPoses (model, surface, anchors, rotations, settings);
-  const std::vector<Pose> seen_poses = viewPoses (model, surface, view, rotations, settings);
+  const GridScoring scoring = gridScoring (model, settings);
+  std::vector<Pose> poses = anchorPoses (model, scoring, surface, anchors, rotations, settings);
+  const std::vector<Pose> seen_poses = viewPoses (model, scoring, surface, view, rotations, settings);
   poses.insert (poses.end (), seen_poses.begin (), seen_poses.end ());
   poses = bestPoses (std::move (poses), settings);
   const std::vector<size_t> ranked =
