@@ -8,7 +8,7 @@
 // warp, so both comparisons are with morphreg's own simpler warps (label and counter "threads" say so).
 #include "bench_report.h"
 
-#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/datasets/makehuman_bodies.h>
 #include <morphreg/warp/articulated_warp.h>
 #include <morphreg/warp/moving_least_squares_warp.h>
 #include <morphreg/warp/segmented_warp.h>

@@ -6,7 +6,7 @@
 // Counters: peak_MiB = growth of the resident set's high-water mark during the timed runs (Linux clear_refs).
 #include "bench_report.h"
 
-#include <morphreg/io/ict_facekit.h>
+#include <morphreg/datasets/ict_facekit.h>
 #include <morphreg/model/ict_region_model.h>
 #include <morphreg/model/model_builder.h>
 #include <morphreg/model/procrustes.h>

@@ -12,6 +12,7 @@
 #include "sample_heads.h"
 #include "sample_options.h"
 
+#include <morphreg/common/cloud_checks.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>

@@ -13,7 +13,7 @@
 //   sample_warp_body BODIES_DIR [--out warp_body] [--subject NAME] [--blend 100] [--surface]
 #include "sample_options.h"
 
-#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/datasets/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/warp/articulated_warp.h>

@@ -9,6 +9,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/scan_manifest.h>
+#include <morphreg/model/region_segmentation.h>
 
 #include <cmath>
 #include <filesystem>
@@ -22,32 +23,6 @@ namespace tools
 namespace
 {
 namespace fs = std::filesystem;
-
-/** Each vertex in the region where its blending weight is largest; regions left without a vertex are dropped. */
-RegionLabels
-regionsOfModel (const MorphableModel& model)
-{
-  std::vector<int> strongest (static_cast<std::size_t> (model.numVertices ()));
-  for (int v = 0; v < model.numVertices (); ++v) {
-    double best = -1.0;
-    for (const RegionEntry& entry : model.vertexEntries (v))
-      if (entry.weight > best) {
-        best = entry.weight;
-        strongest[static_cast<std::size_t> (v)] = entry.region;
-      }
-  }
-  RegionLabels regions;
-  std::vector<int> index (static_cast<std::size_t> (model.numRegions ()), -1);
-  for (int& region : strongest) {
-    int& label = index[static_cast<std::size_t> (region)];
-    if (label < 0) {
-      label = static_cast<int> (regions.names.size ());
-      regions.names.push_back (model.region (region).name);
-    }
-    regions.labels.push_back (label);
-  }
-  return regions;
-}
 
 /** Registers and resamples one scan into \a report_dir (<id>.json, <id>_fit.ply, <id>.ply); the resampled mesh goes
  *  to \a mesh when both succeed. Returns the scan's report. */
@@ -143,7 +118,7 @@ buildFromScans (const BuildModelOptions& options, const std::string& report_dir,
   if (!options.regions.empty ())
     model = builder.build (meshes, loadRegionLabels (options.regions, num_vertices));
   else
-    model = registering->numRegions () > 1 ? builder.build (meshes, regionsOfModel (*registering))
+    model = registering->numRegions () > 1 ? builder.build (meshes, strongestRegions (*registering))
                                            : builder.buildGlobal (meshes);
   model->setLandmarks (options.landmark_vertices.empty ()
                            ? registering->landmarks ()

@@ -10,7 +10,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/common/memory_budget.h>
 #include <morphreg/io/file_checks.h>
-#include <morphreg/io/ict_facekit.h>
+#include <morphreg/datasets/ict_facekit.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>

@@ -19,7 +19,7 @@
 #include <morphreg/photo/photo_fit_options.h>
 #include <morphreg/photo/photo_texture.h>
 #include <morphreg/photo/photo_view_io.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 #include <chrono>
 #include <cmath>

@@ -10,14 +10,12 @@
 #include "display_inputs.h"
 #include "provenance.h"
 #include "scan_colours.h"
+#include "table_options.h"
 
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
-#include <morphreg/common/head_scale_unit.h>
-#include <morphreg/io/cloud_io.h>
-#include <morphreg/io/depth_image_io.h>
 #include <morphreg/io/file_format.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
@@ -25,17 +23,16 @@
 #include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
-#include <morphreg/registration/iteration_progress.h>
+#include <morphreg/pipeline/scan_input.h>
+#include <morphreg/pipeline/scan_registration.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/registration_result_json.h>
+#include <morphreg/registration/registration_options.h>
 #include <morphreg/registration/registration_settings.h>
 #include <morphreg/registration/scan_units.h>
-#include <morphreg/registration/scan_checks.h>
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/convergence_plot.h>
 #include <morphreg/visualization/registration_visualizer.h>
-
-#include <pcl/common/io.h>
 
 #include <algorithm>
 #include <limits>
@@ -64,55 +61,6 @@ secondsSince (Clock::time_point start)
   return std::chrono::duration<double> (Clock::now () - start).count ();
 }
 
-/** \a scan without its missing points (PCL marks them NaN). An infinite coordinate is no such mark but a broken
- *  file: those points stay for requireRegistrableScan to reject. */
-void
-dropMissingPoints (pcl::PointCloud<pcl::PointNormal>& scan)
-{
-  const auto missing = [] (const pcl::PointNormal& p) {
-    return std::isnan (p.x) || std::isnan (p.y) || std::isnan (p.z);
-  };
-  scan.erase (std::remove_if (scan.begin (), scan.end (), missing), scan.end ());
-}
-
-/** The scan landmarks of the file that the model also has; the others are named on \a warnings and skipped. The
- *  landmarks must lie on the \a scan (in mm). */
-LandmarkPositions
-modelLandmarks (const RegisterOptions& options, const MorphableModel& model,
-                const pcl::PointCloud<pcl::PointNormal>& scan, std::ostream& warnings)
-{
-  LandmarkPositions landmarks = loadLandmarks (options.landmarks);
-  requireLandmarksOnScan (landmarks, pointsOf (scan), options.landmarks);
-  std::string skipped;
-  for (const std::string& id : keepKnownLandmarks (landmarks, model.landmarks ()))
-    skipped += " " + id;
-  if (!skipped.empty () && !options.quiet)
-    warnings << options.landmarks << ": the model has no landmark" << skipped << "; using the other "
-             << landmarks.size () << '\n';
-  if (landmarks.empty ())
-    throw InvalidInputError (options.landmarks + ": none of its landmarks is on the model " + options.model);
-  return landmarks;
-}
-
-/** Prints one progress line per iteration: the kept correspondences and their RMS distance. */
-void
-showIterations (Icp& icp, const Progress& progress)
-{
-  watchIterations (icp, [&progress] (int iteration, std::size_t correspondences, double rms) {
-    std::ostringstream detail;
-    detail << ' ' << correspondences << " correspondences, RMS " << std::fixed << std::setprecision (3) << rms << " mm";
-    progress.step (iteration, detail.str ());
-  });
-}
-
-/** The registration settings of the report, with the landmark file. */
-nlohmann::json
-settingsJson (const RegisterOptions& options)
-{
-  nlohmann::json settings = toJson (static_cast<const RegistrationSettings&> (options));
-  settings["landmarks"] = options.landmarks;
-  return settings;
-}
 /** Vertex distances between the fit and the true mesh (model topology, scan frame), over every vertex and over
  *  the vertices the scan covers (those with a residual); printed and reported. */
 nlohmann::json
@@ -183,53 +131,38 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
 }
 } // namespace
 
-/** The scan as points with normals, without missing points, checked to be registrable (see requireRegistrableScan). */
-ScanCloud
+ScanInput
 loadScan (const RegisterOptions& options)
 {
-  const std::string& path = options.scan;
-  pcl::PointCloud<pcl::PointNormal>::Ptr scan;
   if (options.intrinsics.empty ())
-    scan = loadCloud<pcl::PointNormal> (path);
-  else { // a depth image: its organised cloud in mm, no normals, no colours
-    if (options.colours == "scan")
-      throw InvalidInputError ("--colours scan with --depth " + path + ": a depth image has no colours");
-    const DepthImage image = loadDepthPng (path);
-    DepthIntrinsics camera = loadDepthIntrinsics (options.intrinsics);
-    if (camera.width != image.width || camera.height != image.height)
-      throw InvalidInputError (path + ": the depth image is " + std::to_string (image.width) + " x " +
-                               std::to_string (image.height) + " pixels, the camera of " + options.intrinsics + " " +
-                               std::to_string (camera.width) + " x " + std::to_string (camera.height));
-    scan.reset (new pcl::PointCloud<pcl::PointNormal>);
-    pcl::copyPointCloud (*depthImageToCloud (image.depth, camera), *scan);
-    for (auto& point : *scan)
-      point.normal_x = point.normal_y = point.normal_z = std::numeric_limits<float>::quiet_NaN ();
-  }
-  const std::optional<Eigen::Vector3d> viewpoint =
-      scan->isOrganized () ? std::optional<Eigen::Vector3d> (scan->sensor_origin_.head<3> ().cast<double> ())
-                           : std::nullopt;
-  dropMissingPoints (*scan);
-  if (scan->empty ())
-    throw FormatError (path + ": the scan has no valid (finite) points");
-  requireRegistrableScan (pointsOf (*scan), path);
-  requireUnitNormals (normalsOf (*scan), path);
-  scan->is_dense = true;
-  return {scan, viewpoint};
+    return readScanFile (options.scan);
+  if (options.colours == "scan")
+    throw InvalidInputError ("--colours scan with --depth " + options.scan + ": a depth image has no colours");
+  if (options.units != "auto" && options.units != "mm")
+    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
+  return readDepthImageScan (options.scan, options.intrinsics);
 }
 
-/** The scan's unit (given, or guessed from its size against the model mean's) and its coordinates in mm. */
-LengthUnitGuess
-convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
-                          std::ostream& out)
+namespace
 {
-  if (!options.intrinsics.empty () && options.units != "auto" && options.units != "mm")
-    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
+/** Says on \a out when the scan's format fixes its unit (glTF: metres), converted on reading. */
+void
+reportFileUnit (const RegisterOptions& options, std::ostream& out)
+{
   const FileFormat format = sniffFileFormat (options.scan);
   if (const auto file_unit = specifiedLengthUnit (format))
     out << "units: " << options.scan << " is " << fileFormatName (format) << ", whose unit is the "
         << toString (*file_unit) << " by specification: converted to mm on reading (x" << millimetresPer (*file_unit)
         << ")\n";
-  const std::string units = options.intrinsics.empty () ? options.units : "mm";
+}
+} // namespace
+
+LengthUnitGuess
+convertScanToMillimetres (ScanInput& scan, const RegisterOptions& options, const MorphableModel& model,
+                          std::ostream& out)
+{
+  reportFileUnit (options, out);
+  const std::string units = scan.unit ? toString (*scan.unit) : options.units;
   const LengthUnitGuess unit =
       morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
   if (scan.viewpoint)
@@ -296,40 +229,87 @@ registerScanFile (const RegisterOptions& options)
 
 namespace
 {
+/** Progress, unit findings and warnings of a registration on the console (quiet: the findings alone). */
+class ConsoleObserver : public RegistrationObserver
+{
+public:
+  ConsoleObserver (bool quiet, std::ostream& out, std::ostream& warnings)
+    : quiet_ (quiet), out_ (out), warnings_ (warnings)
+  {}
+
+  void
+  fitStarted (const std::string& scan_name, int max_iterations) override
+  {
+    progress_.emplace ("registering " + scan_name, max_iterations, quiet_);
+  }
+
+  void
+  iterationDone (int iteration, std::size_t correspondences, double rms) override
+  {
+    if (quiet_)
+      return;
+    std::ostringstream detail;
+    detail << ' ' << correspondences << " correspondences, RMS " << std::fixed << std::setprecision (3) << rms << " mm";
+    progress_->step (iteration, detail.str ());
+  }
+
+  void
+  fitFinished (int iterations) override
+  {
+    progress_->finish (iterations);
+  }
+
+  void
+  message (const std::string& text) override
+  {
+    out_ << text << '\n';
+  }
+
+  void
+  warning (const std::string& text) override
+  {
+    if (!quiet_)
+      warnings_ << text << '\n';
+  }
+
+private:
+  bool quiet_;
+  std::ostream& out_;
+  std::ostream& warnings_;
+  std::optional<Progress> progress_;
+};
+
+/** The report of the library (ScanRegistration::report) with the files of this run: the scan's (and the unit its
+ *  format fixes), the model's, the landmarks' and the fitted mesh's. */
+nlohmann::json
+fileReport (const RegisterOptions& options, const ScanRegistration& registration, const ScanRegistrationOutcome& fit)
+{
+  nlohmann::json report = registration.report (fit);
+  report["scan"]["file"] = options.scan;
+  const FileFormat format = sniffFileFormat (options.scan);
+  if (const auto file_unit = specifiedLengthUnit (format))
+    report["scan"]["file_unit"] = {{"unit", toString (*file_unit)},
+                                   {"scale_to_mm", millimetresPer (*file_unit)},
+                                   {"reason", fileFormatName (format) +
+                                                  "'s unit by specification, converted on reading; units "
+                                                  "and scale_to_mm apply after it"}};
+  report["model"]["file"] = options.model;
+  report["settings"]["landmarks"] = options.landmarks;
+  report["fitted_mesh"] = fit.lostScan () ? nlohmann::json () : nlohmann::json (options.out);
+  addProvenance (options, report);
+  return report;
+}
+
 /** Writes the report of a fit that lost the scan (it passed its checks, so it is a failed fit, not bad input) and
  *  throws FitCheckFailure.
  */
 [[noreturn]] void
-reportLostFit (const RegisterOptions& options, std::size_t scan_points, const std::string& lost)
+reportLostFit (const RegisterOptions& options, const ScanRegistration& registration, const ScanRegistrationOutcome& fit)
 {
   const std::string report_path = reportPath (options);
-  nlohmann::json report = {{"status", "failed"},
-                           {"checks", {{"passed", false}, {"failures", {lost}}}},
-                           {"scan", {{"file", options.scan}, {"points", scan_points}}},
-                           {"settings", settingsJson (options)},
-                           {"fitted_mesh", nullptr}};
-  addProvenance (options, report);
+  const nlohmann::json report = fileReport (options, registration, fit);
   writeReport (report_path, report);
-  throw FitCheckFailure (lost + "; no mesh written (see " + report_path + ")", report);
-}
-
-/** The report's description of the scan and how its unit was found. */
-nlohmann::json
-scanJson (const RegisterOptions& options, std::size_t scan_points, const LengthUnitGuess& unit)
-{
-  nlohmann::json scan = {{"file", options.scan},
-                         {"points", scan_points},
-                         {"units", unit.estimated ? "estimated" : toString (unit.unit)},
-                         {"unit_detection", options.units == "auto" ? "auto" : "given"},
-                         {"unit_reason", unit.reason},
-                         {"scale_to_mm", unit.scale_to_mm}};
-  const FileFormat format = sniffFileFormat (options.scan);
-  if (const auto file_unit = specifiedLengthUnit (format))
-    scan["file_unit"] = {{"unit", toString (*file_unit)},
-                         {"scale_to_mm", millimetresPer (*file_unit)},
-                         {"reason", fileFormatName (format) + "'s unit by specification, converted on reading; units "
-                                                              "and scale_to_mm apply after it"}};
-  return scan;
+  throw FitCheckFailure (fit.lost + "; no mesh written (see " + report_path + ")", report);
 }
 
 /** The scan's colours at the fitted \a vertices as options.colours asks (scanColoursAt); none for a depth image,
@@ -341,21 +321,6 @@ fittedScanColours (const RegisterOptions& options, const LengthUnitGuess& unit, 
   if (!options.intrinsics.empty ())
     return std::nullopt;
   return scanColoursAt (options.scan, unit.scale_to_mm, options.colours, vertices, warnings);
-}
-
-/** The JSON report of a finished fit (without its truth errors, screenshot and timings). */
-nlohmann::json
-fitReport (const RegisterOptions& options, Icp& icp, const MorphableModel& model, const nlohmann::json& scan,
-           double colour_scale)
-{
-  nlohmann::json report = registrationResultJson (icp, model);
-  report["scan"] = scan;
-  report["model"] = {{"file", options.model}, {"vertices", model.numVertices ()}, {"regions", model.numRegions ()}};
-  report["settings"] = settingsJson (options);
-  report["residuals_mm"]["colour_scale_max"] = colour_scale;
-  report["fitted_mesh"] = options.out;
-  addProvenance (options, report);
-  return report;
 }
 
 /** The fit's one-paragraph summary on \a out; throws FitCheckFailure when the report failed its checks. */
@@ -383,144 +348,15 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
   throw FitCheckFailure (reasons + " (see " + report_path + ")", report);
 }
 
-/** Runs \a icp's fit with progress shown unless quiet; TooFewCorrespondencesError when it loses the scan. */
-void
-alignScan (Icp& icp, const RegisterOptions& options)
+/** The library's registration of \a model with the options' settings and landmarks, telling \a observer. */
+ScanRegistration
+makeRegistration (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationObserver& observer)
 {
-  const Progress progress ("registering " + options.scan, options.iterations, options.quiet);
-  if (!options.quiet)
-    showIterations (icp, progress);
-  pcl::PointCloud<pcl::PointNormal> aligned;
-  try {
-    icp.align (aligned);
-  }
-  catch (const TooFewCorrespondencesError&) {
-    throw;
-  }
-  catch (const InvalidInputError& e) { // the scan passed the checks before the fit, but the fit cannot use it
-    throw InvalidInputError (options.scan + ": cannot be registered: " + e.what ());
-  }
-  progress.finish (static_cast<int> (icp.getRegistrationReport ().history.size ()));
-}
-
-/** A fit of the scan at one scale: the scan in mm at that scale, and the registration, or why it lost the scan. */
-struct UnitFit
-{
-  ScanCloud scan;           ///< the scan in mm at unit.scale_to_mm
-  LengthUnitGuess unit;     ///< the unit or scale the scan was brought to mm by
-  std::unique_ptr<Icp> icp; ///< the finished registration; null when the fit lost the scan
-  std::string lost;         ///< why the fit lost the scan (too few correspondences), if it did
-  double seconds = 0.0;     ///< the fit's time
-};
-
-/** \a scan with its points (and viewpoint) times \a factor. */
-ScanCloud
-scaledScan (const ScanCloud& scan, double factor)
-{
-  ScanCloud scaled{pcl::make_shared<pcl::PointCloud<pcl::PointNormal>> (*scan.cloud), scan.viewpoint};
-  const auto to_mm = static_cast<float> (factor);
-  if (to_mm != 1.0f)
-    for (auto& point : *scaled.cloud)
-      point.getVector3fMap () *= to_mm;
-  if (scaled.viewpoint)
-    *scaled.viewpoint *= factor;
-  return scaled;
-}
-
-/** Registers \a scan (mm) to \a model with the options' settings and landmarks. */
-UnitFit
-fitScan (const RegisterOptions& options, const MorphableModel::Ptr& model, ScanCloud scan, const LengthUnitGuess& unit,
-         std::ostream& warnings)
-{
-  UnitFit fit{std::move (scan), unit, std::make_unique<Icp> (), "", 0.0};
-  Icp& icp = *fit.icp;
-  configureRegistration (icp, options, model);
-  icp.setTargetViewpoint (fit.scan.viewpoint);
+  ScanRegistration registration (model, options);
+  registration.setObserver (&observer);
   if (!options.landmarks.empty ())
-    icp.setTargetLandmarks (modelLandmarks (options, *model, *fit.scan.cloud, warnings), options.landmark_weight);
-  icp.setInputTarget (fit.scan.cloud);
-  const auto start = Clock::now ();
-  try {
-    alignScan (icp, options);
-  }
-  catch (const TooFewCorrespondencesError& e) {
-    fit.lost = e.what ();
-    fit.icp.reset ();
-  }
-  fit.seconds = secondsSince (start);
-  return fit;
-}
-
-/** The fit's similarity scale (model to scan). */
-double
-fittedScale (Icp& icp)
-{
-  return std::cbrt (icp.getFinalTransformation ().topLeftCorner<3, 3> ().cast<double> ().determinant ());
-}
-
-/** Whether --units auto looks for the scan's scale in its head: its size is a head in no unit, or the fit at the unit
- *  its size suggested lost the scan or found the head at a size no head has (checkFitPlausibility's scale bounds). */
-bool
-needsHeadScale (const RegisterOptions& options, const UnitFit& fit)
-{
-  if (options.units != "auto" || !options.intrinsics.empty ())
-    return false;
-  if (!fit.unit.recognised || !fit.icp)
-    return true;
-  const FitPlausibilitySettings limits;
-  const double scale = fittedScale (*fit.icp);
-  return scale < limits.min_scale || scale > limits.max_scale;
-}
-
-/** What the fit at the provisional scale or the final fit found, for the message of a scan refused as no head. */
-std::string
-whyNoHead (const UnitFit& fit, const MorphableModel& model)
-{
-  if (!fit.icp)
-    return "lost the scan (" + fit.lost + ")";
-  std::string failures;
-  for (const std::string& failure : checkRegistration (*fit.icp, model).failures)
-    failures += (failures.empty () ? "" : "; ") + failure;
-  return "failed its checks (" + failures + ")";
-}
-
-/** The scan's unit found from its head (--units auto, see needsHeadScale): a fit at a provisional scale measures the
- *  head (provisionalHeadScale), the unit or estimated scale follows from its size (unitFromHeadScale), and the scan
- *  is fitted again at it. When no head is found, the fit at the unit its size suggested stands if there was one;
- *  else the scan is refused (InvalidInputError naming it, its size and what was tried). */
-UnitFit
-fitAtHeadScale (const RegisterOptions& options, const MorphableModel::Ptr& model, const ScanCloud& as_read,
-                UnitFit suggested, std::ostream& out, std::ostream& warnings)
-{
-  const LengthUnitGuess provisional = provisionalHeadScale (suggested.unit);
-  const std::string tried = suggested.unit.recognised ? "read as " + toString (suggested.unit.unit) + ", the fit " +
-                                                            whyNoHead (suggested, *model) + "; "
-                                                      : "";
-  UnitFit measured = fitScan (options, model, scaledScan (as_read, provisional.scale_to_mm), provisional, warnings);
-  std::string failure = "at the provisional scale the fit " + whyNoHead (measured, *model);
-  // the global alignment searches heads of 0.6-1.6 times the model: a fit far outside found no head to measure
-  constexpr double kSmallestHead = 0.5, kLargestHead = 2.0;
-  if (measured.icp && (fittedScale (*measured.icp) < kSmallestHead || fittedScale (*measured.icp) > kLargestHead))
-    measured.icp.reset ();
-  if (measured.icp) {
-    const FitPlausibilitySettings limits;
-    const LengthUnitGuess unit =
-        unitFromHeadScale (provisional, fittedScale (*measured.icp), limits.min_scale, limits.max_scale);
-    UnitFit final = fitScan (options, model, scaledScan (as_read, unit.scale_to_mm), unit, warnings);
-    final.unit.reason = provisional.reason + "; " + unit.reason;
-    if (final.icp && checkRegistration (*final.icp, *model).plausible) {
-      out << "units: " << options.scan << ": " << final.unit.reason << "; rescaled to mm\n";
-      return final;
-    }
-    std::ostringstream at;
-    at << unit.reason << "; at x" << std::setprecision (4) << unit.scale_to_mm << " to mm the fit "
-       << whyNoHead (final, *model);
-    failure = at.str ();
-  }
-  if (suggested.unit.recognised)
-    return suggested;
-  throw InvalidInputError (options.scan + ": no head found, so its unit cannot be estimated: " + provisional.reason +
-                           "; " + tried + failure + ". Give --units if it is a head");
+    registration.setLandmarks (loadLandmarks (options.landmarks), options.landmarks, LandmarkUnit::millimetre);
+  return registration;
 }
 } // namespace
 
@@ -529,33 +365,29 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const ScanCloud as_read = loadScan (options);
-  ScanCloud loaded = scaledScan (as_read, 1.0);
-  const LengthUnitGuess guess = convertScanToMillimetres (loaded, options, *model, out);
-  UnitFit fit{std::move (loaded), guess, nullptr, "", 0.0};
+  const ScanInput scan_as_read = loadScan (options);
+  reportFileUnit (options, out);
+  ConsoleObserver observer (options.quiet, out, warnings);
+  const ScanRegistration registration = makeRegistration (options, model, observer);
   const double load_seconds = model_seconds + secondsSince (start);
-  if (guess.recognised || options.units != "auto")
-    fit = fitScan (options, model, std::move (fit.scan), guess, warnings);
-  if (needsHeadScale (options, fit))
-    fit = fitAtHeadScale (options, model, as_read, std::move (fit), out, warnings);
-  if (!fit.icp)
-    reportLostFit (options, fit.scan.cloud->size (), fit.lost);
+  const ScanRegistrationOutcome fit = registration.registerScan (scan_as_read);
+  if (fit.lostScan ())
+    reportLostFit (options, registration, fit);
   Icp& icp = *fit.icp;
   const auto& scan = fit.scan.cloud;
-  const LengthUnitGuess& unit = fit.unit;
-  const double fit_seconds = fit.seconds;
 
   const auto write_start = Clock::now ();
-  const TriangleMesh fitted{icp.getFittedVertices (), model->triangles ()};
+  const TriangleMesh fitted = fit.fittedMesh ();
   const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
   const double scale = residualColourScale (residuals, options.colour_max);
-  const auto scan_colours = fittedScanColours (options, unit, fitted.vertices, warnings);
+  const auto scan_colours = fittedScanColours (options, fit.unit, fitted.vertices, warnings);
   savePolygonMesh (
       options.out,
       toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale), residuals));
   const double write_seconds = secondsSince (write_start);
 
-  nlohmann::json report = fitReport (options, icp, *model, scanJson (options, scan->size (), unit), scale);
+  nlohmann::json report = fileReport (options, registration, fit);
+  report["residuals_mm"]["colour_scale_max"] = scale;
   report["fitted_mesh_colours"] = scan_colours ? "scan" : "residual";
   if (!options.truth.empty ())
     report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
@@ -563,65 +395,15 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   if (follow_up)
     follow_up (*scan, fitted, report);
   report["timings_s"] = {{"load", load_seconds},
-                         {"fit", fit_seconds},
+                         {"fit", fit.fit_seconds},
                          {"write_mesh", write_seconds},
                          {"figures", figure_seconds},
                          {"total", model_seconds + secondsSince (start)}};
   // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
   writeReport (reportPath (options), report);
-  concludeFit (options, icp.getRegistrationReport (), report, fit_seconds, scale, out);
+  concludeFit (options, icp.getRegistrationReport (), report, fit.fit_seconds, scale, out);
   return report;
 }
-
-namespace
-{
-/** The robust loss and the PCL rejector chain of addRegistrationOptions. */
-void
-addRobustnessOptions (CLI::App* command, RegisterOptions& options)
-{
-  command->add_option ("--loss", options.loss, "robust loss: none, huber, tukey")
-      ->check (CLI::IsMember ({"none", "huber", "tukey"}))
-      ->capture_default_str ();
-  command->add_option ("--loss-scale", options.loss_scale, "robust loss width (mm, 0 = from the residuals' MAD)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--reject-distance", options.reject_distance,
-                    "reject correspondences farther than this (mm; pcl CorrespondenceRejectorDistance)")
-      ->check (positive ());
-  command
-      ->add_option ("--reject-median", options.reject_median,
-                    "reject beyond FACTOR x the median distance (CorrespondenceRejectorMedianDistance)")
-      ->check (positive ());
-  command->add_flag ("--reject-one-to-one", options.reject_one_to_one,
-                     "keep one correspondence per scan point (CorrespondenceRejectorOneToOne)");
-  command
-      ->add_option ("--reject-trimmed", options.reject_trimmed,
-                    "keep this fraction of the closest correspondences (CorrespondenceRejectorTrimmed)")
-      ->check (inRange (0.01, 1.0));
-}
-
-/** The scan's unit and smoothing (--units, --target-smoothing) of addRegistrationOptions. */
-void
-addScanTreatmentOptions (CLI::App* command, RegisterOptions& options)
-{
-  command
-      ->add_option ("--target-smoothing", options.target_smoothing,
-                    "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans "
-                    "such as depth-camera frames; the report's target_surface says what was done)")
-      ->check (CLI::IsMember ({"auto", "on", "off"}))
-      ->capture_default_str ();
-  command->add_flag_callback (
-      "--no-target-smoothing", [&options] { options.target_smoothing = "off"; }, "the same as --target-smoothing off");
-  command
-      ->add_option ("--units", options.units,
-                    "the scan's length unit: auto (from its size; a scan in no unit: its scale estimated from the "
-                    "head), mm, cm, m or in (glTF/GLB scans: the unit after reading, which converts glTF's metres "
-                    "to mm)")
-      ->check (CLI::IsMember ({"auto", "mm", "cm", "m", "in"}))
-      ->capture_default_str ();
-}
-} // namespace
 
 void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options)
@@ -632,55 +414,16 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
   command->add_option ("--height", options.height, "screenshot height (pixels)")
       ->check (inRange (16, 8192))
       ->capture_default_str ();
-  command->add_option ("--iterations", options.iterations, "ICP iterations, similarity and shape stages together")
-      ->check (inRange (1, 10000))
-      ->capture_default_str ();
-  command
-      ->add_option ("--similarity-iterations", options.similarity_iterations,
-                    "at most this many iterations fit the similarity alone before the shape joins")
-      ->check (inRange (1, 10000))
-      ->capture_default_str ();
-  command->add_option ("--max-distance", options.max_distance, "max correspondence distance (mm, 0 = no limit)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--components", options.components,
-                    "shape components per region: one count for all, or one per region (default: every component "
-                    "the model has, at most 60 per region)")
-      ->check (nonNegative ());
-  command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane,
-                     "point-to-plane residuals along the scan normals (default) or point-to-point");
-  command
-      ->add_option ("--tangential-weight", options.tangential_weight,
-                    "share of the point-to-point term kept along the tangent plane (point-to-plane)")
-      ->check (inRange (0.0, 1.0))
-      ->capture_default_str ();
-  command
-      ->add_option ("--shape-prior", options.shape_prior,
-                    "weight of the shape prior (coefficients in prior standard deviations)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--refinement-prior", options.refinement_prior,
-                    "refine over all --components at this shape prior, after a first phase over at most 10 per "
-                    "region at --shape-prior (e.g. 0.5 with many components: fits that follow the scan closely)")
-      ->check (nonNegative ());
-  command
-      ->add_option ("--refinement-smoothness", options.refinement_smoothness,
-                    "lambda_1 of the refinement of --refinement-prior (less for models whose regions cannot agree on "
-                    "the scan, e.g. 0.1 with ICT-FaceKit)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--landmark-weight", options.landmark_weight,
-                    "one landmark counts as this many correspondences in the fit (0: the landmarks only place the "
-                    "start)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  addScanTreatmentOptions (command, options);
-  command->add_flag ("--area-weighting", options.area_weighting,
-                     "weigh model vertices by their surface area (models with uneven vertex density, e.g. ICT)");
-  addRobustnessOptions (command, options);
+  for (const RegistrationOption& option : registrationOptions ()) {
+    if (option.name == "point_to_plane") // a switch that is on by default: both spellings
+      command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane, option.help);
+    else
+      addTableOption<RegistrationSettings> (command, options, option);
+    if (option.name == "target_smoothing")
+      command->add_flag_callback (
+          "--no-target-smoothing", [&options] { options.target_smoothing = "off"; },
+          "the same as --target-smoothing off");
+  }
 }
 
 void

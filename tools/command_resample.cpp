@@ -65,7 +65,7 @@ resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& mod
   const RegisterOptions& registration = options.registration;
   if (registration.landmarks.empty ())
     throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
-  ScanCloud loaded = loadScan (registration);
+  ScanInput loaded = loadScan (registration);
   const auto& scan = loaded.cloud;
   const LengthUnitGuess unit = convertScanToMillimetres (loaded, registration, model, std::cout);
   const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);

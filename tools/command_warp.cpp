@@ -15,7 +15,7 @@
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/io/landmark_io.h>
-#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/datasets/makehuman_bodies.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/skeleton_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>

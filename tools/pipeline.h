@@ -10,6 +10,7 @@
 #include <morphreg/registration/registration_settings.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
+#include <morphreg/pipeline/scan_input.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -110,24 +111,15 @@ commitUnlessBadInput (OutputTransaction& outputs, Run run) -> decltype (run ())
   }
 }
 
-/** A scan as loaded: its points and, for one sensor's organised view (a depth camera's frame), where the sensor
- *  stood (the cloud's origin), which the fit turns estimated normals towards. */
-struct ScanCloud
-{
-  pcl::PointCloud<pcl::PointNormal>::Ptr cloud;
-  std::optional<Eigen::Vector3d> viewpoint;
-};
-
-/** options.scan as points with normals, without missing (NaN) points, checked to be registrable
- *  (requireRegistrableScan); in the file's unit. With options.intrinsics, options.scan is a depth image (16-bit PNG,
- *  mm): its points in the camera frame (mm), the camera the viewpoint. */
-ScanCloud
+/** options.scan as a scan (readScanFile), or with options.intrinsics a depth image (readDepthImageScan: a 16-bit
+ *  PNG, mm; its camera the viewpoint). */
+ScanInput
 loadScan (const RegisterOptions& options);
 
 /** Converts \a scan (its points and viewpoint) to mm, its unit given by options.units or guessed against \a model
  *  (see scan_units.h), and says so on \a out when it was not in mm; returns the unit and why. */
 LengthUnitGuess
-convertScanToMillimetres (ScanCloud& scan, const RegisterOptions& options, const MorphableModel& model,
+convertScanToMillimetres (ScanInput& scan, const RegisterOptions& options, const MorphableModel& model,
                           std::ostream& out);
 
 /** Loads a model file (loadModel: in mm whatever the file's unit) and says on \a out when the file was in another

@@ -3,6 +3,7 @@
 // The resampling step after a registration, shared by `resample` and `build-model --from-scans`: the scan moved into
 // the fitted model's topology by ScanResampler, the mesh written and its statistics added to the scan's report.
 #include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/resampling/resampling_settings.h>
 #include <morphreg/resampling/scan_resampler.h>
 
 #include <pcl/point_cloud.h>
@@ -19,20 +20,13 @@ namespace morphreg
 {
 namespace tools
 {
-/** The ScanResampler settings of the command line. */
-struct ResamplingOptions
+/** The ScanResampler settings of the command line (the library's, by the same names) and the mesh's colours. */
+struct ResamplingOptions : ResamplingSettings
 {
-  double ray_distance = 5.0;
-  double normal_agreement = 60.0;
-  int ring_width = 3;
-  double max_hole_fraction = 0.5;
-  double fill_smoothing = 1.0;
-  int passes = 3;
   std::string colours = "state"; ///< the resampled mesh's vertex colours: auto, scan or state (observed / filled)
 };
 
-/** Adds --ray-distance, --normal-agreement, --ring-width, --max-hole-fraction, --fill-smoothing and --passes to
- *  \a command. */
+/** Adds the options of resamplingOptions()'s table (--ray-distance, --passes, ...) to \a command. */
 void
 addResamplingOptions (CLI::App* command, ResamplingOptions& options);
 

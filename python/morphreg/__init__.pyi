@@ -85,14 +85,31 @@ class RegistrationResult:
 
 def register(model: Model, points: ArrayLike, normals: Optional[ArrayLike] = None,
              landmarks: Optional[Dict[str, ArrayLike]] = None, *,
-             progress: Optional[Callable[[int, int, float], None]] = None, units: str = "auto",
+             progress: Optional[Callable[[int, int, float], None]] = None,
              iterations: int = 100, similarity_iterations: int = 60, max_distance: float = 0.0,
              components: Union[None, int, Sequence[int]] = None, point_to_plane: bool = True,
              tangential_weight: float = 0.02, shape_prior: float = 3.0,
              refinement_prior: Optional[float] = None, refinement_smoothness: float = 1.0, landmark_weight: float = 0.0,
-             area_weighting: bool = False, loss: str = "tukey", loss_scale: float = 0.0,
-             reject_distance: float = 0.0, reject_median: float = 0.0, reject_one_to_one: bool = False,
-             reject_trimmed: float = 0.0, target_smoothing: Union[str, bool] = "auto") -> RegistrationResult: ...
+             target_smoothing: Union[str, bool] = "auto", units: str = "auto", area_weighting: bool = False,
+             loss: str = "tukey", loss_scale: float = 0.0, reject_distance: float = 0.0, reject_median: float = 0.0,
+             reject_one_to_one: bool = False, reject_trimmed: float = 0.0) -> RegistrationResult: ...
+
+class ResampledMesh:
+    @property
+    def vertices(self) -> Points: ...
+    @property
+    def faces(self) -> Faces: ...
+    @property
+    def observed(self) -> npt.NDArray[np.bool_]: ...
+    @property
+    def displacement(self) -> Points: ...
+    @property
+    def report(self) -> Dict[str, Any]: ...
+
+def resample(vertices: ArrayLike, faces: ArrayLike, points: ArrayLike, normals: Optional[ArrayLike] = None, *,
+             ray_distance: float = 5.0, normal_agreement: float = 60.0, ring_width: int = 3,
+             max_hole_fraction: float = 0.5, fill_smoothing: float = 1.0, passes: int = 3, neighbours: int = 24,
+             max_jump: float = 1.0) -> ResampledMesh: ...
 
 class ThinPlateSpline:
     def __init__(self, regularization: float = 0.0) -> None: ...

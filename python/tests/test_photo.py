@@ -53,7 +53,8 @@ def test_views_from_pixels(model, photos):
 
 
 def test_bad_input(model, photos):
-    with pytest.raises(morphreg.InvalidInputError, match="approach \"side\" is none of profile, joint, tps"):
+    with pytest.raises(morphreg.InvalidInputError,
+                       match="photo fitting approach \"side\" is none of profile, joint, tps"):
         morphreg.fit_photos(model, photos.profile, photos.frontal, approach="side")
     with pytest.raises(morphreg.InvalidInputError, match="0 landmarks fix model vertices; at least 3 are needed"):
         morphreg.fit_photos(model, photos.profile)

@@ -176,7 +176,7 @@ def test_mismatched_normals(model, scan):
 
 
 @pytest.mark.parametrize("settings, message", [
-    ({"loss": "cauchy"}, "loss = \"cauchy\" is none of none, huber, tukey"),
+    ({"loss": "bisquare"}, "loss = \"bisquare\" is none of none, huber, tukey, cauchy, geman_mcclure"),
     ({"iterations": 0}, "iterations = 0 is out of range"),
     ({"tangential_weight": 2.0}, "tangential_weight = 2 is out of range"),
     ({"shape_prior": float("nan")}, "shape_prior = nan is out of range"),

@@ -56,10 +56,32 @@ def test_class_members_match(name):
     assert stub_class_members(stub_definitions(STUBS.body)[name]) == actual
 
 
+KEYWORD_TABLES = {"register": "_registration_options", "resample": "_resampling_options"}
+
+
+def keyword_settings(function):
+    """The settings a function takes as **keywords: the table the command line reads too (registration_options.h,
+    resampling_settings.h), as name -> (default as Python writes it, help)."""
+    return getattr(morphreg, KEYWORD_TABLES.get(function.__name__, ""), {})
+
+
 @pytest.mark.parametrize("name", sorted(n for n, node in stub_definitions(STUBS.body).items()
                                         if isinstance(node, ast.FunctionDef)))
 def test_function_parameters_match(name):
-    assert stub_parameters(stub_definitions(STUBS.body)[name]) == parameters_of(getattr(morphreg, name))
+    function = getattr(morphreg, name)
+    expected = parameters_of(function) + list(keyword_settings(function))
+    assert stub_parameters(stub_definitions(STUBS.body)[name]) == expected
+
+
+@pytest.mark.parametrize("name", sorted(KEYWORD_TABLES))
+def test_keyword_defaults_are_the_tables(name):
+    node = stub_definitions(STUBS.body)[name]
+    stub_defaults = {arg.arg: ast.literal_eval(ast.unparse(default))
+                     for arg, default in zip(node.args.kwonlyargs, node.args.kw_defaults)}
+    table = keyword_settings(getattr(morphreg, name))
+    assert table
+    for setting, (default, _) in table.items():
+        assert stub_defaults[setting] == ast.literal_eval(default), setting
 
 
 def test_functions_have_docstrings():

@@ -4,7 +4,7 @@
 // how a primitive's material colours it (base-colour factor and texture, the textures decoded once each).
 #include "gltf_file.h"
 
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 #include <Eigen/Core>
 

@@ -2,6 +2,7 @@
 #include "geometry_file_reader.h"
 #include "obj_content.h"
 
+#include <morphreg/io/rgb_image_io.h>
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 

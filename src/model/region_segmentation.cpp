@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_topology.h>
+#include <morphreg/model/morphable_model.h>
 #include <morphreg/model/region_segmentation.h>
 
 #include <cmath>
@@ -62,6 +63,31 @@ segmentByLandmarkGroups (const TriangleMesh& mesh, const std::vector<LandmarkGro
   result.names.push_back (rest_name);
   validateRegionLabels (result, n);
   return result;
+}
+
+RegionLabels
+strongestRegions (const MorphableModel& model)
+{
+  std::vector<int> strongest (static_cast<std::size_t> (model.numVertices ()));
+  for (int v = 0; v < model.numVertices (); ++v) {
+    double best = -1.0;
+    for (const RegionEntry& entry : model.vertexEntries (v))
+      if (entry.weight > best) {
+        best = entry.weight;
+        strongest[static_cast<std::size_t> (v)] = entry.region;
+      }
+  }
+  RegionLabels regions;
+  std::vector<int> index (static_cast<std::size_t> (model.numRegions ()), -1);
+  for (int& region : strongest) {
+    int& label = index[static_cast<std::size_t> (region)];
+    if (label < 0) {
+      label = static_cast<int> (regions.names.size ());
+      regions.names.push_back (model.region (region).name);
+    }
+    regions.labels.push_back (label);
+  }
+  return regions;
 }
 
 } // namespace morphreg

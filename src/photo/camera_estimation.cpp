@@ -139,7 +139,7 @@ requireEstimable (const Eigen::Matrix3Xd& points, const Eigen::Matrix2Xd& pixels
 {
   if (points.cols () != pixels.cols () || points.cols () < 6)
     throw InvalidInputError (source + ": a camera is estimated from at least 6 landmarks the model has, got " +
-                             std::to_string (std::min (points.cols (), pixels.cols ())) + " (give --camera)");
+                             std::to_string (std::min (points.cols (), pixels.cols ())) + " (give the camera)");
   if (!points.allFinite () || !pixels.allFinite ())
     throw InvalidInputError (source + ": the landmarks to estimate the camera from are not finite");
   const Eigen::Matrix3Xd centred = points.colwise () - points.rowwise ().mean ();

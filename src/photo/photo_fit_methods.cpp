@@ -49,7 +49,7 @@ photoFitMethod (const std::string& name)
       return method;
     known += (known.empty () ? "" : ", ") + method->name ();
   }
-  throw InvalidInputError ("fit-photos approach \"" + name + "\" is none of " + known);
+  throw InvalidInputError ("photo fitting approach \"" + name + "\" is none of " + known);
 }
 
 PoseShapeState

@@ -2,6 +2,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
 #include <morphreg/io/json_file.h>
+#include <morphreg/io/landmark_io.h>
 #include <morphreg/photo/jpeg_exif.h>
 #include <morphreg/photo/photo_camera_io.h>
 #include <morphreg/photo/photo_view_io.h>
@@ -144,7 +145,7 @@ loadPhotoView (const PhotoViewFiles& files)
 {
   RgbImage image = loadRgbImage (files.image);
   if (files.landmarks.empty () && files.outline.empty ())
-    throw InvalidInputError (files.image + ": the photo has neither landmarks nor an outline (--landmarks, --outline)");
+    throw InvalidInputError (files.image + ": the photo has neither landmarks nor an outline");
   const LandmarkPixels landmarks = files.landmarks.empty () ? LandmarkPixels () : loadLandmarkPixels (files.landmarks);
   for (const auto& [id, pixel] : landmarks)
     if ((pixel.array () < -0.1 * Eigen::Array2d (image.width, image.height)).any () ||

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "../common/number_text.h"
-
 #include <morphreg/common/error.h>
 #include <morphreg/common/length_unit.h>
+#include <morphreg/registration/registration_options.h>
+#include <morphreg/registration/robust_kernel.h>
 #include <morphreg/registration/registration_settings.h>
 
 #include <pcl/registration/correspondence_rejection_distance.h>
@@ -21,32 +21,6 @@ namespace morphreg
 {
 namespace
 {
-using detail::numberText;
-
-/** Throws unless \a lowest <= value <= highest (a NaN is out of every range). */
-void
-requireInRange (double value, double lowest, double highest, const char* name)
-{
-  if (value >= lowest && value <= highest)
-    return;
-  std::string range =
-      highest == HUGE_VAL ? "at least " + numberText (lowest) : numberText (lowest) + " to " + numberText (highest);
-  throw InvalidInputError (std::string ("registration setting ") + name + " = " + numberText (value, 6) +
-                           " is out of range (" + range + ")");
-}
-
-RobustLoss
-parseRobustLoss (const std::string& name)
-{
-  if (name == "none")
-    return RobustLoss::none;
-  if (name == "huber")
-    return RobustLoss::huber;
-  if (name == "tukey")
-    return RobustLoss::tukey;
-  throw InvalidInputError ("registration setting loss = \"" + name + "\" is none of none, huber, tukey");
-}
-
 TargetSmoothing
 parseTargetSmoothing (const std::string& name)
 {
@@ -57,14 +31,6 @@ parseTargetSmoothing (const std::string& name)
   if (name == "off")
     return TargetSmoothing::off;
   throw InvalidInputError ("registration setting target_smoothing = \"" + name + "\" is none of auto, on, off");
-}
-
-void
-requireValidComponents (const std::vector<int>& components)
-{
-  for (int count : components)
-    if (count < 0)
-      throw InvalidInputError ("registration setting components has a negative count (" + std::to_string (count) + ")");
 }
 
 /** Two shape phases: over at most kCoarseComponents per region at \a settings' shape prior (and \a icp's
@@ -110,24 +76,9 @@ addRejectors (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& s
 void
 requireValidSettings (const RegistrationSettings& settings)
 {
-  requireInRange (settings.iterations, 1, 10000, "iterations");
-  requireInRange (settings.similarity_iterations, 1, 10000, "similarity_iterations");
-  requireInRange (settings.max_distance, 0.0, HUGE_VAL, "max_distance");
-  requireValidComponents (settings.components);
-  requireInRange (settings.tangential_weight, 0.0, 1.0, "tangential_weight");
-  requireInRange (settings.shape_prior, 0.0, HUGE_VAL, "shape_prior");
-  if (settings.refinement_prior)
-    requireInRange (*settings.refinement_prior, 0.0, HUGE_VAL, "refinement_prior");
-  requireInRange (settings.refinement_smoothness, 0.0, HUGE_VAL, "refinement_smoothness");
-  requireInRange (settings.landmark_weight, 0.0, HUGE_VAL, "landmark_weight");
-  parseRobustLoss (settings.loss);
-  requireInRange (settings.loss_scale, 0.0, HUGE_VAL, "loss_scale");
-  requireInRange (settings.reject_distance, 0.0, HUGE_VAL, "reject_distance");
-  requireInRange (settings.reject_median, 0.0, HUGE_VAL, "reject_median");
-  requireInRange (settings.reject_trimmed, 0.0, 1.0, "reject_trimmed");
+  for (const RegistrationOption& option : registrationOptions ())
+    requireValidOption (option, settings);
   parseTargetSmoothing (settings.target_smoothing);
-  if (settings.units != "auto")
-    parseLengthUnit (settings.units);
 }
 
 void
@@ -147,7 +98,7 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
   icp.setPointToPlane (settings.point_to_plane, settings.tangential_weight);
   icp.setShapePriorWeight (settings.shape_prior);
   icp.setAreaWeighting (settings.area_weighting);
-  icp.setRobustLoss (parseRobustLoss (settings.loss), settings.loss_scale);
+  icp.setRobustKernel (makeRobustKernel (settings.loss, settings.loss_scale));
   icp.setTargetSmoothing (parseTargetSmoothing (settings.target_smoothing));
   icp.setTargetUnit (LengthUnit::millimetre);
   addRejectors (icp, settings);

@@ -37,8 +37,8 @@ modelRadius (const MorphableModel& model)
 } // namespace
 
 LengthUnitGuess
-convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
-                          const MorphableModel& model, const std::string& scan_name, bool one_view)
+scanUnit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units, const MorphableModel& model,
+          const std::string& scan_name, bool one_view)
 {
   LengthUnitGuess unit;
   if (units == "auto") {
@@ -50,6 +50,14 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::st
     unit.scale_to_mm = millimetresPer (unit.unit);
     unit.reason = "given: " + units;
   }
+  return unit;
+}
+
+LengthUnitGuess
+convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
+                          const MorphableModel& model, const std::string& scan_name, bool one_view)
+{
+  const LengthUnitGuess unit = scanUnit (scan, units, model, scan_name, one_view);
   const auto to_mm = static_cast<float> (unit.scale_to_mm);
   if (to_mm != 1.0f)
     for (auto& point : scan)

@@ -253,10 +253,10 @@ ScanResampler::setInputScan (const pcl::PointCloud<pcl::PointNormal>& scan)
       points.col (kept) = point.getVector3fMap ().cast<double> ();
       normals.col (kept++) = point.getNormalVector3fMap ().cast<double> ().normalized ();
     }
-  if (kept < neighbours_)
+  if (kept < settings_.neighbours)
     throw InvalidInputError ("ScanResampler: the scan has " + std::to_string (kept) + " finite points; at least " +
-                             std::to_string (neighbours_) + " are needed");
-  surface_ = detail::makeCloudSurface (points.leftCols (kept), normals.leftCols (kept), neighbours_);
+                             std::to_string (settings_.neighbours) + " are needed");
+  surface_ = detail::makeCloudSurface (points.leftCols (kept), normals.leftCols (kept), settings_.neighbours);
 }
 
 void
@@ -277,80 +277,77 @@ ScanResampler::setInputScan (const TriangleMesh& scan)
 }
 
 void
+ScanResampler::setSettings (const ResamplingSettings& settings)
+{
+  requireValidSettings (settings);
+  settings_ = settings;
+}
+
+namespace
+{
+/** \a settings with \a field set to \a value. */
+template <typename T>
+ResamplingSettings
+with (ResamplingSettings settings, T ResamplingSettings::*field, T value)
+{
+  settings.*field = value;
+  return settings;
+}
+} // namespace
+
+void
 ScanResampler::setMaxDistance (double distance)
 {
-  if (!(distance > 0.0) || !std::isfinite (distance))
-    throw InvalidInputError ("ScanResampler::setMaxDistance: " + std::to_string (distance) +
-                             " is not a positive "
-                             "distance (mm)");
-  max_distance_ = distance;
+  setSettings (with (settings_, &ResamplingSettings::ray_distance, distance));
 }
 
 void
 ScanResampler::setNormalAgreement (double degrees)
 {
-  if (!(degrees > 0.0 && degrees <= 180.0))
-    throw InvalidInputError ("ScanResampler::setNormalAgreement: " + std::to_string (degrees) +
-                             " is not an angle in (0, 180] degrees");
-  normal_agreement_deg_ = degrees;
+  setSettings (with (settings_, &ResamplingSettings::normal_agreement, degrees));
 }
 
 void
 ScanResampler::setRingWidth (int rings)
 {
-  if (rings < 1)
-    throw InvalidInputError ("ScanResampler::setRingWidth: " + std::to_string (rings) + " rings; at least 1");
-  ring_width_ = rings;
+  setSettings (with (settings_, &ResamplingSettings::ring_width, rings));
 }
 
 void
 ScanResampler::setMaxHoleFraction (double fraction)
 {
-  if (!(fraction > 0.0 && fraction <= 1.0))
-    throw InvalidInputError ("ScanResampler::setMaxHoleFraction: " + std::to_string (fraction) +
-                             " is not a fraction in (0, 1]");
-  max_hole_fraction_ = fraction;
+  setSettings (with (settings_, &ResamplingSettings::max_hole_fraction, fraction));
 }
 
 void
 ScanResampler::setNeighbours (int k)
 {
-  if (k < 4)
-    throw InvalidInputError ("ScanResampler::setNeighbours: " + std::to_string (k) + " neighbours; at least 4");
-  neighbours_ = k;
+  setSettings (with (settings_, &ResamplingSettings::neighbours, k));
 }
 
 void
 ScanResampler::setMaxJump (double jump)
 {
-  if (!(jump > 0.0))
-    throw InvalidInputError ("ScanResampler::setMaxJump: " + std::to_string (jump) +
-                             " is not a positive distance (mm)");
-  max_jump_ = jump;
+  setSettings (with (settings_, &ResamplingSettings::max_jump, jump));
 }
 
 void
 ScanResampler::setPasses (int passes)
 {
-  if (passes < 1)
-    throw InvalidInputError ("ScanResampler::setPasses: " + std::to_string (passes) + " is not a count >= 1");
-  passes_ = passes;
+  setSettings (with (settings_, &ResamplingSettings::passes, passes));
 }
 
 void
 ScanResampler::setFillRegularization (double lambda)
 {
-  if (!(lambda >= 0.0) || !std::isfinite (lambda))
-    throw InvalidInputError ("ScanResampler::setFillRegularization: " + std::to_string (lambda) +
-                             " is not a weight >= 0");
-  fill_regularization_ = lambda;
+  setSettings (with (settings_, &ResamplingSettings::fill_smoothing, lambda));
 }
 
 Eigen::Matrix3Xd
 ScanResampler::castRays (const Eigen::Matrix3Xd& origins, const Eigen::Matrix3Xd& normals,
                          const std::vector<char>& cast) const
 {
-  const double min_cos = std::cos (normal_agreement_deg_ * M_PI / 180.0);
+  const double min_cos = std::cos (settings_.normal_agreement * M_PI / 180.0);
   std::vector<Eigen::Index> rays; // the vertices to cast from, listed so that the cores share them evenly
   for (Eigen::Index v = 0; v < origins.cols (); ++v)
     if (cast[v])
@@ -362,7 +359,7 @@ ScanResampler::castRays (const Eigen::Matrix3Xd& origins, const Eigen::Matrix3Xd
     const Eigen::Index v = rays[r];
     Eigen::Vector3d hit;
     const bool found = normals.col (v).squaredNorm () > 0.0 &&
-                       surface_->intersect (origins.col (v), normals.col (v), max_distance_, min_cos, hit);
+                       surface_->intersect (origins.col (v), normals.col (v), settings_.ray_distance, min_cos, hit);
     hits.col (v) = found ? hit : Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN ());
   }
   return hits;
@@ -382,7 +379,7 @@ ScanResampler::resample () const
   result.mesh = reference_;
   std::vector<char> missed (static_cast<std::size_t> (reference_.numVertices ()), 1);
   Holes holes;
-  for (int pass = 0; pass < passes_; ++pass)
+  for (int pass = 0; pass < settings_.passes; ++pass)
     holes = resamplePass (topology, areas, missed, result);
   summarise (missed, areas, holes, result);
   if (!result.mesh.vertices.allFinite ())
@@ -401,7 +398,7 @@ ScanResampler::resamplePass (const MeshTopology& topology, const Eigen::VectorXd
   Eigen::Matrix3Xd displacement = hits - start;
   for (Eigen::Index v = 0; v < start.cols (); ++v)
     missed[v] = displacement.col (v).allFinite () ? 0 : 1;
-  rejectInconsistentHits (topology, displacement, normals, max_jump_, missed);
+  rejectInconsistentHits (topology, displacement, normals, settings_.max_jump, missed);
   rejectFoldingHits (reference_, start, hits, missed);
   for (Eigen::Index v = 0; v < start.cols (); ++v)
     if (missed[v])
@@ -409,12 +406,12 @@ ScanResampler::resamplePass (const MeshTopology& topology, const Eigen::VectorXd
   result.statistics.ray_seconds += secondsSince (ray_start);
   if (std::all_of (missed.begin (), missed.end (), [] (char m) { return m != 0; }))
     throw InvalidInputError ("ScanResampler: no reference vertex meets the scan within " +
-                             std::to_string (max_distance_) +
+                             std::to_string (settings_.ray_distance) +
                              " mm along its normal; the scan and the reference do "
                              "not overlap (is the reference fitted to this scan, in its frame?)");
   const auto fill_start = Clock::now ();
-  Holes holes = findHoles (topology, areas, missed, max_hole_fraction_);
-  fillHoles (topology, start, missed, ring_width_, fill_regularization_, holes, displacement);
+  Holes holes = findHoles (topology, areas, missed, settings_.max_hole_fraction);
+  fillHoles (topology, start, missed, settings_.ring_width, settings_.fill_smoothing, holes, displacement);
   result.statistics.fill_seconds += secondsSince (fill_start);
   result.mesh.vertices = start + displacement;
   return holes;

@@ -2,7 +2,7 @@
 // morphreg::photo: a small RGB image written as PNG and read back (VTK's image IO inside the component), and the
 // closest point of a 2D polyline. Exit 0 on success.
 #include <morphreg/photo/polyline_2d.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 #include <iostream>
 

@@ -8,7 +8,7 @@
 #include <morphreg/io/file_validation.h>
 #include <morphreg/io/gltf_reader.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 #include "support/expect_error.h"
 #include "support/glb_writer.h"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
+#include <morphreg/common/cloud_checks.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/mesh_io.h>
 

@@ -2,8 +2,8 @@
 // Importers of the real evaluation surfaces: MNE's fsaverage scalp with its fiducials (metres -> mm) and MediaPipe's
 // canonical face (centimetres -> mm), and the errors for missing or malformed files.
 #include <morphreg/common/error.h>
-#include <morphreg/io/fsaverage_head.h>
-#include <morphreg/io/mediapipe_face.h>
+#include <morphreg/datasets/fsaverage_head.h>
+#include <morphreg/datasets/mediapipe_face.h>
 #include <morphreg/io/mesh_io.h>
 #include "support/temp_directory.h"
 #include "support/test_meshes.h"

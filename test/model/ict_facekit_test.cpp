@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
-#include <morphreg/io/ict_facekit.h>
+#include <morphreg/datasets/ict_facekit.h>
 #include <morphreg/io/npy_reader.h>
 #include <morphreg/model/ict_region_model.h>
 #include <morphreg/model/pca.h>

@@ -5,6 +5,7 @@
 #include "support/accuracy_bound.h"
 #include "support/temp_directory.h"
 
+#include <morphreg/io/rgb_image_io.h>
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/photo/photo_texture.h>

@@ -10,7 +10,7 @@
 
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
-#include <morphreg/io/mediapipe_face.h>
+#include <morphreg/datasets/mediapipe_face.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/photo/photo_camera_io.h>
 #include <morphreg/photo/photo_fitting.h>

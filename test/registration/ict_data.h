@@ -2,7 +2,7 @@
 #pragma once
 // The ICT-FaceKit model for the registration tests with real data: loaded once per executable, with the skip
 // message used when ../shared/data is absent.
-#include <morphreg/io/ict_facekit.h>
+#include <morphreg/datasets/ict_facekit.h>
 
 #include <filesystem>
 #include <string>

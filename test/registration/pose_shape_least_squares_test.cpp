@@ -4,7 +4,6 @@
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
 #include <morphreg/registration/morphable_convergence.h>
 #include <morphreg/registration/pose_shape_least_squares.h>
-#include <morphreg/registration/robust_kernels.h>
 
 #include <Eigen/Geometry>
 
@@ -148,12 +147,4 @@ TEST (CorrespondenceRejectorTargetBoundaryTest, RejectsTheBorderOfAPlaneAndSmoot
   EXPECT_THROW (unset.getRemainingCorrespondences (all, inside), morphreg::InvalidInputError);
 }
 
-TEST (RobustKernelsTest, WeightsAndWidths)
-{
-  EXPECT_DOUBLE_EQ (morphreg::robustWeight (morphreg::RobustLoss::none, 5.0, 1.0), 1.0);
-  EXPECT_DOUBLE_EQ (morphreg::robustWeight (morphreg::RobustLoss::huber, 2.0, 1.0), 0.5);
-  EXPECT_DOUBLE_EQ (morphreg::robustWeight (morphreg::RobustLoss::tukey, 2.0, 1.0), 0.0);
-  EXPECT_DOUBLE_EQ (morphreg::robustKernelWidth (morphreg::RobustLoss::tukey, {1.0, 1.0, 1.0}, 0.0), 4.685 * 1.4826);
-  EXPECT_DOUBLE_EQ (morphreg::robustKernelWidth (morphreg::RobustLoss::huber, {1.0}, 3.0), 3.0);
-}
 } // namespace

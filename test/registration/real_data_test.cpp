@@ -5,8 +5,8 @@
 // the flat cap that closes the MRI scalp below the head).
 #include "ict_data.h"
 
-#include <morphreg/io/fsaverage_head.h>
-#include <morphreg/io/mediapipe_face.h>
+#include <morphreg/datasets/fsaverage_head.h>
+#include <morphreg/datasets/mediapipe_face.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/planar_cap.h>
 #include <morphreg/mesh/surface_sampling.h>

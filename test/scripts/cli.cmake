@@ -129,7 +129,7 @@ morphreg_cli_expect_exit(RegisterUnknownLandmarkIsNamed 1 "unknown_landmarks.csv
 morphreg_cli_expect_exit(RegisterWrongTruthIsNamed 1 "synth/head_000.ply: 9602 vertices"
   register --scan ${cli_dir}/small/scan_0.pcd --model ${cli_dir}/small_model.h5 --iterations 2 --quiet
   --truth ${cli_dir}/synth/head_000.ply --out ${cli_dir}/bad.ply)
-morphreg_cli_expect_exit(RegisterBadLossExits2 2 "--loss" register --scan a.pcd --model b.h5 --loss cauchy)
+morphreg_cli_expect_exit(RegisterBadLossExits2 2 "--loss" register --scan a.pcd --model b.h5 --loss bisquare)
 morphreg_cli_expect_exit(RegisterNegativeRefinementPriorExits2 2 "--refinement-prior"
   register --scan a.pcd --model b.h5 --refinement-prior -1)
 

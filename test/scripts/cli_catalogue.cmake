@@ -552,7 +552,7 @@ endif()
 foreach(case "IterationsFraction;--iterations;12.9;Value 12.9 is not a whole number (a whole number from 1 to 10000)"
         "IterationsTooMany;--iterations;20000;Value 20000 is not from 1 to 10000"
         "WidthNotANumber;--width;wide;Value wide is not a number"
-        "TrimmedBeyondOne;--reject-trimmed;2;Value 2 is not a number from 0.01 to 1"
+        "TrimmedBeyondOne;--reject-trimmed;2;Value 2 is not a number from 0 to 1"
         "TangentialWeightNaN;--tangential-weight;nan;Value nan is not a number from 0 to 1")
   list(GET case 0 name)
   list(GET case 1 option)

@@ -13,6 +13,12 @@ add_test(NAME StyleTest.FunctionsAreAtMost60Lines
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_function_length.py --max-lines 60
           ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR}/python/src
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+# LayerTest: the library's folders include only the folders docs/architecture.md's layer table allows them, and no
+# public header names the shared data's path (scripts/check_layers.py).
+add_test(NAME LayerTest.IncludesFollowTheLayers
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_layers.py ${PROJECT_SOURCE_DIR})
+add_test(NAME LayerTest.CheckerFindsBrokenArrows
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_layers.py --self-test)
 
 find_program(MORPHREG_CLANG_FORMAT NAMES clang-format clang-format-14)
 if(NOT MORPHREG_CLANG_FORMAT)

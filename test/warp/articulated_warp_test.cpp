@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
-#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/datasets/makehuman_bodies.h>
 #include <morphreg/warp/articulated_warp.h>
 #include <morphreg/warp/as_rigid_as_possible.h>
 #include <morphreg/warp/limb_parts.h>

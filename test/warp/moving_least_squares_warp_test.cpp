@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
-#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/datasets/makehuman_bodies.h>
 #include <morphreg/warp/moving_least_squares_warp.h>
 #include <morphreg/warp/thin_plate_spline.h>
 #include <morphreg/warp/warp_quality.h>

@@ -55,6 +55,11 @@ requireKnownLandmarkId (const std::string& id, const std::string& source);
 /** \brief Named 3D landmark positions (mm), e.g. marked on a scan: id -> position. */
 using LandmarkPositions = std::map<std::string, Eigen::Vector3d>;
 
+/** \brief Named 2D landmark positions in a photo, in pixels: x to the right, y down, origin at the top-left
+ *  corner of the image (the centre of the first pixel is (0.5, 0.5)).
+ */
+using LandmarkPixels = std::map<std::string, Eigen::Vector2d>;
+
 /** \brief Throws InvalidInputError naming both ids and both files when two landmarks at one position in \a source
  *  (within 1e-9 of its extent) are apart in \a target: a warp cannot send one point to two places. Landmarks that
  *  coincide in both (a bone's tail at the next bone's head) are fine: a warp merges them.

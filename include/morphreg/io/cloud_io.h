@@ -30,21 +30,12 @@ template <typename PointT>
 void
 saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud);
 
-/** \brief Throws InvalidInputError naming \a name if \a cloud is empty or has a non-finite point.
- *  \param[in] cloud the cloud to check
- *  \param[in] name what the cloud is (e.g. its file), for the message
- */
-template <typename PointT>
-void
-requireFiniteNonEmpty (const pcl::PointCloud<PointT>& cloud, const std::string& name);
-
 } // namespace morphreg
 
 /// \cond
 #define MORPHREG_DECLARE_CLOUD_IO(T)                                                                                   \
   extern template pcl::PointCloud<T>::Ptr morphreg::loadCloud<T> (const std::string&);                                 \
-  extern template void morphreg::saveCloud<T> (const std::string&, const pcl::PointCloud<T>&);                         \
-  extern template void morphreg::requireFiniteNonEmpty<T> (const pcl::PointCloud<T>&, const std::string&);
+  extern template void morphreg::saveCloud<T> (const std::string&, const pcl::PointCloud<T>&);
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZ)
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointNormal)
 MORPHREG_DECLARE_CLOUD_IO (pcl::PointXYZRGBNormal)

@@ -26,11 +26,6 @@
 
 namespace morphreg
 {
-/** \brief Named 2D landmark positions in a photo, in pixels: x to the right, y down, origin at the top-left
- *  corner of the image (the centre of the first pixel is (0.5, 0.5)).
- */
-using LandmarkPixels = std::map<std::string, Eigen::Vector2d>;
-
 /** \brief Loads 3D landmarks from a .pp, .json, .csv or .pts file (chosen by the extension), in millimetres
  *  (JSON files stating "cm" or "m" are converted). Inactive MeshLab points (active="0") are skipped. A JSON file
  *  whose top level is an array is read as scalismo's layout [{"id": ..., "coordinates": [x, y, z]}], with Basel

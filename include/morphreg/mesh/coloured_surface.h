@@ -5,7 +5,7 @@
  *  its colours sampled at other points: how the fitted and the resampled meshes take on the scan's colours.
  */
 #include <morphreg/common/colour_map.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/common/rgb_image.h>
 
 #include <Eigen/Core>
 

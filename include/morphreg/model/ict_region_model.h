@@ -11,7 +11,7 @@
  *  4. run ModelBuilder on them with those regions.
  *
  *  \code
- *  auto ict = morphreg::loadIctFaceKit ("../shared/data/ict_facekit");
+ *  auto ict = morphreg::loadIctFaceKit ("ict_facekit") // the ICT-FaceKit folder;
  *  auto regional = morphreg::buildIctRegionModel (*ict, 300, 1);
  *  morphreg::saveModel ("ict_7_regions.h5", *regional);
  *  \endcode

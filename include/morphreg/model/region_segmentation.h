@@ -48,4 +48,15 @@ RegionLabels
 segmentByLandmarkGroups (const TriangleMesh& mesh, const std::vector<LandmarkGroup>& groups,
                          const std::string& rest_name = "skull_neck");
 
+class MorphableModel;
+
+/** \brief The regions of \a model as labels: each vertex in the region where its blending weight is largest;
+ *  regions left without a vertex are dropped. A model built from meshes in \a model's topology with these labels
+ *  has \a model's regions (build-model --from-scans).
+ *  \param[in] model a model with blended regions
+ *  \return the region names and a label per vertex
+ */
+RegionLabels
+strongestRegions (const MorphableModel& model);
+
 } // namespace morphreg

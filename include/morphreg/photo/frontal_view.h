@@ -3,7 +3,7 @@
 /** \file frontal_view.h
  *  \brief A frontal photo annotated for the two-view fit: named landmarks (ids of docs/landmarks.md) in pixels.
  */
-#include <morphreg/io/landmark_io.h>
+#include <morphreg/common/landmarks.h>
 #include <morphreg/photo/photo_normalisation.h>
 
 #include <map>

@@ -8,7 +8,7 @@
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/photo/photo_camera.h>
 #include <morphreg/photo/photo_normalisation.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/common/rgb_image.h>
 
 #include <vector>
 

@@ -5,7 +5,7 @@
  *  on it, the head's outline traced on it (optional, with an optional mark where the hair begins) and its camera
  *  (optional: a missing one is estimated from the landmarks).
  */
-#include <morphreg/io/landmark_io.h>
+#include <morphreg/common/landmarks.h>
 #include <morphreg/photo/frontal_view.h>
 #include <morphreg/photo/photo_camera.h>
 #include <morphreg/photo/profile_view.h>

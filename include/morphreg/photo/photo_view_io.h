@@ -17,7 +17,7 @@
 #include <morphreg/photo/frontal_view.h>
 #include <morphreg/photo/photo_view.h>
 #include <morphreg/photo/profile_view.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 #include <optional>
 #include <string>

@@ -12,7 +12,8 @@
 #include <morphreg/registration/morphable_convergence.h>
 #include <morphreg/registration/pose_shape_least_squares.h>
 #include <morphreg/registration/registration_report.h>
-#include <morphreg/registration/robust_kernels.h>
+#include <morphreg/registration/kernels/tukey_kernel.h>
+#include <morphreg/registration/robust_kernel.h>
 #include <morphreg/registration/target_surface.h>
 
 #include <pcl/PolygonMesh.h>
@@ -69,7 +70,7 @@ enum class IcpInitialisation
  *
  *  computeTransformation is PCL's ICP loop: per phase (the similarity stage, then each shape phase) and iteration,
  *  correspondences (their distances measured to the TargetSurface's smoothed points), the rejector chain, IRLS
- *  weights (robust_kernels.h), one PoseShapeLeastSquares step, and a MorphableConvergence that ends the phase
+ *  weights (a RobustKernel, robust_kernel.h), one PoseShapeLeastSquares step, and a MorphableConvergence that ends the phase
  *  (budget, motion and fitness epsilons, divergence rules). Too few correspondences follow requireEnoughRows. The
  *  cost is
  *  sum_i w_i |r_i|^2_W + landmark_weight sum_l |r_l|^2 + lambda_1^2 |Gamma m|^2 + lambda_2^2 |Lambda m|^2,
@@ -246,17 +247,24 @@ public:
   void
   setPointToPlane (bool enabled, double tangential_weight = 0.02);
 
-  /** \brief IRLS weights on the residual distances (default Tukey, automatic width); \a scale (mm) is the kernel
-   *  width c, or <= 0 for c from the
-   *  residuals' median absolute value (1.345 resp. 4.685 times 1.4826 MAD).
-   *  \param[in] loss the kernel (RobustLoss::none: plain least squares)
-   *  \param[in] scale the kernel width c (mm), or <= 0 for the automatic width
+  /** \brief The IRLS kernel weighing the residual distances (default Tukey's, automatic width; see
+   *  robust_kernel.h, makeRobustKernel by name). InvalidInputError for a null kernel.
+   *  \param[in] kernel the kernel, with its width
    */
   void
-  setRobustLoss (RobustLoss loss, double scale = 0.0);
+  setRobustKernel (const RobustKernel::ConstPtr& kernel);
 
-  /** \brief With the Tukey loss, the similarity stage and every shape phase but the last use Huber weights, the
-   *  last Tukey's (off by default). Tukey gives weight 0 to a region of the model still far from the scan (a higher
+  /** \brief The IRLS kernel.
+   *  \return the kernel of setRobustKernel
+   */
+  RobustKernel::ConstPtr
+  getRobustKernel () const
+  {
+    return robust_kernel_;
+  }
+
+  /** \brief With a redescending kernel (Tukey's, Cauchy's, Geman-McClure's: RobustKernel::graduatedStart), the
+   *  similarity stage and every shape phase but the last use Huber weights, the last the kernel's (off by default). Tukey gives weight 0 to a region of the model still far from the scan (a higher
    *  skull, a longer chin), which is then never pulled in; Huber keeps its pull until the last phase. For scans
    *  that cover the model's surface (up to holes); not where parts of the model have no counterpart in the target
    *  (ICT-FaceKit against the fsaverage scalp: those parts then pull the fit off, from a median of 0.64 to 1.35 mm).
@@ -490,8 +498,8 @@ private:
   struct Phase
   {
     bool shape = false;
-    ShapePhase settings; ///< the shape phase's components and weights
-    RobustLoss loss = RobustLoss::none;
+    ShapePhase settings;           ///< the shape phase's components and weights
+    RobustKernel::ConstPtr kernel; ///< the phase's IRLS kernel
   };
 
   void
@@ -531,7 +539,7 @@ private:
 
   /** Correspondences, rejection and IRLS weights (kernel \a loss) at \a state. */
   Evaluation
-  evaluate (const PoseShapeState& state, RobustLoss loss);
+  evaluate (const PoseShapeState& state, const RobustKernel& kernel);
 
   /** The correspondence estimation's correspondences of \a ev's posed model, their distances on the target
    *  surface's (smoothed) points. */
@@ -544,7 +552,7 @@ private:
 
   /** Distances, error and IRLS weights of \a ev's kept correspondences. */
   void
-  weigh (Evaluation& ev, RobustLoss loss) const;
+  weigh (Evaluation& ev, const RobustKernel& kernel) const;
 
   /** The rows of \a ev: each kept correspondence with its weight and metric, then the landmarks. */
   std::vector<PoseShapeRow>
@@ -587,8 +595,7 @@ private:
   int similarity_iterations_ = 20;
   bool point_to_plane_ = false;
   double tangential_weight_ = 0.02;
-  RobustLoss robust_loss_ = RobustLoss::tukey;
-  double robust_scale_ = 0.0;
+  RobustKernel::ConstPtr robust_kernel_ = std::make_shared<TukeyKernel> ();
   bool graduated_loss_ = false;
   bool area_weighting_ = false;
   Eigen::VectorXd vertex_area_weights_; ///< per model vertex, mean 1 (setModel)

@@ -5,6 +5,7 @@
  *  along its normal onto the scan's surface, the misses filled by thin plate splines from the rings around each hole.
  */
 #include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/resampling/resampling_settings.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -130,6 +131,21 @@ public:
   void
   setInputScan (const TriangleMesh& scan);
 
+  /** \brief Every setting at once (checked: requireValidSettings); the setters below change one each.
+   *  \param[in] settings the settings, by the command line's names
+   */
+  void
+  setSettings (const ResamplingSettings& settings);
+
+  /** \brief The settings.
+   *  \return every setting
+   */
+  const ResamplingSettings&
+  getSettings () const
+  {
+    return settings_;
+  }
+
   /** \brief The farthest a vertex may move along its normal (mm, > 0; default 5).
    *  \param[in] distance the search distance in both directions
    */
@@ -142,7 +158,7 @@ public:
   double
   getMaxDistance () const
   {
-    return max_distance_;
+    return settings_.ray_distance;
   }
 
   /** \brief The largest angle between a vertex normal and the scan's normal at the hit (degrees in (0, 180];
@@ -158,7 +174,7 @@ public:
   double
   getNormalAgreement () const
   {
-    return normal_agreement_deg_;
+    return settings_.normal_agreement;
   }
 
   /** \brief Rings of observed vertices around each hole that its thin plate spline interpolates (>= 1; default 3).
@@ -173,7 +189,7 @@ public:
   int
   getRingWidth () const
   {
-    return ring_width_;
+    return settings_.ring_width;
   }
 
   /** \brief The largest share of the reference's surface area one hole may cover (in (0, 1]; default 0.5).
@@ -188,7 +204,7 @@ public:
   double
   getMaxHoleFraction () const
   {
-    return max_hole_fraction_;
+    return settings_.max_hole_fraction;
   }
 
   /** \brief Scan points a point cloud's local plane is weighted over (>= 4; default 24; the Gaussian weights' bandwidth
@@ -204,7 +220,7 @@ public:
   int
   getNeighbours () const
   {
-    return neighbours_;
+    return settings_.neighbours;
   }
 
   /** \brief The largest difference (mm, > 0; default 1) between a hit's displacement along the normal and the median
@@ -221,7 +237,7 @@ public:
   double
   getMaxJump () const
   {
-    return max_jump_;
+    return settings_.max_jump;
   }
 
   /** \brief Resampling passes (>= 1; default 3). Each pass after the first starts from the previous one's mesh and
@@ -239,7 +255,7 @@ public:
   int
   getPasses () const
   {
-    return passes_;
+    return settings_.passes;
   }
 
   /** \brief The smoothing weight of the hole fills' thin plate splines (>= 0, mm; default 1; see
@@ -255,7 +271,7 @@ public:
   double
   getFillRegularization () const
   {
-    return fill_regularization_;
+    return settings_.fill_smoothing;
   }
 
   /** \brief Casts the rays and fills the holes; throws InvalidInputError when an input is missing or bad (see the
@@ -285,13 +301,6 @@ private:
 
   TriangleMesh reference_;
   std::unique_ptr<detail::ScanSurface> surface_;
-  double max_distance_ = 5.0;
-  double normal_agreement_deg_ = 60.0;
-  int ring_width_ = 3;
-  double max_hole_fraction_ = 0.5;
-  int neighbours_ = 24;
-  double fill_regularization_ = 1.0;
-  double max_jump_ = 1.0;
-  int passes_ = 3;
+  ResamplingSettings settings_;
 };
 } // namespace morphreg

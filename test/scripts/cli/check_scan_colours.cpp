@@ -5,7 +5,7 @@
 // skin-coloured (red above blue), not the grey of an uncoloured mesh or a residual map.
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 #include <nlohmann/json.hpp>
 #include <pcl/conversions.h>

@@ -4,7 +4,7 @@
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
 #include <morphreg/common/order_statistics.h>
-#include <morphreg/io/cloud_io.h>
+#include <morphreg/common/cloud_checks.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/model/coefficient_units.h>
@@ -162,12 +162,14 @@ MorphableICP<PointTarget, Scalar>::setPointToPlane (bool enabled, double tangent
 
 template <typename PointTarget, typename Scalar>
 void
-MorphableICP<PointTarget, Scalar>::setRobustLoss (RobustLoss loss, double scale)
+MorphableICP<PointTarget, Scalar>::setRobustKernel (const RobustKernel::ConstPtr& kernel)
 {
-  if (!std::isfinite (scale))
-    throw InvalidInputError ("MorphableICP::setRobustLoss: the kernel width must be finite");
-  robust_loss_ = loss;
-  robust_scale_ = scale;
+  if (!kernel)
+    throw InvalidInputError ("MorphableICP::setRobustKernel: no kernel (a null pointer); plain least squares is "
+                             "makeRobustKernel (\"none\")");
+  if (!std::isfinite (kernel->getScale ()))
+    throw InvalidInputError ("MorphableICP::setRobustKernel: the kernel width must be finite");
+  robust_kernel_ = kernel;
 }
 
 template <typename PointTarget, typename Scalar>
@@ -451,11 +453,11 @@ MorphableICP<PointTarget, Scalar>::phases () const
   std::vector<Phase> phases (1);
   if (shape_stage_ && selection_.total () > 0)
     for (const ShapePhase& shape : effectiveShapeSchedule ())
-      phases.push_back ({true, shape, robust_loss_});
-  // Graduated: Huber until the last phase, which uses Tukey's weights (see setGraduatedRobustLoss).
+      phases.push_back ({true, shape, robust_kernel_});
+  // Graduated: the kernel's start (Huber for a redescending one) until the last phase (see setGraduatedRobustLoss).
+  const RobustKernel::ConstPtr start = graduated_loss_ ? robust_kernel_->graduatedStart () : nullptr;
   for (size_t k = 0; k < phases.size (); ++k)
-    phases[k].loss = graduated_loss_ && robust_loss_ == RobustLoss::tukey && k + 1 < phases.size () ? RobustLoss::huber
-                                                                                                    : robust_loss_;
+    phases[k].kernel = start && k + 1 < phases.size () ? start : robust_kernel_;
   return phases;
 }
 
@@ -508,7 +510,7 @@ MorphableICP<PointTarget, Scalar>::runPhase (const Phase& phase, const PoseShape
   best = state;
   while (!convergence.hasConverged ()) {
     const auto start = std::chrono::steady_clock::now ();
-    Evaluation ev = evaluate (state, phase.loss);
+    Evaluation ev = evaluate (state, *phase.kernel);
     const std::vector<PoseShapeRow> rows = this->rows (ev);
     requireEnoughRows (rows.size (), unknowns, "MorphableICP",
                        std::to_string (ev.kept.size ()) + " correspondences (of " + std::to_string (ev.found) +
@@ -533,7 +535,7 @@ MorphableICP<PointTarget, Scalar>::runPhase (const Phase& phase, const PoseShape
 
 template <typename PointTarget, typename Scalar>
 typename MorphableICP<PointTarget, Scalar>::Evaluation
-MorphableICP<PointTarget, Scalar>::evaluate (const PoseShapeState& state, RobustLoss loss)
+MorphableICP<PointTarget, Scalar>::evaluate (const PoseShapeState& state, const RobustKernel& kernel)
 {
   Evaluation ev;
   ev.transformed = state.posed ();
@@ -543,7 +545,7 @@ MorphableICP<PointTarget, Scalar>::evaluate (const PoseShapeState& state, Robust
     (*ev.cloud)[i].getVector3fMap () = ev.transformed.col (i).template cast<float> ();
   pcl::CorrespondencesPtr correspondences = findCorrespondences (ev);
   ev.kept = *reject (correspondences, ev);
-  weigh (ev, loss);
+  weigh (ev, kernel);
   return ev;
 }
 
@@ -599,7 +601,7 @@ MorphableICP<PointTarget, Scalar>::sourceBlob (Evaluation& ev) const
 
 template <typename PointTarget, typename Scalar>
 void
-MorphableICP<PointTarget, Scalar>::weigh (Evaluation& ev, RobustLoss loss) const
+MorphableICP<PointTarget, Scalar>::weigh (Evaluation& ev, const RobustKernel& kernel) const
 {
   const size_t kept = ev.kept.size ();
   ev.distances.resize (kept);
@@ -610,11 +612,11 @@ MorphableICP<PointTarget, Scalar>::weigh (Evaluation& ev, RobustLoss loss) const
     sum += ev.distances[c] * ev.distances[c];
   }
   ev.error = kept > 0 ? sum / static_cast<double> (kept) : std::numeric_limits<double>::infinity ();
-  const double width = robustKernelWidth (loss, ev.distances, robust_scale_);
+  const double width = kernel.width (ev.distances);
   ev.weights.resize (kept);
   for (size_t c = 0; c < kept; ++c)
-    ev.weights[c] = robustWeight (loss, ev.distances[c], width) *
-                    (area_weighting_ ? vertex_area_weights_[ev.kept[c].index_query] : 1.0);
+    ev.weights[c] =
+        kernel.weight (ev.distances[c], width) * (area_weighting_ ? vertex_area_weights_[ev.kept[c].index_query] : 1.0);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -685,11 +687,11 @@ MorphableICP<PointTarget, Scalar>::finish (PoseShapeState state, const PoseShape
   report_.termination = convergence.termination ();
   report_.divergence = convergence.divergence ();
   report_.message = convergence.message ();
-  Evaluation final_ev = evaluate (state, robust_loss_);
+  Evaluation final_ev = evaluate (state, *robust_kernel_);
   const std::vector<PoseShapeRow> final_rows = rows (final_ev);
   if (solver.cost (state, final_rows) / static_cast<double> (final_rows.size ()) > convergence.bestCost ()) {
     state = best;
-    final_ev = evaluate (state, robust_loss_);
+    final_ev = evaluate (state, *robust_kernel_);
   }
   store (state, output);
   vertex_residuals_ = Eigen::VectorXd::Constant (model_->numVertices (), std::numeric_limits<double>::quiet_NaN ());

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-#include <morphreg/io/cloud_io.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include <pcl/common/io.h>

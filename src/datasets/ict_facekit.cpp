@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
-#include <morphreg/io/ict_facekit.h>
+#include <morphreg/datasets/ict_facekit.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/npy_reader.h>
 #include <morphreg/model/pca.h>

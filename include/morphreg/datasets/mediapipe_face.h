@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file mediapipe_face.h
- *  \brief Import of MediaPipe's canonical face mesh (../shared/data/mediapipe_canonical_face/canonical_face_model.obj,
+ *  \brief Import of MediaPipe's canonical face mesh (the canonical_face_model.obj of its repository,
  *  468 vertices, the vertex index is the Face Mesh landmark id). The file is in centimetres; it is converted to
  *  millimetres on import. Its axes already match the project's (+Y up, +Z forward, +X the subject's left).
  */

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file makehuman_bodies.h
- *  \brief Reader for the MakeHuman body set (../shared/data/makehuman_bodies): three subjects standing and seated in
+ *  \brief Reader for the MakeHuman body set (a folder of the exported bodies): three subjects standing and seated in
  *  one vertex numbering, their joint centres, the four body segments and the landmark sets. MakeHuman works in
  *  decimetres; everything returned here is converted to millimetres.
  */

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
-#include <morphreg/io/mediapipe_face.h>
+#include <morphreg/datasets/mediapipe_face.h>
 #include <morphreg/io/mesh_io.h>
 
 namespace morphreg

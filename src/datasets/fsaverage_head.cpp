@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/file_checks.h>
-#include <morphreg/io/fsaverage_head.h>
+#include <morphreg/datasets/fsaverage_head.h>
 #include <morphreg/io/mesh_io.h>
 
 #include <nlohmann/json.hpp>

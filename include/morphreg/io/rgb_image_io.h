@@ -1,36 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-/** \file rgb_image.h
- *  \brief An 8-bit RGB image in memory (a photo, a scan's texture), read from PNG or JPEG (libpng, libjpeg) and
- *  written to PNG.
+/** \file rgb_image_io.h
+ *  \brief RGB images (a photo, a scan's texture) read from PNG or JPEG (libpng, libjpeg) and written to PNG.
  */
-#include <morphreg/common/colour_map.h>
+#include <morphreg/common/rgb_image.h>
 
 #include <string>
 #include <vector>
 
 namespace morphreg
 {
-/** \brief An 8-bit RGB image, rows top to bottom (pixel (0, 0) is the top-left corner, as in photo annotations). */
-struct RgbImage
-{
-  int width = 0;                   ///< pixels per row
-  int height = 0;                  ///< rows
-  std::vector<unsigned char> data; ///< 3 bytes per pixel, row by row
-
-  /** \brief The colour of column \a x, row \a y (no range check).
-   *  \param[in] x the column, 0 at the left
-   *  \param[in] y the row, 0 at the top
-   *  \return the pixel's colour
-   */
-  Rgb8
-  pixel (int x, int y) const
-  {
-    const auto i = 3 * (static_cast<size_t> (y) * static_cast<size_t> (width) + static_cast<size_t> (x));
-    return {data[i], data[i + 1], data[i + 2]};
-  }
-};
-
 /** \brief Reads a PNG or JPEG photo (grey, palette, 16-bit and RGBA images become 8-bit RGB) with loadPhotoFile()
  *  (photo_file.h): IoError if the file is missing or not a regular file, FormatError naming it if it is not a
  *  complete, valid PNG or JPEG of a plausible size, InvalidInputError if it would not fit in memory.

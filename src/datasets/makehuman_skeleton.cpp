@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include <morphreg/io/makehuman_bodies.h>
+#include <morphreg/datasets/makehuman_bodies.h>
 
 namespace morphreg
 {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/io/photo_file.h>
-#include <morphreg/io/rgb_image.h>
+#include <morphreg/io/rgb_image_io.h>
 
 // libpng and libjpeg(-turbo) directly: VTK 9.1's PNG reader crashes on corrupt data (a segmentation fault after
 // "libpng error: IDAT: invalid distance too far back", a cut file, or any file read from memory).

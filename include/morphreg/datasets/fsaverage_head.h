@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /** \file fsaverage_head.h
- *  \brief Import of MNE-Python's fsaverage scalp surface as shipped in ../shared/data/mne_fsaverage_head:
+ *  \brief Import of MNE-Python's fsaverage scalp surface as exported to a folder holding
  *  fsaverage_head.ply and fsaverage_head_landmarks.json. The data is in metres; it is converted to millimetres
  *  on import. The frame stays FreeSurfer's MRI surface RAS (+x the subject's right, +y anterior, +z superior).
  */

@@ -3,8 +3,8 @@
 /** \file ict_facekit.h
  *  \brief Import of the ICT-FaceKit head model (ICT Face Model Light, face, head and neck: vertices [0, 11248) of
  *  ICT's 26,719) from either of two layouts: ICT-FaceKit's own, as its repository publishes it (FaceXModel/
- *  generic_neutral_mesh.obj, identity000.obj ..., vertex_indices.json), or the converted one of
- *  ../shared/data/ict_facekit (PLY mean, .npy orthonormal PCA basis and eigenvalues, JSON landmarks).
+ *  generic_neutral_mesh.obj, identity000.obj ..., vertex_indices.json), or a converted one (PLY mean, .npy
+ *  orthonormal PCA basis and eigenvalues, JSON landmarks).
  *  The data is in centimetres; it is converted to millimetres on import (coordinates x10, variances x100).
  */
 #include <morphreg/model/morphable_model.h>
