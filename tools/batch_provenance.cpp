@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "batch_provenance.h"
-#include "file_fingerprint.h"
+#include <morphreg/io/file_fingerprint.h>
 
 #include <morphreg/common/error.h>
 

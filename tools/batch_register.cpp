@@ -6,7 +6,7 @@
 #include "batch_provenance.h"
 #include "batch_summary.h"
 #include "batch_test_hold.h"
-#include "output_lock.h"
+#include <morphreg/io/output_lock.h>
 #include "pipeline.h"
 #include "progress.h"
 #include "provenance.h"

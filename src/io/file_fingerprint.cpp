@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "file_fingerprint.h"
+#include <morphreg/io/file_fingerprint.h>
 
 #include <morphreg/common/error.h>
 
@@ -8,8 +8,6 @@
 #include <vector>
 
 namespace morphreg
-{
-namespace tools
 {
 void
 Fnv1a64::add (const char* bytes, std::size_t count)
@@ -51,5 +49,4 @@ hashFile (const std::string& path)
     throw IoError (path + ": cannot be read to its end");
   return hash.hex ();
 }
-} // namespace tools
 } // namespace morphreg

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "output_lock.h"
+#include <morphreg/io/output_lock.h>
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
@@ -20,8 +20,6 @@
 #include <unistd.h>
 
 namespace morphreg
-{
-namespace tools
 {
 namespace
 {
@@ -234,5 +232,4 @@ releaseOutputLockNow ()
     ::unlink (held_lock);
   held_lock[0] = '\0';
 }
-} // namespace tools
 } // namespace morphreg
