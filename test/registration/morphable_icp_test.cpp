@@ -9,8 +9,8 @@
 #include <morphreg/common/error.h>
 #include <morphreg/model/coefficient_units.h>
 #include <morphreg/model/model_builder.h>
-#include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/fit_plausibility.h>
+#include <morphreg/registration/morphable_icp.h>
 #include <morphreg/synthetic/head_generator.h>
 
 #include <pcl/registration/correspondence_rejection_distance.h>
@@ -80,6 +80,10 @@ protected:
   {
     Icp icp;
     icp.setModel (*model_);
+    // The suite's figures were measured at these settings, the class's defaults until they became the command line's.
+    icp.setComponentSelection ((*model_)->firstComponents (10));
+    icp.setMaximumIterations (50);
+    icp.setSimilarityIterations (20);
     icp.setPointToPlane (true);
     icp.setGraduatedRobustLoss (true); // the protocol's scans cover the head up to their holes
     return icp;
@@ -130,7 +134,7 @@ TEST_F (MorphableIcpTest, HeadsWithinTheModelFitFromLandmarkAndCoarseStarts)
       Icp icp = makeIcp ();
       icp.setComponentSelection (selection);
       if (landmark_start)
-        icp.setTargetLandmarks (scan.landmarks);
+        icp.setTargetLandmarks (scan.landmarks, 1.0);
       const double rms = fit (icp, scan);
       const auto& report = icp.getRegistrationReport ();
       std::printf ("[ within-model ] head %d %s start: RMS %.3f mm, %d+%d iterations, %s\n", head,
@@ -170,7 +174,7 @@ TEST_F (MorphableIcpTest, UnseenHeadsFitCloseToTheirModelFloor)
     const double floor = pose_scale * model.project (unseen.mesh, selection).rms_error;
     Icp icp = makeIcp ();
     icp.setComponentSelection (selection);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     const double rms = fit (icp, scan);
     std::printf ("[ unseen ] head %d: RMS %.3f mm (floor %.3f mm), %zu iterations, divergence %d\n", head, rms, floor,
                  icp.getRegistrationReport ().history.size (),
@@ -228,7 +232,7 @@ TEST_F (MorphableIcpTest, CoarseToFineScheduleFitsAndIsValidated)
   const auto scan = withinModelScan (model, selection, 13, 500);
   Icp icp = makeIcp ();
   icp.setComponentSelection (selection);
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   icp.setShapeSchedule ({{model.firstComponents (2), 1.0}, {model.firstComponents (5), 1.0}, {selection, 0.1}});
   const double rms = fit (icp, scan);
   const auto& report = icp.getRegistrationReport ();
@@ -256,7 +260,7 @@ TEST_F (MorphableIcpTest, PhasePriorWeightReplacesTheRegistrationsAndIsValidated
   for (const double last_prior : {0.5, 1e6}) {
     Icp icp = makeIcp ();
     icp.setComponentSelection (selection);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     icp.setShapeSchedule ({{model.firstComponents (5), 0.1, 3.0}, {selection, 0.1, last_prior}});
     rms[last_prior] = fit (icp, scan);
     coefficient_norm[last_prior] = icp.getShapeCoefficientsMm ().norm ();
@@ -310,7 +314,7 @@ TEST_F (MorphableIcpTest, IterationBudgetEndingBeforeAPhaseLeavesAConsistentFit)
   const auto scan = withinModelScan (model, selection, 13, 500);
   Icp icp = makeIcp ();
   icp.setComponentSelection (selection);
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   icp.setShapeSchedule ({{model.firstComponents (2), 1.0}, {model.firstComponents (5), 1.0}, {selection, 0.1}});
   icp.setMaximumIterations (3); // one similarity and two shape iterations: the last phase gets none
   const double rms = fit (icp, scan);
@@ -344,6 +348,9 @@ TEST_F (MorphableIcpTest, FrozenShapeAgreesWithPclIcpOnRigidData)
 
   Icp icp;
   icp.setModel (*model_);
+  icp.setComponentSelection ((*model_)->firstComponents (10));
+  icp.setSimilarityIterations (20);
+  icp.setPointToPlane (false); // vertex-to-vertex, as PCL's ICP
   icp.setShapePriorWeight (1e8);
   icp.setEstimateScale (false);
   icp.setRejectTargetBoundary (false);
@@ -373,7 +380,7 @@ TEST_F (MorphableIcpTest, BoundaryRejectionIsTheDefaultChainAndAUsersChainReplac
                         const std::vector<pcl::registration::CorrespondenceRejector::Ptr>& chain) {
     Icp icp = makeIcp ();
     icp.setMaximumIterations (1);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     icp.setRejectTargetBoundary (reject_boundary);
     icp.setRejectIncompatibleNormals (false); // the boundary alone; the normal rejector has its own test below
     for (const auto& rejector : chain)
@@ -399,7 +406,7 @@ TEST_F (MorphableIcpTest, NormalCompatibilityIsInTheDefaultChainAndAUsersChainRe
   auto firstKept = [&] (bool reject_normals, bool chain_of_getters) {
     Icp icp = makeIcp ();
     icp.setMaximumIterations (1);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     icp.setRejectIncompatibleNormals (reject_normals, 20.0);
     if (chain_of_getters) {
       icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
@@ -424,7 +431,7 @@ TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
                                   std::vector<std::pair<pcl::Indices, pcl::Indices>>* calls) {
     Icp icp = makeIcp ();
     icp.setMaximumIterations (2);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     if (rejector) { // a chain replaces the default one: keep the default's two rejectors in front
       icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
       icp.addCorrespondenceRejector (icp.getNormalCompatibilityRejector ());
@@ -479,7 +486,7 @@ TEST_F (MorphableIcpTest, EveryRejectorIsHonouredInOrder)
   trimmed_again->setOverlapRatio (0.5f);
   Icp icp = makeIcp ();
   icp.setMaximumIterations (1);
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ());
   icp.addCorrespondenceRejector (icp.getNormalCompatibilityRejector ());
   icp.addCorrespondenceRejector (trimmed);
@@ -495,7 +502,7 @@ TEST_F (MorphableIcpTest, DistanceRejectorKeepsOnlyCloseCorrespondences)
   const auto scan =
       morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 1).mesh, startLandmarks (**model_), 301);
   Icp icp = makeIcp ();
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   icp.setMaximumIterations (4);
   auto distance = std::make_shared<pcl::registration::CorrespondenceRejectorDistance> ();
   distance->setMaximumDistance (3.0f);
@@ -529,7 +536,7 @@ TEST_F (MorphableIcpTest, BaseSettersChangeBehaviourAsInPcl)
   const auto scan =
       morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 2).mesh, startLandmarks (**model_), 302);
   Icp icp = makeIcp ();
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   icp.setShapeStage (false);
   icp.setMaximumIterations (3);
   icp.setInputTarget (scan.cloud);
@@ -561,7 +568,8 @@ TEST_F (MorphableIcpTest, BaseSettersChangeBehaviourAsInPcl)
   EXPECT_LE (report.fitness_median, report.fitness_rms + 1e-9);
   std::printf ("[ report ] fitness RMS %.3f mm, median %.3f mm\n", report.fitness_rms, report.fitness_median);
   EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, report.fitness_rms, 2.1)
-      << "1 mm noise per axis and outliers near the surface (measured 1.767 mm)";
+      << "1 mm noise per axis and outliers near the surface (measured 1.638 mm to the nearest scan points; 1.767 mm "
+         "to the smoothed points, the report's distances before it took PCL's fitness score's)";
   int with_residual = 0;
   for (Eigen::Index i = 0; i < icp.getVertexResiduals ().size (); ++i)
     with_residual += std::isfinite (icp.getVertexResiduals ()[i]) ? 1 : 0;
@@ -592,7 +600,7 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
   for (const auto loss : {morphreg::RobustLoss::huber, morphreg::RobustLoss::tukey}) {
     Icp icp = makeIcp ();
     icp.setComponentSelection (selection);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     icp.setRobustLoss (loss);
     const double rms = fit (icp, scan);
     std::printf ("[ robust ] %s: RMS %.3f mm\n", loss == morphreg::RobustLoss::huber ? "huber" : "tukey", rms);
@@ -602,7 +610,7 @@ TEST_F (MorphableIcpTest, HuberTukeyAndPointToPointFit)
   Icp icp = makeIcp ();
   icp.setPointToPlane (false);
   icp.setComponentSelection (selection);
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   const double rms = fit (icp, scan);
   std::printf ("[ point-to-point ] RMS %.3f mm after %zu iterations\n", rms,
                icp.getRegistrationReport ().history.size ());
@@ -619,7 +627,7 @@ TEST_F (MorphableIcpTest, NormalShootingCorrespondenceEstimationFits)
   for (const bool shooting : {false, true}) {
     Icp icp = makeIcp ();
     icp.setComponentSelection (selection);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     if (shooting) // the model's vertex normals go to it each iteration
       icp.setCorrespondenceEstimation (
           pcl::make_shared<pcl::registration::CorrespondenceEstimationNormalShooting<pcl::PointNormal, pcl::PointNormal,
@@ -643,7 +651,7 @@ TEST_F (MorphableIcpTest, AreaWeightingFitsAndChangesTheWeights)
   for (const bool weighted : {false, true}) {
     Icp icp = makeIcp ();
     icp.setComponentSelection (selection);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     icp.setAreaWeighting (weighted);
     rms[weighted] = fit (icp, scan);
     coefficients[weighted] = icp.getShapeCoefficients ();
@@ -659,7 +667,7 @@ TEST_F (MorphableIcpTest, DivergenceGuardRevertsAndReports)
   const auto scan =
       morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 3).mesh, startLandmarks (**model_), 303);
   Icp icp = makeIcp ();
-  icp.setTargetLandmarks (scan.landmarks);
+  icp.setTargetLandmarks (scan.landmarks, 1.0);
   icp.setShapePriorWeight (0.0);
   icp.setSmoothnessWeight (0.0);
   icp.setDivergenceGuard (1e-3);
@@ -688,8 +696,10 @@ TEST_F (MorphableIcpTest, BadInputIsReported)
   {
     Icp icp = makeIcp ();
     EXPECT_THROW (icp.align (output), morphreg::InvalidInputError) << "no target";
-    icp.setInputTarget (pcl::PointCloud<pcl::PointNormal>::Ptr (new pcl::PointCloud<pcl::PointNormal>));
-    EXPECT_THROW (icp.align (output), morphreg::InvalidInputError) << "empty target";
+    EXPECT_THROW (icp.setInputTarget (pcl::PointCloud<pcl::PointNormal>::Ptr (new pcl::PointCloud<pcl::PointNormal>)),
+                  morphreg::InvalidInputError)
+        << "empty target";
+    EXPECT_THROW (icp.setInputTarget (nullptr), morphreg::InvalidInputError) << "null target";
   }
   {
     pcl::PointCloud<pcl::PointNormal>::Ptr nan_cloud (new pcl::PointCloud<pcl::PointNormal> (*scan.cloud));
@@ -708,7 +718,7 @@ TEST_F (MorphableIcpTest, BadInputIsReported)
   {
     Icp icp = makeIcp ();
     icp.setInputTarget (scan.cloud);
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
     icp.setMaxCorrespondenceDistance (1e-3);
     EXPECT_THROW (icp.align (output), morphreg::TooFewCorrespondencesError) << "fewer correspondences than unknowns";
   }
