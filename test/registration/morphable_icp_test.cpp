@@ -11,6 +11,8 @@
 #include <morphreg/model/model_builder.h>
 #include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/registration_settings.h>
+#include <morphreg/registration/scan_units.h>
 #include <morphreg/synthetic/head_generator.h>
 
 #include <pcl/registration/correspondence_rejection_distance.h>
@@ -21,6 +23,8 @@
 #include <pcl/registration/correspondence_rejection_var_trimmed.h>
 #include <pcl/registration/correspondence_estimation_normal_shooting.h>
 #include <pcl/registration/icp.h>
+#include <pcl/registration/transformation_estimation_svd.h>
+#include <pcl/search/kdtree.h>
 
 #include <gtest/gtest.h>
 
@@ -28,7 +32,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <functional>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace
@@ -36,6 +42,7 @@ namespace
 using morphreg::MorphableICP;
 using morphreg::MorphableModel;
 using Icp = MorphableICP<pcl::PointNormal>;
+using PclRegistration = pcl::Registration<pcl::PointNormal, pcl::PointNormal, float>;
 
 constexpr int kTrainingHeads = 200;
 constexpr int kTestHeads = 20;
@@ -680,6 +687,151 @@ TEST_F (MorphableIcpTest, DivergenceGuardRevertsAndReports)
   std::printf ("[ divergence ] the best state's RMS %.3f mm after %zu iterations\n", rms, report.history.size ());
   EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, rms, 9.0)
       << "the best state (the similarity fit, measured 7.188 mm) is returned";
+}
+
+TEST_F (MorphableIcpTest, AlignAndFitnessScoreThroughAPclRegistrationPointerAreTheClasss)
+{
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 5).mesh, startLandmarks (**model_), 305);
+  Icp direct = makeIcp ();
+  direct.setInputTarget (scan.cloud);
+  pcl::PointCloud<pcl::PointNormal> direct_output;
+  direct.align (direct_output);
+  const double direct_score = direct.getFitnessScore ();
+
+  auto icp = std::make_shared<Icp> (makeIcp ());
+  const PclRegistration::Ptr base = icp;
+  base->setInputTarget (scan.cloud);
+  pcl::PointCloud<pcl::PointNormal> base_output;
+  base->align (base_output);
+  const double rms = icp->getRegistrationReport ().fitness_rms;
+  std::printf ("[ base pointer ] RMS %.4f mm; fitness score %.4f mm^2 (class), %.4f mm^2 (base), RMS^2 %.4f\n", rms,
+               direct_score, base->getFitnessScore (), rms * rms);
+  EXPECT_EQ (icp->getRegistrationReport ().history.size (), direct.getRegistrationReport ().history.size ());
+  EXPECT_TRUE (base->getFinalTransformation ().isApprox (direct.getFinalTransformation (), 1e-6f));
+  ASSERT_EQ (base_output.size (), direct_output.size ());
+  EXPECT_LT ((icp->getFittedVertices () - direct.getFittedVertices ()).cwiseAbs ().maxCoeff (), 1e-6);
+  // PCL's fitness score, a mean squared distance (mm^2), is the report's RMS squared on either path.
+  EXPECT_NEAR (base->getFitnessScore (), rms * rms, 1e-4 * rms * rms);
+  EXPECT_NEAR (direct_score, direct.getRegistrationReport ().fitness_rms * direct.getRegistrationReport ().fitness_rms,
+               1e-4 * direct_score);
+  EXPECT_EQ (icp->getInputSource ()->size (), static_cast<size_t> (icp->getRegistrationReport ().correspondences));
+  // PCL's max_range still leaves out the vertices farther from the scan.
+  EXPECT_LT (base->getFitnessScore (1.0), rms * rms);
+}
+
+TEST_F (MorphableIcpTest, PclSettersItWouldIgnoreAreRefusedByName)
+{
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 6).mesh, startLandmarks (**model_), 306);
+  const std::vector<std::pair<std::string, std::function<void (PclRegistration&)>>> setters{
+      {"setTransformationEstimation",
+       [] (PclRegistration& r) {
+         r.setTransformationEstimation (
+             std::make_shared<pcl::registration::TransformationEstimationSVD<pcl::PointNormal, pcl::PointNormal>> ());
+       }},
+      {"setRANSACIterations", [] (PclRegistration& r) { r.setRANSACIterations (10); }},
+      {"setRANSACOutlierRejectionThreshold", [] (PclRegistration& r) { r.setRANSACOutlierRejectionThreshold (1.0); }},
+      {"setTransformationRotationEpsilon", [] (PclRegistration& r) { r.setTransformationRotationEpsilon (0.999); }},
+      {"setSearchMethodSource",
+       [] (PclRegistration& r) {
+         r.setSearchMethodSource (std::make_shared<pcl::search::KdTree<pcl::PointNormal>> ());
+       }},
+      {"setIndices", [] (PclRegistration& r) {
+         r.setIndices (std::make_shared<pcl::Indices> (pcl::Indices{0, 1, 2, 3}));
+       }}};
+  for (const auto& [name, set] : setters)
+    for (const bool through_base : {true, false}) {
+      auto icp = std::make_shared<Icp> (makeIcp ());
+      icp->setInputTarget (scan.cloud);
+      const PclRegistration::Ptr base = icp;
+      set (*base);
+      pcl::PointCloud<pcl::PointNormal> output;
+      try {
+        through_base ? base->align (output) : icp->align (output);
+        ADD_FAILURE () << name << " was accepted and ignored";
+      }
+      catch (const morphreg::InvalidInputError& e) {
+        EXPECT_NE (std::string (e.what ()).find (name), std::string::npos) << e.what ();
+      }
+    }
+  // The source is the model's: setInputSource says to use setModel, through the class or a base pointer.
+  Icp icp = makeIcp ();
+  PclRegistration& base = icp;
+  const auto says_set_model = [] (const std::function<void ()>& call) {
+    try {
+      call ();
+      ADD_FAILURE () << "setInputSource was accepted";
+    }
+    catch (const morphreg::InvalidInputError& e) {
+      EXPECT_NE (std::string (e.what ()).find ("setModel"), std::string::npos) << e.what ();
+    }
+  };
+  says_set_model ([&] () { icp.setInputSource (scan.cloud); });
+  says_set_model ([&] () { base.setInputSource (scan.cloud); });
+}
+
+TEST_F (MorphableIcpTest, TargetsNotInMillimetresAreRefusedWithTheirUnit)
+{
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 7).mesh, startLandmarks (**model_), 307);
+  for (const auto& [unit, scale] :
+       {std::make_pair (std::string ("m"), 1e-3), std::make_pair (std::string ("cm"), 0.1)}) {
+    pcl::PointCloud<pcl::PointNormal>::Ptr scaled (new pcl::PointCloud<pcl::PointNormal> (*scan.cloud));
+    for (auto& point : *scaled)
+      point.getVector3fMap () *= static_cast<float> (scale);
+    for (const bool through_base : {true, false}) {
+      auto icp = std::make_shared<Icp> (makeIcp ());
+      icp->setInputTarget (scaled);
+      const PclRegistration::Ptr base = icp;
+      pcl::PointCloud<pcl::PointNormal> output;
+      try {
+        through_base ? base->align (output) : icp->align (output);
+        ADD_FAILURE () << "a scan in " << unit << " was fitted as mm";
+      }
+      catch (const morphreg::InvalidInputError& e) {
+        const std::string message = e.what ();
+        EXPECT_NE (message.find ("seems to be in " + unit + ","), std::string::npos) << message;
+        EXPECT_NE (message.find ("convertScanToMillimetres"), std::string::npos) << message;
+      }
+    }
+    // Converted as the message says, it fits.
+    EXPECT_EQ (morphreg::convertScanToMillimetres (*scaled, "auto", **model_, "scan").unit,
+               morphreg::parseLengthUnit (unit));
+    Icp icp = makeIcp ();
+    icp.setMaximumIterations (3);
+    icp.setInputTarget (scaled);
+    pcl::PointCloud<pcl::PointNormal> output;
+    EXPECT_NO_THROW (icp.align (output)) << unit;
+  }
+}
+
+TEST_F (MorphableIcpTest, DefaultsAreTheCommandLines)
+{
+  // A PCL-tutorial program (the model, the target, align) against the command line's configuration.
+  const auto scan =
+      morphreg::test::simulateProtocolScan (generator_->sample (kUnseenSeed + 8).mesh, startLandmarks (**model_), 308);
+  Icp tutorial;
+  tutorial.setModel (*model_);
+  tutorial.setInputTarget (scan.cloud);
+  pcl::PointCloud<pcl::PointNormal> output;
+  tutorial.align (output);
+  Icp cli;
+  morphreg::configureRegistration (cli, morphreg::RegistrationSettings (), *model_);
+  cli.setInputTarget (scan.cloud);
+  cli.align (output);
+  const morphreg::RegistrationSettings settings;
+  EXPECT_EQ (tutorial.getMaximumIterations (), settings.iterations);
+  EXPECT_EQ (tutorial.getComponentSelection ().total (), cli.getComponentSelection ().total ());
+  const double tutorial_rms = tutorial.getRegistrationReport ().fitness_rms;
+  const double cli_rms = cli.getRegistrationReport ().fitness_rms;
+  const double truth_rms = morphreg::test::vertexRms (tutorial.getFittedVertices (), scan.truth);
+  std::printf ("[ defaults ] tutorial program: RMS %.4f mm (vertex error %.3f mm), %zu iterations; command line's "
+               "configuration: RMS %.4f mm, %zu iterations\n",
+               tutorial_rms, truth_rms, tutorial.getRegistrationReport ().history.size (), cli_rms,
+               cli.getRegistrationReport ().history.size ());
+  EXPECT_NEAR (tutorial_rms, cli_rms, 0.01 * cli_rms);
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, truth_rms, 1.2) << "an unseen head (measured 0.977 mm)";
 }
 
 TEST_F (MorphableIcpTest, BadInputIsReported)
