@@ -68,7 +68,8 @@ namespace detail
 template <typename PointTarget, typename Scalar>
 struct MorphableIcpScalar
 {
-  static constexpr bool point_ok = pcl::traits::has_xyz_v<PointTarget>;
+  static constexpr bool point_ok = pcl::traits::has_xyz_v<PointTarget>; ///< whether PointTarget has x, y, z
+  /** whether Scalar is float or double */
   static constexpr bool scalar_ok = std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>;
   static_assert (point_ok, "MorphableICP<PointTarget, Scalar>: PointTarget, the scan's point type, must have x, y, z "
                            "(e.g. pcl::PointNormal or pcl::PointXYZ)");
