@@ -23,6 +23,7 @@
 #include <pcl/registration/correspondence_rejection_var_trimmed.h>
 #include <pcl/registration/correspondence_estimation_normal_shooting.h>
 #include <pcl/registration/icp.h>
+#include <pcl/point_representation.h>
 #include <pcl/registration/transformation_estimation_svd.h>
 #include <pcl/search/kdtree.h>
 
@@ -737,8 +738,12 @@ TEST_F (MorphableIcpTest, PclSettersItWouldIgnoreAreRefusedByName)
        [] (PclRegistration& r) {
          r.setSearchMethodSource (std::make_shared<pcl::search::KdTree<pcl::PointNormal>> ());
        }},
-      {"setIndices", [] (PclRegistration& r) {
+      {"setIndices",
+       [] (PclRegistration& r) {
          r.setIndices (std::make_shared<pcl::Indices> (pcl::Indices{0, 1, 2, 3}));
+       }},
+      {"setPointRepresentation", [] (PclRegistration& r) {
+         r.setPointRepresentation (std::make_shared<pcl::CustomPointRepresentation<pcl::PointNormal>> (6));
        }}};
   for (const auto& [name, set] : setters)
     for (const bool through_base : {true, false}) {

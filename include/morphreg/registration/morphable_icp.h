@@ -100,11 +100,12 @@ struct MorphableIcpScalar
  *  setCorrespondenceEstimation (default CachedCorrespondenceEstimation: PCL's nearest-neighbour correspondences with
  *  parallel, mostly cached queries, on the Registration's k-d tree, built once per target; estimations that need
  *  source normals, such as CorrespondenceEstimationNormalShooting, get the model's vertex normals),
- *  setSearchMethodTarget, setPointRepresentation and registerVisualizationCallback (called each iteration with the
- *  deformed model in the target frame and the accepted correspondences). The pcl::Registration settings this class
- *  has no use for are refused, not ignored: align() throws InvalidInputError naming the setter after
- *  setTransformationEstimation (pose and shape come from one Gauss-Newton step), setRANSACIterations,
- *  setRANSACOutlierRejectionThreshold, setTransformationRotationEpsilon, setSearchMethodSource or setIndices.
+ *  setSearchMethodTarget and registerVisualizationCallback (called each iteration with the deformed model in the
+ *  target frame and the accepted correspondences). The pcl::Registration settings this class has no use for are
+ *  refused, not ignored: align() throws InvalidInputError naming the setter after setTransformationEstimation (pose
+ *  and shape come from one Gauss-Newton step), setRANSACIterations, setRANSACOutlierRejectionThreshold,
+ *  setTransformationRotationEpsilon, setSearchMethodSource, setIndices or setPointRepresentation (the distances are
+ *  in x, y, z).
  *
  *  The target must be in mm: a target whose size says it is in another unit (guessLengthUnit against the model:
  *  cm, m or inches) is refused with an InvalidInputError that names the unit; convert it first, e.g. with

@@ -16,6 +16,7 @@
 
 #include <pcl/common/transforms.h>
 #include <pcl/conversions.h>
+#include <pcl/point_representation.h>
 #include <pcl/registration/correspondence_estimation.h>
 
 #include <Eigen/Geometry>
@@ -292,6 +293,10 @@ MorphableICP<PointTarget, Scalar>::requireNoUnusedSettings () const
     refuse ("setSearchMethodSource", "the source moves with the shape every iteration; no source tree is searched");
   if (!this->fake_indices_)
     refuse ("setIndices", "every model vertex takes part in the fit");
+  // pcl::Registration::align hands a point representation to the target's k-d tree; the fit's distances are in x, y, z.
+  const auto representation = this->tree_->getPointRepresentation ();
+  if (representation && !dynamic_cast<const pcl::DefaultPointRepresentation<PointTarget>*> (representation.get ()))
+    refuse ("setPointRepresentation", "its correspondences, rejectors and residuals measure distances in x, y, z");
 }
 
 template <typename PointTarget, typename Scalar>
