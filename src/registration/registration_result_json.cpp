@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/distance_statistics.h>
-#include <morphreg/common/length_unit.h>
 #include <morphreg/model/coefficient_units.h>
 #include <morphreg/registration/registration_result_json.h>
 
@@ -41,7 +40,8 @@ coefficientsJson (const MorphableModel& model, const ComponentSelection& selecti
   return coefficients;
 }
 
-/** Residual statistics: scan to model over the correspondences, and per model vertex. */
+/** Residual statistics: scan to model over the correspondences (with PCL's fitness score, the mean squared distance
+ *  that getFitnessScore() returns), and per model vertex. */
 nlohmann::json
 residualsJson (const IcpReport& report, const Eigen::VectorXd& vertex_residuals)
 {
@@ -49,7 +49,8 @@ residualsJson (const IcpReport& report, const Eigen::VectorXd& vertex_residuals)
            {{"correspondences", report.correspondences},
             {"mean", report.fitness_mean},
             {"median", report.fitness_median},
-            {"rms", report.fitness_rms}}},
+            {"rms", report.fitness_rms},
+            {"fitness_score_mm2", report.fitness_rms * report.fitness_rms}}},
           {"per_vertex", distanceStatistics (vertex_residuals)}};
 }
 } // namespace
@@ -57,15 +58,10 @@ residualsJson (const IcpReport& report, const Eigen::VectorXd& vertex_residuals)
 FitMeasures
 measureRegistration (MorphableICP<pcl::PointNormal>& icp, const MorphableModel& model)
 {
-  const IcpReport& report = icp.getRegistrationReport ();
-  const double to_mm = millimetresPer (parseLengthUnit (report.target_unit));
-  Eigen::Matrix4d similarity = icp.getFinalTransformation ().cast<double> ();
-  similarity.topRows<3> () *= to_mm;
-  const Eigen::Matrix3Xd scan =
-      icp.getInputTarget () ? Eigen::Matrix3Xd (to_mm * pointsOf (*icp.getInputTarget ())) : Eigen::Matrix3Xd ();
+  const Eigen::Matrix4d similarity = icp.getFinalTransformation ().cast<double> ();
   return measureFit (model, icp.getComponentSelection (), icp.getShapeCoefficientsMm (), similarity,
-                     to_mm * icp.getFittedVertices (), icp.getVertexResiduals (), scan, report,
-                     FitPlausibilitySettings ().leading_components);
+                     icp.getFittedVertices (), icp.getVertexResiduals (), pointsOf (*icp.getInputTarget ()),
+                     icp.getRegistrationReport (), FitPlausibilitySettings ().leading_components);
 }
 
 FitPlausibility

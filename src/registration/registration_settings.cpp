@@ -100,7 +100,6 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
   icp.setAreaWeighting (settings.area_weighting);
   icp.setRobustKernel (makeRobustKernel (settings.loss, settings.loss_scale));
   icp.setTargetSmoothing (parseTargetSmoothing (settings.target_smoothing));
-  icp.setTargetUnit (LengthUnit::millimetre);
   addRejectors (icp, settings);
 }
 

@@ -26,7 +26,8 @@ requireHeadScale (const LengthUnitGuess& unit, const std::string& scan_name)
   throw InvalidInputError (message.str ());
 }
 
-/** The RMS distance of the model mean's vertices from their centroid (mm). */
+} // namespace
+
 double
 modelRadius (const MorphableModel& model)
 {
@@ -34,7 +35,6 @@ modelRadius (const MorphableModel& model)
   const Eigen::Vector3d centroid = mean.rowwise ().mean ();
   return std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
 }
-} // namespace
 
 LengthUnitGuess
 scanUnit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units, const MorphableModel& model,

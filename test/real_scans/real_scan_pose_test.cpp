@@ -8,6 +8,7 @@
 
 #include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/registration/registration_result_json.h>
+#include <morphreg/registration/scan_units.h>
 
 #include <gtest/gtest.h>
 
@@ -71,23 +72,26 @@ struct WorstScores
   }
 };
 
-/** Registers \a cloud under \a pose, written in a unit \a unit_scale times the mm (the unit left to MorphableICP's
- *  guess), and scores the fit in the scan's original frame. */
+/** Registers \a cloud under \a pose, written in a unit \a unit_scale times the mm (brought to mm by
+ *  convertScanToMillimetres' guess, as `morphreg register` does), and scores the fit in the scan's original frame. */
 PoseRun
 runPose (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Matrix4d& pose, const char* name, int k,
          double unit_scale = 1.0)
 {
   Icp icp;
   configureIctIcp (icp, ictModel30 ());
-  icp.setInputTarget (posed (cloud, pose, unit_scale));
+  const auto target = posed (cloud, pose, unit_scale);
+  const morphreg::LengthUnitGuess unit = morphreg::convertScanToMillimetres (*target, "auto", *ictModel30 (), name);
+  const double fit_scale = unit_scale * unit.scale_to_mm; // the fit's frame over the mm of the posed scan
+  icp.setInputTarget (target);
   pcl::PointCloud<pcl::PointNormal> output;
   const auto start = std::chrono::steady_clock::now ();
   icp.align (output);
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   const auto& report = icp.getRegistrationReport ();
-  const FaceScore face = faceScore (fitInScanFrame (icp, pose, unit_scale));
-  const FaceScore mean_head = faceScore (meanInScanFrame (icp, pose, unit_scale));
-  // register's checks, on the fit in mm whatever the scan's unit
+  const FaceScore face = faceScore (fitInScanFrame (icp, pose, fit_scale));
+  const FaceScore mean_head = faceScore (meanInScanFrame (icp, pose, fit_scale));
+  // register's checks, on the fit in mm
   const morphreg::FitPlausibility checks = morphreg::checkRegistration (icp, *icp.getModel ());
   for (const std::string& failure : checks.failures)
     ADD_FAILURE () << name << " pose " << k << ": " << failure;
@@ -96,11 +100,11 @@ runPose (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Matrix4d& 
       "head; face median %.3f mm, 75th percentile %.3f mm, 95th %.3f mm over %zu samples, landmarks within %.2f "
       "mm; the mean head %.3f mm\n",
       name, k, morphreg::toString (report.termination).c_str (), report.history.size (), seconds,
-      report.target_unit.c_str (), report.initialisation_confidence, report.head_points, face.face.median,
+      morphreg::toString (unit.unit).c_str (), report.initialisation_confidence, report.head_points, face.face.median,
       face.percentile75, face.face.percentile95, face.face.distances.size (), face.landmark_error,
       mean_head.face.median);
   expectFaceScore (face, std::string (name) + " pose " + std::to_string (k));
-  return {face, mean_head, seconds, icp.hasConverged (), report.target_unit};
+  return {face, mean_head, seconds, icp.hasConverged (), morphreg::toString (unit.unit)};
 }
 
 TEST (RealScanPoseTest, Cloud82kFromRandomPoses)

@@ -128,6 +128,8 @@ TEST (ClutterTest, EveryHeadOfTwentyFitsThroughShouldersChairAndHair)
     const ClutteredScan scan = clutteredScan (truth, 700 + head);
     Icp icp;
     icp.setModel (model);
+    icp.setMaximumIterations (50);
+    icp.setSimilarityIterations (20);
     icp.setPointToPlane (true);
     icp.setInputTarget (scan.cloud);
     pcl::PointCloud<pcl::PointNormal> output;

@@ -74,9 +74,10 @@ fitScan (const morphreg::test::ProtocolScan& scan, bool landmark_start)
   icp.setComponentSelection (model.firstComponents (kFittedComponents));
   icp.setPointToPlane (true);
   icp.setMaximumIterations (50);
+  icp.setSimilarityIterations (20);
   icp.setShapePriorWeight (kShapePrior);
   if (landmark_start)
-    icp.setTargetLandmarks (scan.landmarks);
+    icp.setTargetLandmarks (scan.landmarks, 1.0);
   else
     icp.setInitialisation (morphreg::IcpInitialisation::coarse);
   icp.setInputTarget (scan.cloud);

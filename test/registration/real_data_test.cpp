@@ -77,6 +77,8 @@ registerIct (const pcl::PointCloud<pcl::PointNormal>::Ptr& target, const morphre
   Icp icp;
   icp.setModel (model);
   icp.setComponentSelection (model->firstComponents (kFittedComponents));
+  icp.setMaximumIterations (50);
+  icp.setSimilarityIterations (20);
   icp.setPointToPlane (true, 0.1);
   icp.setShapePriorWeight (1.5);
   icp.setAreaWeighting (true);

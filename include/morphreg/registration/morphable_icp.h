@@ -5,7 +5,6 @@
  *  MorphableModel by a similarity [sR | t] and the model's shape coefficients, as a pcl::Registration.
  */
 #include <morphreg/common/landmarks.h>
-#include <morphreg/common/length_unit.h>
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/registration/correspondence_rejection_normal_compatibility.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
@@ -23,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace morphreg
@@ -48,6 +48,39 @@ enum class IcpInitialisation
   global     ///< alignHeadGlobally: any rotation, scans with shoulders and clutter (see global_alignment.h)
 };
 
+/** \brief MorphableICP's defaults, which are also the command line's (RegistrationSettings{} and `morphreg register`
+ *  start from them), so that a program that only sets the model and the target fits as the command line does. */
+struct MorphableIcpDefaults
+{
+  static constexpr int iterations = 100;            ///< setMaximumIterations: both stages together
+  static constexpr int similarity_iterations = 60;  ///< setSimilarityIterations
+  static constexpr int components_per_region = 60;  ///< setModel selects every component up to this many per region
+  static constexpr bool point_to_plane = true;      ///< setPointToPlane
+  static constexpr double tangential_weight = 0.02; ///< setPointToPlane's tangential weight
+  static constexpr double shape_prior = 3.0;        ///< setShapePriorWeight's lambda_2
+  static constexpr double landmark_weight = 0.0;    ///< setTargetLandmarks: landmarks only place the start
+};
+
+namespace detail
+{
+/** \brief The Scalar of MorphableICP<PointTarget, Scalar>, checked: a wrong argument fails here with a plain message
+ *  instead of deep inside pcl::Registration (and the base is then built with float, so that no more errors
+ *  follow). */
+template <typename PointTarget, typename Scalar>
+struct MorphableIcpScalar
+{
+  static constexpr bool point_ok = pcl::traits::has_xyz_v<PointTarget>; ///< whether PointTarget has x, y, z
+  /** whether Scalar is float or double */
+  static constexpr bool scalar_ok = std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>;
+  static_assert (point_ok, "MorphableICP<PointTarget, Scalar>: PointTarget, the scan's point type, must have x, y, z "
+                           "(e.g. pcl::PointNormal or pcl::PointXYZ)");
+  static_assert (scalar_ok, "MorphableICP<PointTarget, Scalar>: the second template argument is the scalar (float or "
+                            "double), not a point type: the source is the model (setModel), so write "
+                            "MorphableICP<pcl::PointNormal> or MorphableICP<pcl::PointXYZ>");
+  using type = std::conditional_t<scalar_ok, Scalar, float>; ///< Scalar, or float after a failed check
+};
+} // namespace detail
+
 /** \brief ICP with shape parameters: fits s R (mu_i + M_i m) + t to a target cloud by Gauss-Newton over
  *  (log s, rotation as an exponential-map update, t, m), first similarity-only to convergence, then with shape in
  *  the phases of setShapeSchedule (default: two phases with lambda_1 = 0.1). One update moves no shape coefficient
@@ -55,18 +88,29 @@ enum class IcpInitialisation
  *  a coefficient update that reverses the previous one is halved (the correspondences of a region over a scan hole
  *  can otherwise flip between two sets, and the shape between two states, until the iterations run out).
  *
- *  It is a pcl::Registration whose source is the model instance (as PointTarget points: PCL 1.13's
- *  Registration and CorrespondenceEstimation do not compile for different source and target point types), so the base settings work as for
- *  pcl::IterativeClosestPoint: setMaximumIterations (total over both stages; default 50),
- *  setMaxCorrespondenceDistance, setTransformationEpsilon (here: mean squared vertex motion of one update,
- *  mm^2; 0 means 1e-4), setEuclideanFitnessEpsilon (absolute change of the cost per row between iterations, mm^2),
- *  addCorrespondenceRejector (every rejector, in order, each iteration; a chain added replaces the default chain,
- *  which is getTargetBoundaryRejector when setRejectTargetBoundary is on), setCorrespondenceEstimation (default
- *  CachedCorrespondenceEstimation: PCL's nearest-neighbour correspondences with parallel, mostly cached queries, on
- *  the Registration's k-d tree, built once per target; estimations that need source normals, such as
- *  CorrespondenceEstimationNormalShooting, get the model's vertex normals) and
- *  registerVisualizationCallback (called each iteration with the deformed model in the target frame and the
- *  accepted correspondences).
+ *  It is a pcl::Registration whose source is the model instance (as PointTarget points: PCL 1.13's Registration and
+ *  CorrespondenceEstimation do not compile for different source and target point types). The model is set with
+ *  setModel (setInputSource throws InvalidInputError: the source is the model's), the scan with setInputTarget, in
+ *  mm. Every fit runs in computeTransformation, so align() through a pcl::Registration pointer is the same fit with
+ *  the same checks. The defaults are the command line's (MorphableIcpDefaults: 100 iterations, point-to-plane rows,
+ *  every component up to 60 per region), and the base settings work as for pcl::IterativeClosestPoint:
+ *  setMaximumIterations (total over both stages), setMaxCorrespondenceDistance, setTransformationEpsilon (here: mean
+ *  squared vertex motion of one update, mm^2; 0 means 1e-4), setEuclideanFitnessEpsilon (absolute change of the
+ *  cost per row between iterations, mm^2), addCorrespondenceRejector (every rejector, in order, each iteration; a
+ *  chain added replaces the default chain, which is getTargetBoundaryRejector when setRejectTargetBoundary is on),
+ *  setCorrespondenceEstimation (default CachedCorrespondenceEstimation: PCL's nearest-neighbour correspondences with
+ *  parallel, mostly cached queries, on the Registration's k-d tree, built once per target; estimations that need
+ *  source normals, such as CorrespondenceEstimationNormalShooting, get the model's vertex normals),
+ *  setSearchMethodTarget and registerVisualizationCallback (called each iteration with the deformed model in the
+ *  target frame and the accepted correspondences). The pcl::Registration settings this class has no use for are
+ *  refused, not ignored: align() throws InvalidInputError naming the setter after setTransformationEstimation (pose
+ *  and shape come from one Gauss-Newton step), setRANSACIterations, setRANSACOutlierRejectionThreshold,
+ *  setTransformationRotationEpsilon, setSearchMethodSource, setIndices or setPointRepresentation (the distances are
+ *  in x, y, z).
+ *
+ *  The target must be in mm: a target whose size says it is in another unit (guessLengthUnit against the model:
+ *  cm, m or inches) is refused with an InvalidInputError that names the unit; convert it first, e.g. with
+ *  convertScanToMillimetres (scan_units.h).
  *
  *  computeTransformation is PCL's ICP loop: per phase (the similarity stage, then each shape phase) and iteration,
  *  correspondences (their distances measured to the TargetSurface's smoothed points), the rejector chain, IRLS
@@ -77,13 +121,16 @@ enum class IcpInitialisation
  *  with W the identity (point-to-point) or n n^T + tangential_weight (I - n n^T) (point-to-plane).
  *
  *  getFinalTransformation() is the similarity [sR | t]; align()'s output holds the fitted model vertices in the
- *  target frame (with vertex normals for point types that have normals). pcl::Registration::getFitnessScore() is not virtual and re-applies only the similarity to the
- *  undeformed source: use getRegistrationReport() (fitness mean/median/RMS) instead.
+ *  target frame (with vertex normals for point types that have normals). The fitness score is PCL's, a mean squared
+ *  distance (mm^2): over the model vertices with an accepted correspondence at the returned state, the squared
+ *  distance from each to its nearest target point; getRegistrationReport() gives its root (fitness_rms, mm), mean and
+ *  median. After align() the source cloud (getInputSource()) holds those vertices of the fitted shape in the model
+ *  frame, so pcl::Registration::getFitnessScore(), through this class or a base pointer, gives fitness_rms^2.
  *
  *  \code
  *  morphreg::MorphableICP<pcl::PointNormal> icp;
- *  icp.setModel (model);                                   // 10 components per region by default
- *  icp.setInputTarget (scan);
+ *  icp.setModel (model);                                   // every component, up to 60 per region, by default
+ *  icp.setInputTarget (scan);                              // mm
  *  icp.setTargetLandmarks (marked);                        // optional: >= 3 start with Umeyama
  *  pcl::PointCloud<pcl::PointNormal> fitted;
  *  icp.align (fitted);                                     // identity guess: landmarks or coarse start
@@ -92,19 +139,25 @@ enum class IcpInitialisation
  *  \endcode
  */
 template <typename PointTarget, typename Scalar = float>
-class MorphableICP : public pcl::Registration<PointTarget, PointTarget, Scalar>
+class MorphableICP
+  : public pcl::Registration<PointTarget, PointTarget, typename detail::MorphableIcpScalar<PointTarget, Scalar>::type>
 {
 public:
-  using Base = pcl::Registration<PointTarget, PointTarget, Scalar>; ///< the PCL registration it extends
-  using Ptr = std::shared_ptr<MorphableICP>;                        ///< shared pointer
-  using ConstPtr = std::shared_ptr<const MorphableICP>;             ///< shared pointer to const
+  /** \brief The PCL registration it extends. */
+  using Base =
+      pcl::Registration<PointTarget, PointTarget, typename detail::MorphableIcpScalar<PointTarget, Scalar>::type>;
+  using Ptr = std::shared_ptr<MorphableICP>;            ///< shared pointer
+  using ConstPtr = std::shared_ptr<const MorphableICP>; ///< shared pointer to const
   using typename Base::Matrix4;
   using typename Base::PointCloudSource;
+  using typename Base::PointCloudSourceConstPtr;
   using typename Base::PointCloudTarget;
   using typename Base::PointCloudTargetConstPtr;
 
-  /** \brief A registration with the defaults above: 50 iterations, CachedCorrespondenceEstimation and the
-   *  target boundary rejector on its own target surface.
+  /** \brief A registration with the defaults above (MorphableIcpDefaults), CachedCorrespondenceEstimation and the
+   *  target boundary and normal rejectors on its own target surface. Until setModel and setInputTarget, the source
+   *  and target are placeholders, so that PCL's align(), which returns without a word when either is missing, reaches
+   *  computeTransformation, which names what is missing.
    */
   MorphableICP ();
 
@@ -124,8 +177,8 @@ public:
 
   // ---- model and shape ------------------------------------------------------------------------------------
 
-  /** \brief Sets the model and makes its mean the source cloud; selects 10 components per region. Throws
-   *  InvalidInputError for a null model.
+  /** \brief Sets the model and makes its mean the source cloud; selects every component, up to
+   *  MorphableIcpDefaults::components_per_region per region. Throws InvalidInputError for a null model.
    *  \param[in] model the model fitted to the target (mm)
    */
   void
@@ -230,7 +283,8 @@ public:
     estimate_scale_ = estimate;
   }
 
-  /** \brief At most this many of the iterations go to the similarity stage (default 20).
+  /** \brief At most this many of the iterations go to the similarity stage (default 60; at most half of them when
+   *  shape phases follow).
    *  \param[in] iterations the similarity stage's budget, out of setMaximumIterations
    */
   void
@@ -241,7 +295,7 @@ public:
   /** \brief Point-to-plane rows, with \a tangential_weight in [0, 1] of the point-to-point term kept along the
    *  tangent plane (0 = pure point-to-plane). Uses the target's normals, or for targets without normals (or with
    *  invalid ones) normals estimated from the k-neighbourhood of setRejectTargetBoundary.
-   *  \param[in] enabled true for point-to-plane rows (default false: point-to-point)
+   *  \param[in] enabled true for point-to-plane rows (the default), false for point-to-point
    *  \param[in] tangential_weight the share of the point-to-point term kept along the tangent plane
    */
   void
@@ -374,15 +428,16 @@ public:
 
   /** \brief Named target landmarks (model landmark name -> target point, mm), used as extra rows with weight
    *  \a weight (one landmark counts as \a weight correspondences) and for the landmark initialisation. The default,
-   *  1, suits landmarks placed with a few mm of error: heavier ones pin their vertex there and bend the small
-   *  regions around it (nose, eyes) away from the scan.
+   *  0, the command line's, uses them only for the start (hand-placed landmarks lie millimetres off the model's
+   *  points); 1 suits landmarks placed with a few mm of error: heavier ones pin their vertex there and bend the
+   *  small regions around it (nose, eyes) away from the scan.
    *  Throws InvalidInputError for non-finite positions, a negative weight, or (once a model is set) names the
    *  model does not have.
    *  \param[in] landmarks target position (mm, the target's frame) per model landmark name
    *  \param[in] weight how many correspondences one landmark row counts as (>= 0)
    */
   void
-  setTargetLandmarks (const LandmarkPositions& landmarks, double weight = 1.0);
+  setTargetLandmarks (const LandmarkPositions& landmarks, double weight = MorphableIcpDefaults::landmark_weight);
 
   /** \brief How the start is found when align() is given the identity guess (default automatic).
    *  \param[in] initialisation the start mode
@@ -391,19 +446,6 @@ public:
   setInitialisation (IcpInitialisation initialisation)
   {
     initialisation_ = initialisation;
-  }
-
-  /** \brief The target's length unit; std::nullopt (the default) guesses it in align() from the target's size against
-   *  the model's (guessLengthUnit: scans in cm, m or inches are 10, 1000 or 25.4 times smaller than a model in mm).
-   *  The fit runs in mm (a scaled copy of the target; landmarks and the guess are scaled too); the transformation,
-   *  align()'s output and getFittedVertices() are returned in the target's unit, the residuals and the report's
-   *  fitness in mm. The unit used and why are in getRegistrationReport().
-   *  \param[in] unit the target's length unit, or std::nullopt to guess it
-   */
-  void
-  setTargetUnit (std::optional<LengthUnit> unit)
-  {
-    target_unit_ = unit;
   }
 
   // ---- results --------------------------------------------------------------------------------------------
@@ -429,13 +471,13 @@ public:
   }
 
   /** \brief The fitted model as a mesh in the model topology, in the target frame.
-   *  \return the mesh, in the target's unit
+   *  \return the mesh (mm)
    */
   pcl::PolygonMesh
   getFittedMesh () const;
 
   /** \brief The fitted model vertices (3 x N, target frame).
-   *  \return the vertices, in the target's unit
+   *  \return the vertices (mm)
    */
   const Eigen::Matrix3Xd&
   getFittedVertices () const
@@ -443,8 +485,8 @@ public:
     return fitted_vertices_;
   }
 
-  /** \brief Per model vertex: distance (mm, whatever the target's unit) to its accepted correspondence at the
-   *  returned state, NaN where it has none.
+  /** \brief Per model vertex: distance (mm) to its accepted correspondence's point on the target surface (the
+   *  smoothed point where target smoothing is on) at the returned state, NaN where it has none.
    *  \return one residual per model vertex (mm)
    */
   const Eigen::VectorXd&
@@ -454,7 +496,7 @@ public:
   }
 
   /** \brief What the last align() did: why it stopped, its iterations, its start and the fit quality.
-   *  \return the report (fitness in mm); use it instead of pcl::Registration::getFitnessScore()
+   *  \return the report (fitness in mm; fitness_rms^2 is getFitnessScore())
    */
   const IcpReport&
   getRegistrationReport () const
@@ -462,31 +504,26 @@ public:
     return report_;
   }
 
-  /** \brief Validates the inputs (model, target, landmarks), then runs pcl::Registration::align. Throws
-   *  InvalidInputError for a missing model or target, an empty target or one with non-finite points, unknown
-   *  landmark names, or fewer correspondences than unknowns.
-   *  \param[out] output the fitted model vertices in the target frame
+  /** \brief Refused: the source is the model instance of setModel. Throws InvalidInputError saying so.
+   *  \param[in] cloud unused
    */
   void
-  align (PointCloudSource& output);
+  setInputSource (const PointCloudSourceConstPtr& cloud) override;
 
-  /** \brief As align (output), starting from \a guess (the identity: the setInitialisation start).
-   *  \param[out] output the fitted model vertices in the target frame
-   *  \param[in] guess the start similarity, model frame to target frame, in the target's unit
-   */
-  void
-  align (PointCloudSource& output, const Matrix4& guess);
-
-  /** \brief Sets the target cloud; its surface and tree are prepared again on the next align().
-   *  \param[in] cloud the scan (any unit, see setTargetUnit)
+  /** \brief Sets the target cloud (the scan, mm); its surface and tree are prepared again on the next align().
+   *  Throws InvalidInputError for a null or empty cloud (PCL would keep the previous target).
+   *  \param[in] cloud the scan (mm)
    */
   void
   setInputTarget (const PointCloudTargetConstPtr& cloud) override;
 
 protected:
-  /** \brief PCL's registration hook: the phases of the fit, in mm.
+  /** \brief PCL's registration hook, run by align() through this class or a pcl::Registration pointer: validates
+   *  the inputs and settings (InvalidInputError for a missing model or target, an empty target or one with
+   *  non-finite points, a target not in mm, unknown landmark names, a pcl::Registration setting that is not used,
+   *  or fewer correspondences than unknowns), then runs the phases of the fit.
    *  \param[out] output the fitted model vertices in the target frame
-   *  \param[in] guess the start similarity (the identity: the setInitialisation start)
+   *  \param[in] guess the start similarity, model frame to target frame (the identity: the setInitialisation start)
    */
   void
   computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
@@ -504,6 +541,14 @@ private:
 
   void
   validateInputs () const;
+
+  /** Throws InvalidInputError naming the pcl::Registration setter whose setting this class would not use. */
+  void
+  requireNoUnusedSettings () const;
+
+  /** Throws InvalidInputError when the target's size says it is not in mm (guessLengthUnit against the model). */
+  void
+  requireMillimetreTarget () const;
 
   /** The starting similarity of \a guess's mode; records how it was found in the report. */
   Eigen::Matrix4d
@@ -574,27 +619,23 @@ private:
   void
   store (const PoseShapeState& state, PointCloudSource& output);
 
-  /** setTargetUnit's unit, or the guess from the target's size. */
-  LengthUnitGuess
-  resolveTargetUnit () const;
-
-  /** Base::align on a copy of the target (and the landmarks and \a guess) scaled by \a to_mm; the results are
-   *  scaled back into the target's unit. */
+  /** The report's fitness over \a ev's accepted correspondences, and the source cloud that makes
+   *  pcl::Registration::getFitnessScore() agree with it (see the class). */
   void
-  alignInMillimetres (PointCloudSource& output, const Matrix4& guess, double to_mm);
+  storeFitness (const Evaluation& ev, const PoseShapeState& state);
 
   MorphableModel::ConstPtr model_;
   ComponentSelection selection_;
   double lambda1_ = 0.1;
   double refinement_lambda1_ = 0.1;
   std::vector<ShapePhase> schedule_;
-  double lambda2_ = 3.0;
+  double lambda2_ = MorphableIcpDefaults::shape_prior;
   ShapePrior prior_ = ShapePrior::inverse_std_dev;
   bool shape_stage_ = true;
   bool estimate_scale_ = true;
-  int similarity_iterations_ = 20;
-  bool point_to_plane_ = false;
-  double tangential_weight_ = 0.02;
+  int similarity_iterations_ = MorphableIcpDefaults::similarity_iterations;
+  bool point_to_plane_ = MorphableIcpDefaults::point_to_plane;
+  double tangential_weight_ = MorphableIcpDefaults::tangential_weight;
   RobustKernel::ConstPtr robust_kernel_ = std::make_shared<TukeyKernel> ();
   bool graduated_loss_ = false;
   bool area_weighting_ = false;
@@ -606,9 +647,12 @@ private:
   double max_sigma_ = 8.0;
   int rising_iterations_ = 3;
   LandmarkPositions landmarks_;
-  double landmark_weight_ = 1.0;
+  double landmark_weight_ = MorphableIcpDefaults::landmark_weight;
   IcpInitialisation initialisation_ = IcpInitialisation::automatic;
-  std::optional<LengthUnit> target_unit_;
+
+  PointCloudTargetConstPtr no_target_; ///< the placeholder target until setInputTarget
+  /** The source search tree pcl::Registration made: another one came from setSearchMethodSource. */
+  typename Base::KdTreeReciprocalPtr own_source_tree_;
 
   TargetSurface::Ptr target_surface_;
   bool target_prepared_ = false;

@@ -76,16 +76,15 @@ struct IcpReport
   std::string initialisation_detail;      ///< for the global start: how it chose (GlobalAlignment::method)
   double initialisation_confidence = 1.0; ///< the global start's confidence in [0, 1]; 1 for the others
   int head_points = -1;                   ///< target points the global start found on the head (-1: not searched)
-  std::string target_unit = "mm";         ///< the target's length unit (given or guessed); the fit ran in mm
-  std::string target_unit_reason;         ///< why that unit: "given", or guessLengthUnit's sentence
   bool target_smoothing = false;          ///< whether the target points were projected onto their local planes
   double target_noise_ratio = NAN;        ///< the target's measured noise ratio (TargetSurface; NaN: not measured)
-  /** \brief Accepted correspondences at the returned state, over which the fitness figures below are taken
-   *  (scan-to-model distances in mm, whatever the target's unit). */
+  /** \brief Accepted correspondences at the returned state, over which the fitness figures below are taken: the
+   *  distance from each of their model vertices to its nearest target point (mm). fitness_rms^2 is the fitness score,
+   *  PCL's mean squared distance, which pcl::Registration::getFitnessScore() returns after the fit. */
   int correspondences = 0;
   double fitness_mean = 0.0;   ///< mean scan-to-model distance (mm) at the returned state
   double fitness_median = 0.0; ///< median scan-to-model distance (mm) at the returned state
-  double fitness_rms = 0.0;    ///< RMS scan-to-model distance (mm) at the returned state
+  double fitness_rms = 0.0;    ///< RMS scan-to-model distance (mm): the square root of getFitnessScore()
 };
 
 } // namespace morphreg

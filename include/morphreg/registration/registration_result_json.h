@@ -16,9 +16,8 @@
 
 namespace morphreg
 {
-/** \brief The measures (measureFit) of \a icp's finished fit of \a model against its target, in mm whatever the
- *  target's unit; of the shape coefficients, each region's FitPlausibilitySettings::leading_components are held to
- *  the sigma limit.
+/** \brief The measures (measureFit) of \a icp's finished fit of \a model against its target (mm); of the shape
+ *  coefficients, each region's FitPlausibilitySettings::leading_components are held to the sigma limit.
  *  \param[in] icp a registration after align()
  *  \param[in] model the model it fitted
  *  \return the measures

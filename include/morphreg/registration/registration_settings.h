@@ -18,18 +18,21 @@
 namespace morphreg
 {
 /** \brief MorphableICP's settings as `morphreg register` names them (each field is the option without "--", with
- *  '_' for '-'); the defaults are the command line's. */
+ *  '_' for '-'); the defaults are the command line's, which are MorphableICP's own (MorphableIcpDefaults). */
 struct RegistrationSettings
 {
-  int iterations = 100;           ///< ICP iterations, similarity and shape stages together (>= 1)
-  int similarity_iterations = 60; ///< at most this many fit the similarity alone (>= 1)
-  double max_distance = 0.0;      ///< max correspondence distance (mm, 0 = no limit)
+  /** ICP iterations, similarity and shape stages together (>= 1) */
+  int iterations = MorphableIcpDefaults::iterations;
+  /** at most this many fit the similarity alone (>= 1) */
+  int similarity_iterations = MorphableIcpDefaults::similarity_iterations;
+  double max_distance = 0.0; ///< max correspondence distance (mm, 0 = no limit)
   /** Components per region: one count for all, or one per region; empty (the default): every component the model
    *  has, at most kMaxDefaultComponents per region. */
   std::vector<int> components;
-  bool point_to_plane = true;      ///< point-to-plane rows (false: point-to-point)
-  double tangential_weight = 0.02; ///< point-to-point share kept along the tangent plane (0-1)
-  double shape_prior = 3.0;        ///< lambda_2, the shape regulariser (>= 0)
+  bool point_to_plane = MorphableIcpDefaults::point_to_plane; ///< point-to-plane rows (false: point-to-point)
+  /** point-to-point share kept along the tangent plane (0-1) */
+  double tangential_weight = MorphableIcpDefaults::tangential_weight;
+  double shape_prior = MorphableIcpDefaults::shape_prior; ///< lambda_2, the shape regulariser (>= 0)
   /** lambda_2 (>= 0) of a refinement over all `components` (with lambda_1 = refinement_smoothness), after a first
    *  shape phase over at most kCoarseComponents per region at shape_prior; unset: two phases over all at
    *  shape_prior. A weak prior once the correspondences have settled lets many components follow the scan (models
@@ -42,7 +45,7 @@ struct RegistrationSettings
   /** One landmark counts as this many correspondences (>= 0). 0, the default: landmarks only place the start; the
    *  surface fits the shape (hand-placed landmarks lie millimetres off the model's points, and contour ones such as
    *  the jaw line mean other points on a scan than on the model). */
-  double landmark_weight = 0.0;
+  double landmark_weight = MorphableIcpDefaults::landmark_weight;
   bool area_weighting = false;    ///< weigh model vertices by their surface area
   std::string loss = "tukey";     ///< robust loss: none, huber or tukey
   double loss_scale = 0.0;        ///< robust loss width (mm, 0 = from the residuals' MAD)
@@ -59,8 +62,9 @@ struct RegistrationSettings
 /** \brief The components per region of the first shape phase when RegistrationSettings::refinement_prior is set. */
 constexpr int kCoarseComponents = 10;
 
-/** \brief The most components per region that RegistrationSettings' default (every component) fits. */
-constexpr int kMaxDefaultComponents = 60;
+/** \brief The most components per region that RegistrationSettings' default (every component) fits, as
+ *  MorphableICP::setModel selects. */
+constexpr int kMaxDefaultComponents = MorphableIcpDefaults::components_per_region;
 
 /** \brief The components per region that \a settings select in \a model: their counts, or the default.
  *  Throws InvalidInputError if the counts are neither one nor one per region.
@@ -80,7 +84,7 @@ requireValidSettings (const RegistrationSettings& settings);
 
 /** \brief Configures \a icp for a fit of \a model with \a settings (checked first): components, iterations, rows,
  *  priors, robust loss and the rejector chain (the target-boundary rejector first, then the ones the settings turn
- *  on). The target is taken to be in mm (the scan is converted to mm before, see scan_units.h).
+ *  on). The target must be in mm (convert the scan first, see scan_units.h: MorphableICP refuses one that is not).
  *  \param[in,out] icp the registration to configure
  *  \param[in] settings the settings
  *  \param[in] model the model to fit

@@ -40,4 +40,12 @@ LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
                           const MorphableModel& model, const std::string& scan_name, bool one_view = false);
 
+/** \brief The RMS distance of \a model's mean vertices from their centroid (mm): the size guessLengthUnit compares
+ *  a scan with.
+ *  \param[in] model the model
+ *  \return its RMS radius (mm)
+ */
+double
+modelRadius (const MorphableModel& model);
+
 } // namespace morphreg

@@ -12,8 +12,11 @@
 #include <morphreg/registration/global_alignment.h>
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/registration/morphable_icp.h>
+#include <morphreg/registration/scan_units.h>
 
+#include <pcl/common/transforms.h>
 #include <pcl/conversions.h>
+#include <pcl/point_representation.h>
 #include <pcl/registration/correspondence_estimation.h>
 
 #include <Eigen/Geometry>
@@ -59,8 +62,15 @@ template <typename PointTarget, typename Scalar>
 MorphableICP<PointTarget, Scalar>::MorphableICP ()
 {
   this->reg_name_ = "MorphableICP";
-  this->max_iterations_ = 50;
-  this->correspondence_estimation_.reset (new CachedCorrespondenceEstimation<PointTarget, PointTarget, Scalar>);
+  this->max_iterations_ = MorphableIcpDefaults::iterations;
+  this->correspondence_estimation_.reset (
+      new CachedCorrespondenceEstimation<PointTarget, PointTarget, typename Base::Matrix4::Scalar>);
+  own_source_tree_ = this->tree_reciprocal_;
+  this->input_.reset (new PointCloudSource);
+  typename PointCloudTarget::Ptr placeholder (new PointCloudTarget);
+  placeholder->push_back (PointTarget ()); // one point: PCL's k-d tree refuses an empty cloud with a message
+  no_target_ = placeholder;
+  this->target_ = no_target_;
   target_surface_ = std::make_shared<TargetSurface> ();
   boundary_rejector_ = std::make_shared<CorrespondenceRejectorTargetBoundary> (target_surface_);
   normal_rejector_ = std::make_shared<CorrespondenceRejectorNormalCompatibility> (target_surface_);
@@ -75,7 +85,7 @@ MorphableICP<PointTarget, Scalar>::setModel (const MorphableModel::ConstPtr& mod
   for (const auto& landmark : landmarks_)
     model->landmarkVertex (landmark.first);
   model_ = model;
-  selection_ = model_->firstComponents (10);
+  selection_ = model_->firstComponents (MorphableIcpDefaults::components_per_region);
   const TriangleMesh mean{Eigen::Map<const Eigen::Matrix3Xd> (model_->mean ().data (), 3, model_->numVertices ()),
                           model_->triangles ()};
   const Eigen::VectorXd areas = triangleAreas (mean);
@@ -222,8 +232,19 @@ MorphableICP<PointTarget, Scalar>::setTargetLandmarks (const LandmarkPositions& 
 
 template <typename PointTarget, typename Scalar>
 void
+MorphableICP<PointTarget, Scalar>::setInputSource (const PointCloudSourceConstPtr&)
+{
+  throw InvalidInputError ("MorphableICP::setInputSource: the source is the model; set it with setModel (a "
+                           "MorphableModel), and the scan with setInputTarget");
+}
+
+template <typename PointTarget, typename Scalar>
+void
 MorphableICP<PointTarget, Scalar>::setInputTarget (const PointCloudTargetConstPtr& cloud)
 {
+  if (!cloud || cloud->empty ())
+    throw InvalidInputError (std::string ("MorphableICP::setInputTarget: the target cloud is ") +
+                             (cloud ? "empty" : "null"));
   Base::setInputTarget (cloud);
   target_prepared_ = false;
 }
@@ -234,12 +255,11 @@ MorphableICP<PointTarget, Scalar>::validateInputs () const
 {
   if (!model_)
     throw InvalidInputError ("MorphableICP: no model (call setModel)");
-  if (!this->input_ || static_cast<Eigen::Index> (this->input_->size ()) != model_->numVertices ())
-    throw InvalidInputError ("MorphableICP: the source cloud must be the model instance of setModel (" +
-                             std::to_string (model_->numVertices ()) + " points)");
-  if (!this->target_)
+  if (this->target_ == no_target_)
     throw InvalidInputError ("MorphableICP: no target cloud (call setInputTarget)");
   requireFiniteNonEmpty (*this->target_, "MorphableICP target");
+  requireNoUnusedSettings ();
+  requireMillimetreTarget ();
   for (const auto& landmark : landmarks_)
     model_->landmarkVertex (landmark.first);
   for (size_t k = 0; k < schedule_.size (); ++k) {
@@ -255,75 +275,43 @@ MorphableICP<PointTarget, Scalar>::validateInputs () const
 
 template <typename PointTarget, typename Scalar>
 void
-MorphableICP<PointTarget, Scalar>::align (PointCloudSource& output)
+MorphableICP<PointTarget, Scalar>::requireNoUnusedSettings () const
 {
-  align (output, Matrix4::Identity ());
-}
-
-template <typename PointTarget, typename Scalar>
-void
-MorphableICP<PointTarget, Scalar>::align (PointCloudSource& output, const Matrix4& guess)
-{
-  validateInputs ();
-  const LengthUnitGuess unit = resolveTargetUnit ();
-  const double to_mm = millimetresPer (unit.unit);
-  if (to_mm == 1.0)
-    Base::align (output, guess);
-  else
-    alignInMillimetres (output, guess, to_mm);
-  report_.target_unit = toString (unit.unit);
-  report_.target_unit_reason = unit.reason;
-}
-
-template <typename PointTarget, typename Scalar>
-LengthUnitGuess
-MorphableICP<PointTarget, Scalar>::resolveTargetUnit () const
-{
-  if (target_unit_)
-    return {*target_unit_, 0.0, "given", true, millimetresPer (*target_unit_)};
-  const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
-  const Eigen::Vector3d centroid = mean.rowwise ().mean ();
-  const double model_radius = std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
-  return guessLengthUnit (pointsOf (*this->target_), model_radius);
-}
-
-template <typename PointTarget, typename Scalar>
-void
-MorphableICP<PointTarget, Scalar>::alignInMillimetres (PointCloudSource& output, const Matrix4& guess, double to_mm)
-{
-  const PointCloudTargetConstPtr user_target = this->target_;
-  const LandmarkPositions user_landmarks = landmarks_;
-  const std::optional<Eigen::Vector3d> user_viewpoint = viewpoint_;
-  if (viewpoint_)
-    *viewpoint_ *= to_mm;
-  typename PointCloudTarget::Ptr scaled (new PointCloudTarget (*user_target));
-  for (auto& point : *scaled)
-    point.getVector3fMap () *= static_cast<float> (to_mm);
-  for (auto& landmark : landmarks_)
-    landmark.second *= to_mm;
-  Matrix4 scaled_guess = guess;
-  if (!guess.isIdentity ()) // the identity means "no guess" (see IcpInitialisation::automatic)
-    scaled_guess.template topRows<3> () *= static_cast<Scalar> (to_mm);
-  const auto restore = [&] () {
-    landmarks_ = user_landmarks;
-    viewpoint_ = user_viewpoint;
-    setInputTarget (user_target);
+  // pcl::Registration's setters are not virtual: what they set is checked here, on every path to align().
+  const auto refuse = [] (const std::string& setter, const std::string& why) {
+    throw InvalidInputError ("MorphableICP: " + setter + " was called, but MorphableICP does not use it: " + why);
   };
-  setInputTarget (scaled);
-  try {
-    Base::align (output, scaled_guess);
-  }
-  catch (...) {
-    restore ();
-    throw;
-  }
-  restore ();
-  for (auto& point : output)
-    point.getVector3fMap () /= static_cast<float> (to_mm);
-  fitted_vertices_ /= to_mm;
-  this->final_transformation_.template topRows<3> () /= static_cast<Scalar> (to_mm);
-  this->transformation_ = this->final_transformation_;
-  report_.initial_transformation.template topRows<3> () /= to_mm;
+  if (this->transformation_estimation_)
+    refuse ("setTransformationEstimation", "pose and shape come from one Gauss-Newton step (PoseShapeLeastSquares); "
+                                           "setPointToPlane chooses point-to-plane or point-to-point rows");
+  if (this->ransac_iterations_ != 0)
+    refuse ("setRANSACIterations", "it has no RANSAC stage; the rejector chain and the robust loss handle outliers");
+  if (this->inlier_threshold_ != 0.05) // pcl::Registration's default
+    refuse ("setRANSACOutlierRejectionThreshold", "it has no RANSAC stage; see setRobustKernel");
+  if (this->transformation_rotation_epsilon_ != 0.0)
+    refuse ("setTransformationRotationEpsilon",
+            "convergence is measured by the vertices' motion (setTransformationEpsilon, mm^2)");
+  if (this->tree_reciprocal_ != own_source_tree_)
+    refuse ("setSearchMethodSource", "the source moves with the shape every iteration; no source tree is searched");
+  if (!this->fake_indices_)
+    refuse ("setIndices", "every model vertex takes part in the fit");
+  // pcl::Registration::align hands a point representation to the target's k-d tree; the fit's distances are in x, y, z.
+  const auto representation = this->tree_->getPointRepresentation ();
+  if (representation && !dynamic_cast<const pcl::DefaultPointRepresentation<PointTarget>*> (representation.get ()))
+    refuse ("setPointRepresentation", "its correspondences, rejectors and residuals measure distances in x, y, z");
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::requireMillimetreTarget () const
+{
+  const bool one_view = this->target_->isOrganized () || viewpoint_.has_value ();
+  const LengthUnitGuess unit = guessLengthUnit (pointsOf (*this->target_), modelRadius (*model_), one_view);
+  if (unit.recognised && unit.unit != LengthUnit::millimetre)
+    throw InvalidInputError ("MorphableICP: the target seems to be in " + toString (unit.unit) + ", not mm (" +
+                             unit.reason +
+                             "); MorphableICP fits in mm: convert the scan to mm first, e.g. with "
+                             "morphreg::convertScanToMillimetres (scan_units.h)");
 }
 
 template <typename PointTarget, typename Scalar>
@@ -697,16 +685,40 @@ MorphableICP<PointTarget, Scalar>::finish (PoseShapeState state, const PoseShape
   vertex_residuals_ = Eigen::VectorXd::Constant (model_->numVertices (), std::numeric_limits<double>::quiet_NaN ());
   for (size_t c = 0; c < final_ev.kept.size (); ++c)
     vertex_residuals_[final_ev.kept[c].index_query] = final_ev.distances[c];
-  report_.correspondences = static_cast<int> (final_ev.kept.size ());
   report_.target_smoothing = target_surface_->getSmoothing ();
   report_.target_noise_ratio = target_surface_->getNoiseRatio ();
-  if (!final_ev.distances.empty ()) {
-    const Eigen::Map<const Eigen::VectorXd> d (final_ev.distances.data (), final_ev.distances.size ());
-    report_.fitness_mean = d.mean ();
-    report_.fitness_rms = std::sqrt (d.squaredNorm () / static_cast<double> (d.size ()));
-    report_.fitness_median = median (final_ev.distances);
-  }
+  storeFitness (final_ev, state);
   this->converged_ = !convergence.hasDiverged ();
+}
+
+template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::storeFitness (const Evaluation& ev, const PoseShapeState& state)
+{
+  // The source becomes the fitted shape's vertices with a correspondence (model frame), and the distances are
+  // measured as pcl::Registration::getFitnessScore measures them: through the final transformation, in the same
+  // float arithmetic, to the nearest point of the target's k-d tree.
+  typename PointCloudSource::Ptr source (new PointCloudSource);
+  source->resize (ev.kept.size ());
+  for (size_t c = 0; c < ev.kept.size (); ++c)
+    (*source)[c].getVector3fMap () = state.vertices.col (ev.kept[c].index_query).template cast<float> ();
+  PointCloudSource posed;
+  pcl::transformPointCloud (*source, posed, this->final_transformation_);
+  std::vector<double> distances (posed.size ());
+  pcl::Indices nearest (1);
+  std::vector<float> squared (1);
+  for (size_t c = 0; c < posed.size (); ++c) {
+    this->tree_->nearestKSearch (posed[c], 1, nearest, squared);
+    distances[c] = std::sqrt (static_cast<double> (squared[0]));
+  }
+  this->input_ = source;
+  report_.correspondences = static_cast<int> (distances.size ());
+  if (distances.empty ())
+    return;
+  const Eigen::Map<const Eigen::VectorXd> d (distances.data (), distances.size ());
+  report_.fitness_mean = d.mean ();
+  report_.fitness_rms = std::sqrt (d.squaredNorm () / static_cast<double> (d.size ()));
+  report_.fitness_median = median (distances);
 }
 
 template <typename PointTarget, typename Scalar>
@@ -723,7 +735,7 @@ MorphableICP<PointTarget, Scalar>::store (const PoseShapeState& state, PointClou
     if constexpr (pcl::traits::has_normal_v<PointTarget>)
       output[i].getNormalVector3fMap () = normals.col (i).template cast<float> ();
   }
-  this->final_transformation_ = state.similarity ().template cast<Scalar> ();
+  this->final_transformation_ = state.similarity ().template cast<typename Matrix4::Scalar> ();
   this->transformation_ = this->final_transformation_;
 }
 
