@@ -9,17 +9,13 @@
 #include "provenance.h"
 
 #include <morphreg/common/colour_map.h>
-#include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/photo_fit_options.h>
-#include <morphreg/photo/photo_texture.h>
-#include <morphreg/photo/photo_view_io.h>
-#include <morphreg/io/rgb_image_io.h>
+#include <morphreg/pipeline/photo_registration.h>
 
 #include <chrono>
 #include <cmath>
@@ -37,165 +33,55 @@ namespace tools
 {
 namespace
 {
-/** Coefficients beyond this many prior standard deviations are warned about (the report counts them). */
-constexpr double kCoefficientWarningSigma = 3.0;
-
 struct FitPhotosOptions : PhotoFitOptions
 {
-  std::string profile, frontal, model, photo, truth, report, shape_prior_text = "auto";
-  std::vector<PhotoViewFiles> views; ///< --view groups, in order
+  std::string model, truth, report, shape_prior_text = "auto";
+  PhotoSetFiles photos; ///< --view groups in order, or --profile, --frontal and --photo
   std::string out = "fitted.ply";
   double colour_max = 5.0;
   bool quiet = false;
 };
 
-/** The photos to fit: the --view photos with their images, or the orthographic pair (and the --photo image). */
-struct Photos
+/** The option combinations that name no photos, or photos the approach cannot fit. */
+void
+requirePhotoOptions (const FitPhotosOptions& options)
 {
-  std::vector<PhotoView> views;
-  std::vector<RgbImage> images; ///< per view (empty image: none to colour from)
-  std::string sources;          ///< the inputs' names, for messages
-};
-
-/** A head and the similarity that took it into the photos' normalised frame, as `synth --photos` writes them. */
-struct PhotoTruth
-{
-  TriangleMesh head;
-  Eigen::Matrix4d head_to_photo;
-};
-
-PhotoTruth
-loadPhotoTruth (const std::string& path)
-{
-  const nlohmann::json document = readJsonFile (path);
-  PhotoTruth truth;
-  std::string head_file;
-  std::vector<double> pose;
-  try {
-    head_file = document.at ("head").get<std::string> ();
-    pose = document.at ("head_to_photo").get<std::vector<double>> ();
-  }
-  catch (const nlohmann::json::exception& e) {
-    throw FormatError (path + ": expected {\"head\": mesh file, \"head_to_photo\": [16 numbers, column-major]} (" +
-                       e.what () + ")");
-  }
-  if (pose.size () != 16)
-    throw FormatError (path + ": head_to_photo has " + std::to_string (pose.size ()) + " numbers, not 16");
-  truth.head_to_photo = Eigen::Map<const Eigen::Matrix4d> (pose.data ());
-  if (!truth.head_to_photo.allFinite () ||
-      !(std::abs (truth.head_to_photo.topLeftCorner<3, 3> ().determinant ()) > 0.0))
-    throw FormatError (path + ": head_to_photo is not an invertible similarity");
-  truth.head = loadTriangleMesh ((std::filesystem::path (path).parent_path () / head_file).string ());
-  return truth;
-}
-
-/** Vertex errors (mm) of the fit against the true head: the fitted head in the photo frame taken back through the
- *  true similarity; printed and added to \a report. */
-Eigen::VectorXd
-truthErrors (const std::string& path, const PhotoFit& fit, nlohmann::json& report)
-{
-  const PhotoTruth truth = loadPhotoTruth (path);
-  requireSameTopology (fit.image_mesh, truth.head, path);
-  const Eigen::Affine3d to_photo (truth.head_to_photo);
-  const Eigen::Matrix3Xd back = to_photo.inverse () * fit.image_mesh.vertices;
-  const Eigen::Matrix3Xd difference = back - truth.head.vertices;
-  const Eigen::VectorXd errors = difference.colwise ().norm ().transpose ();
-  report["truth_error_mm"] = distanceStatistics (errors);
-  report["truth_error_mm"]["width_rms"] = std::sqrt (difference.row (0).squaredNorm () / difference.cols ());
-  report["truth_error_mm"]["file"] = path;
-  report["truth_scale_ratio"] = fit.scale / std::cbrt (truth.head_to_photo.topLeftCorner<3, 3> ().determinant ());
-  std::cout << "vertex RMS against the truth " << path << ": " << std::fixed << std::setprecision (3)
-            << report["truth_error_mm"]["rms"].get<double> () << " mm (max "
-            << report["truth_error_mm"]["max"].get<double> () << ", width RMS "
-            << report["truth_error_mm"]["width_rms"].get<double> () << ")\n"
-            << std::defaultfloat;
-  return errors;
-}
-
-/** The orthographic pair of --profile and --frontal, with the --photo image for the frontal view. */
-Photos
-pairPhotos (const FitPhotosOptions& options)
-{
-  const ProfileView profile = loadProfileView (options.profile);
-  if (options.frontal.empty () && options.approach != "profile")
-    throw InvalidInputError ("fit-photos --approach " + options.approach +
-                             " needs --frontal (the frontal landmarks); only --approach profile fits without them");
-  const std::optional<FrontalView> frontal =
-      options.frontal.empty () ? std::nullopt : std::optional<FrontalView> (loadFrontalView (options.frontal));
-  if (!options.photo.empty () && !frontal)
-    throw InvalidInputError ("fit-photos --photo needs --frontal: the frontal annotation places the photo");
-  Photos photos{orthographicPairViews (profile, frontal ? &*frontal : nullptr), {}, options.profile};
-  photos.images.resize (photos.views.size ());
-  if (frontal) {
-    photos.sources += " and " + options.frontal;
-    if (!options.photo.empty ())
-      photos.images.back () = loadRgbImage (options.photo);
-    if (!options.photo.empty () && (photos.images.back ().width != frontal->normalisation ().width () ||
-                                    photos.images.back ().height != frontal->normalisation ().height ()))
-      throw InvalidInputError ("fit-photos: " + options.photo + " is " + std::to_string (photos.images.back ().width) +
-                               " x " + std::to_string (photos.images.back ().height) + " px, but " + options.frontal +
-                               " annotates a " + std::to_string (frontal->normalisation ().width ()) + " x " +
-                               std::to_string (frontal->normalisation ().height ()) + " px photo");
-  }
-  return photos;
-}
-
-Photos
-loadPhotos (const FitPhotosOptions& options)
-{
-  if (!options.views.empty () && (!options.profile.empty () || !options.frontal.empty () || !options.photo.empty ()))
+  const PhotoSetFiles& photos = options.photos;
+  if (!photos.views.empty () && (!photos.profile.empty () || !photos.frontal.empty () || !photos.photo.empty ()))
     throw InvalidInputError ("fit-photos: --view photos and the orthographic pair (--profile, --frontal, --photo) "
                              "cannot be fitted together (their frames differ)");
-  if (options.views.empty () && options.profile.empty ())
+  if (photos.views.empty () && photos.profile.empty ())
     throw InvalidInputError ("fit-photos: give --view photos (with --landmarks, --camera, --outline) or the "
                              "orthographic pair (--profile, --frontal)");
-  if (options.views.empty ())
-    return pairPhotos (options);
-  Photos photos;
-  for (const PhotoViewFiles& files : options.views) {
-    LoadedPhotoView loaded = loadPhotoView (files);
-    photos.views.push_back (std::move (loaded.view));
-    photos.images.push_back (std::move (loaded.image));
-    photos.sources += (photos.sources.empty () ? "" : ", ") + files.image;
-  }
-  return photos;
+  if (photos.views.empty () && photos.frontal.empty () && options.approach != "profile")
+    throw InvalidInputError ("fit-photos --approach " + options.approach +
+                             " needs --frontal (the frontal landmarks); only --approach profile fits without them");
+  if (!photos.photo.empty () && photos.frontal.empty ())
+    throw InvalidInputError ("fit-photos --photo needs --frontal: the frontal annotation places the photo");
 }
 
-PhotoFit
-fitViews (const FitPhotosOptions& options, const MorphableModel::ConstPtr& model, const Photos& photos)
+/** Says on stderr what the fit does and what it warns of. */
+class ConsolePhotoObserver : public PhotoRegistrationObserver
 {
-  if (model->profileLine ().empty ())
-    throw InvalidInputError (options.model + ": the model has no profile line; build it with `build-model --dir` on "
-                                             "the output of synth or demo (their population.json holds it)");
-  if (!options.quiet)
-    std::cerr << "fitting " << options.model << " to " << photos.sources << " (" << options.approach << ")\n";
-  return fitPhotos (model, photos.views, options, photos.sources);
-}
+public:
+  explicit ConsolePhotoObserver (bool quiet) : quiet_ (quiet) {}
 
-/** The report's warnings (implausible coefficients, landmarks left out, a prior that keeps the mean head), the
- *  latter two also on stderr. */
-nlohmann::json
-fitWarnings (const PhotoFit& fit)
-{
-  nlohmann::json warnings = nlohmann::json::array ();
-  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
-    warnings.push_back ("a shape coefficient is beyond " + std::to_string (kCoefficientWarningSigma) +
-                        " standard deviations");
-  if (!fit.ignored_landmarks.empty ()) {
-    std::string ids;
-    for (const std::string& id : fit.ignored_landmarks)
-      ids += (ids.empty () ? "" : ", ") + id;
-    warnings.push_back ("outline landmarks left out: " + ids);
-    std::cerr << "fit-photos: warning: the outline landmarks " << ids << " are left out (--outline-landmarks)\n";
+  void
+  fitStarted (const std::string& model, const std::string& sources, const std::string& approach) override
+  {
+    if (!quiet_)
+      std::cerr << "fitting " << model << " to " << sources << " (" << approach << ")\n";
   }
-  if (!fit.prior.beats_mean_head) {
-    warnings.push_back ("the photos predict left-out landmarks no better than the mean head: the fit stays near it");
-    std::cerr << "fit-photos: warning: the photos predict left-out landmarks no better than the mean head ("
-              << fit.prior.mean_head_error_mm << " mm): the fit stays near the mean head (lambda_2 " << fit.prior.weight
-              << ")\n";
+
+  void
+  warning (const std::string& text) override
+  {
+    std::cerr << "fit-photos: warning: " << text << '\n';
   }
-  return warnings;
-}
+
+private:
+  bool quiet_;
+};
 
 /** The fit's summary line on stdout, and a warning on stderr when a coefficient is implausibly large. */
 void
@@ -212,69 +98,86 @@ printFitSummary (const FitPhotosOptions& options, const PhotoFit& fit)
     std::cout << ", landmark RMS " << fit.final_residuals.landmark_rms << " mm";
   std::cout << "; lambda_2 " << fit.prior.weight << " (" << fit.prior.rule << "); largest coefficient "
             << fit.maxCoefficientSigma () << " standard deviations\n";
-  if (fit.maxCoefficientSigma () > kCoefficientWarningSigma)
+  if (fit.maxCoefficientSigma () > PhotoRegistration::kCoefficientWarningSigma)
     std::cerr << "fit-photos: warning: a shape coefficient is " << fit.maxCoefficientSigma ()
-              << " standard deviations from the mean (beyond " << kCoefficientWarningSigma
+              << " standard deviations from the mean (beyond " << PhotoRegistration::kCoefficientWarningSigma
               << "): the head may be implausible; raise --shape-prior or --smoothness, or fit fewer --components\n";
 }
 
-/** Writes the fitted mesh coloured by its error against --truth (with the error as its quality), by the photos, or plain; returns what the colours
- *  show. */
+/** Prints the fit's errors against the truth (added to the report). */
+void
+printTruthErrors (const nlohmann::json& report)
+{
+  const nlohmann::json& errors = report["truth_error_mm"];
+  std::cout << "vertex RMS against the truth " << errors["file"].get<std::string> () << ": " << std::fixed
+            << std::setprecision (3) << errors["rms"].get<double> () << " mm (max " << errors["max"].get<double> ()
+            << ", width RMS " << errors["width_rms"].get<double> () << ")\n"
+            << std::defaultfloat;
+}
+
+/** Writes the fitted mesh coloured by its error against --truth (with the error as its quality), by the photos, or
+ *  plain; returns what the colours show. */
 std::string
-writeFittedMesh (const FitPhotosOptions& options, const PhotoFit& fit, const Photos& photos, nlohmann::json& report)
+writeFittedMesh (const FitPhotosOptions& options, const PhotoFit& fit, const PhotoSet& photos, nlohmann::json& report)
 {
   if (!options.truth.empty ()) {
-    const Eigen::VectorXd errors = truthErrors (options.truth, fit, report);
-    savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, residualColours (errors, options.colour_max), errors));
+    const PhotoTruthErrors errors = photoTruthErrors (readPhotoTruth (options.truth), fit);
+    report.update (errors.json);
+    printTruthErrors (report);
+    savePolygonMesh (options.out,
+                     toPolygonMesh (fit.model_mesh, residualColours (errors.vertex_errors, options.colour_max),
+                                    errors.vertex_errors));
     return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
   }
-  std::vector<TexturePhoto> textured;
-  for (size_t v = 0; v < photos.images.size (); ++v)
-    if (photos.images[v].width > 0)
-      textured.push_back ({fit.views[v].camera, &photos.images[v]});
-  if (textured.empty ()) {
+  const std::optional<VertexTexture> texture = photoTexture (fit, photos);
+  if (!texture) {
     saveTriangleMesh (options.out, fit.model_mesh);
     return "none";
   }
-  const VertexTexture texture = blendedTexture (fit.image_mesh, textured);
-  report["texture"] = {{"photos", textured.size ()}, {"visible_vertices", texture.visibleCount ()}};
-  savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture.colours));
+  report["texture"] = {{"photos", std::count_if (photos.images.begin (), photos.images.end (),
+                                                 [] (const RgbImage& image) { return image.width > 0; })},
+                       {"visible_vertices", texture->visibleCount ()}};
+  savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture->colours));
   return "the photos, blended by angle (grey where unseen)";
+}
+
+/** The run's inputs and outputs, checked before anything is read. */
+OutputPlan
+fitPhotosPlan (const FitPhotosOptions& options)
+{
+  OutputPlan plan;
+  const PhotoSetFiles& photos = options.photos;
+  for (const auto& [input, role] : {std::pair (options.model, "--model"), std::pair (photos.profile, "--profile"),
+                                    std::pair (photos.frontal, "--frontal"), std::pair (photos.photo, "--photo"),
+                                    std::pair (options.truth, "--truth")})
+    plan.addInput (input, role);
+  for (const PhotoViewFiles& view : photos.views)
+    for (const std::string& input : {view.image, view.landmarks, view.camera, view.outline})
+      plan.addInput (input, "--view");
+  plan.addOutput (options.out, "--out");
+  plan.addOptionalOutput (options.report, "--report");
+  plan.check ();
+  return plan;
 }
 
 void
 runFitPhotos (const FitPhotosOptions& options)
 {
   const auto start = std::chrono::steady_clock::now ();
-  OutputPlan plan;
-  for (const auto& [input, role] : {std::pair (options.model, "--model"), std::pair (options.profile, "--profile"),
-                                    std::pair (options.frontal, "--frontal"), std::pair (options.photo, "--photo"),
-                                    std::pair (options.truth, "--truth")})
-    plan.addInput (input, role);
-  for (const PhotoViewFiles& view : options.views)
-    for (const std::string& input : {view.image, view.landmarks, view.camera, view.outline})
-      plan.addInput (input, "--view");
-  plan.addOutput (options.out, "--out");
-  plan.addOptionalOutput (options.report, "--report");
-  plan.check ();
+  requirePhotoOptions (options);
+  const OutputPlan plan = fitPhotosPlan (options);
   OutputTransaction outputs (plan.outputs ());
-  const MorphableModel::ConstPtr model = loadModelFile (options.model, std::cout);
-  const Photos photos = loadPhotos (options);
-  const PhotoFit fit = fitViews (options, model, photos);
-
-  nlohmann::json report = photoFitJson (fit);
-  report["status"] = "ok";
-  report["units"] = "mm (residuals, coefficients_mm; coefficients in prior standard deviations); the similarity maps "
-                    "model mm into the views' frame";
-  report["inputs"] = {{"model", options.model}, {"photos", photos.sources}};
-  report["warnings"] = fitWarnings (fit);
-  report["settings"] = toJson (static_cast<const PhotoFitOptions&> (options));
-  printFitSummary (options, fit);
-  const std::string colouring = writeFittedMesh (options, fit, photos, report);
-  report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
-  report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  PhotoRegistration registration (loadModelFile (options.model, std::cout), options.model, options);
+  ConsolePhotoObserver observer (options.quiet);
+  registration.setObserver (&observer);
+  const PhotoSet photos = readPhotoSet (options.photos);
+  PhotoRegistrationOutcome outcome = registration.fit (photos);
+  printFitSummary (options, outcome.fit);
+  const std::string colouring = writeFittedMesh (options, outcome.fit, photos, outcome.report);
+  outcome.report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
+  outcome.report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
-    writeReport (options.report, report);
+    writeReport (options.report, outcome.report);
   outputs.commit ();
   std::cout << "wrote " << options.out << " (model frame, mm) "
             << (colouring == "none" ? "(no colours)"
@@ -385,8 +288,8 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("-m,--model", options->model, "model file with a profile line and landmarks (HDF5)")
       ->required ();
   const auto view_groups = addViewOptions (command);
-  command->add_option ("--profile", options->profile, "profile annotation (JSON: silhouette, nose tip, pixels)");
-  command->add_option ("--frontal", options->frontal,
+  command->add_option ("--profile", options->photos.profile, "profile annotation (JSON: silhouette, nose tip, pixels)");
+  command->add_option ("--frontal", options->photos.frontal,
                        "frontal annotation (JSON: named landmarks, pixels); needed by --approach joint and tps");
   std::string approaches;
   for (const std::string& name : photoFitMethodNames ())
@@ -394,7 +297,8 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--approach", options->approach, "the fitting method: " + approaches)
       ->check (CLI::IsMember (photoFitMethodNames ()))
       ->capture_default_str ();
-  command->add_option ("--photo", options->photo, "frontal photo (PNG/JPEG) of --frontal: colour the head from it");
+  command->add_option ("--photo", options->photos.photo,
+                       "frontal photo (PNG/JPEG) of --frontal: colour the head from it");
   command->add_option ("--truth", options->truth,
                        "true head and pose (JSON of `synth --photos`): report the fit's error, colour by it");
   addFitSettingOptions (command, options);
@@ -409,7 +313,7 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--report", options->report, "JSON report to write");
   command->add_flag ("-q,--quiet", options->quiet, "less output");
   command->callback ([options, view_groups] () {
-    options->views = view_groups ();
+    options->photos.views = view_groups ();
     if (options->shape_prior_text != "auto")
       options->shape_prior = std::stod (options->shape_prior_text);
     runFitPhotos (*options);

@@ -9,6 +9,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/photo/photo_view_io.h>
 #include <morphreg/photo/photo_fit_options.h>
+#include <morphreg/pipeline/photo_registration.h>
 #include <morphreg/synthetic/photo_simulator.h>
 
 #include <pybind11/stl.h>
@@ -148,14 +149,17 @@ fitPhotoPair (const MorphableModel::Ptr& model, const ProfileView& profile, cons
   options.outline_landmarks = outline_landmarks;
   options.outline_landmark_weight = outline_landmark_weight;
   options.sagittal_weight = sagittal_weight;
-  PhotoFitResult result;
+  PhotoSet photos;
+  photos.views = orthographicPairViews (profile, frontal);
+  photos.images.resize (photos.views.size ());
+  photos.sources = frontal ? "profile and frontal" : "profile";
+  const PhotoRegistration registration (model, "the model", options);
+  PhotoRegistrationOutcome outcome;
   {
     py::gil_scoped_release released;
-    result.fit = fitPhotos (model, orthographicPairViews (profile, frontal), options,
-                            frontal ? "profile and frontal" : "profile");
+    outcome = registration.fit (photos);
   }
-  result.report = photoFitJson (result.fit);
-  result.report["settings"] = toJson (options);
+  PhotoFitResult result{std::move (outcome.fit), std::move (outcome.report)};
   return result;
 }
 

@@ -43,6 +43,8 @@ def test_equals_the_command_line(model_file, photos, tmp_path):
     python = fit.report
     assert relative_difference(python["coefficients"], cli["coefficients"]) <= 1e-9
     assert python["scale"] == pytest.approx(cli["scale"], rel=1e-9)
+    assert (python["status"], python["warnings"], python["settings"]) == (cli["status"], cli["warnings"],
+                                                                          cli["settings"])
 
 
 def test_views_from_pixels(model, photos):

@@ -80,8 +80,10 @@ MultiViewProblem::extendFaceLabels (const PoseShapeState& state)
         const Eigen::Index next = k + direction;
         const bool hair = hairStarts (gaps, along, k, direction) &&
                           (next < 0 || next >= count || hairStarts (gaps, along, next, direction));
-        if (data.two_sided[k - direction] && !data.two_sided[k] && !hair && !beyondHairline (data, k))
-          changed = data.two_sided[k] = 1;
+        if (data.two_sided[k - direction] && !data.two_sided[k] && !hair && !beyondHairline (data, k)) {
+          data.two_sided[k] = 1;
+          changed = true;
+        }
       }
   }
   return changed;
