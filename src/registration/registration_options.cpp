@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/registration/registration_options.h>
+#include <morphreg/registration/initial_alignment_strategy.h>
 #include <morphreg/registration/robust_kernel.h>
 
 #include <string>
@@ -11,12 +12,12 @@ namespace
 {
 using S = RegistrationSettings;
 
-/** The registered kernels' names, "none, huber, ...". */
+/** \a names as "a, b, c". */
 std::string
-robustKernelList ()
+nameList (const std::vector<std::string>& names)
 {
   std::string listed;
-  for (const std::string& name : robustKernelNames ())
+  for (const std::string& name : names)
     listed += (listed.empty () ? "" : ", ") + name;
   return listed;
 }
@@ -88,6 +89,11 @@ std::vector<RegistrationOption>
 scanOptions ()
 {
   return {
+      {"start",
+       "where the fit starts: " + nameList (initialAlignmentNames ()) +
+           " (auto: the landmarks when at least 3 are given, else the search for the head in any pose; guess: the "
+           "scan as it lies, already in the model's frame; coarse: about the scan's principal axes)",
+       &S::start, 0, 0, initialAlignmentNames ()},
       {"target_smoothing",
        "fit to each scan point projected onto its neighbours' plane: on, off or auto (on for noisy scans such as "
        "depth-camera frames; the report's target_surface says what was done)",
@@ -117,7 +123,7 @@ robustnessOptions ()
 {
   constexpr double kNoBound = kUnboundedSetting;
   return {
-      {"loss", "robust loss (IRLS kernel): " + robustKernelList (), &S::loss, 0, 0, robustKernelNames ()},
+      {"loss", "robust loss (IRLS kernel): " + nameList (robustKernelNames ()), &S::loss, 0, 0, robustKernelNames ()},
       {"loss_scale", "robust loss width (mm, 0 = from the residuals' MAD)", &S::loss_scale, 0, kNoBound, {}},
       {"reject_distance",
        "reject correspondences farther than this (mm, 0 = off; pcl CorrespondenceRejectorDistance)",

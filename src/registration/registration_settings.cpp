@@ -99,6 +99,7 @@ configureRegistration (MorphableICP<pcl::PointNormal>& icp, const RegistrationSe
   icp.setShapePriorWeight (settings.shape_prior);
   icp.setAreaWeighting (settings.area_weighting);
   icp.setRobustKernel (makeRobustKernel (settings.loss, settings.loss_scale));
+  icp.setInitialAlignment (makeInitialAlignment (settings.start));
   icp.setTargetSmoothing (parseTargetSmoothing (settings.target_smoothing));
   addRejectors (icp, settings);
 }
@@ -143,6 +144,7 @@ toJson (const RegistrationSettings& settings)
       {"reject_one_to_one", settings.reject_one_to_one},
       {"reject_trimmed_ratio", settings.reject_trimmed},
       {"units", settings.units},
+      {"start", settings.start},
       {"target_smoothing", settings.target_smoothing}};
 }
 

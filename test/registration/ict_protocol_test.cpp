@@ -79,7 +79,7 @@ fitScan (const morphreg::test::ProtocolScan& scan, bool landmark_start)
   if (landmark_start)
     icp.setTargetLandmarks (scan.landmarks, 1.0);
   else
-    icp.setInitialisation (morphreg::IcpInitialisation::coarse);
+    icp.setInitialAlignment (morphreg::makeInitialAlignment ("coarse"));
   icp.setInputTarget (scan.cloud);
   pcl::PointCloud<pcl::PointNormal> output;
   icp.align (output);

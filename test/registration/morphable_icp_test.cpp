@@ -362,7 +362,7 @@ TEST_F (MorphableIcpTest, FrozenShapeAgreesWithPclIcpOnRigidData)
   icp.setShapePriorWeight (1e8);
   icp.setEstimateScale (false);
   icp.setRejectTargetBoundary (false);
-  icp.setInitialisation (morphreg::IcpInitialisation::guess);
+  icp.setInitialAlignment (morphreg::makeInitialAlignment ("guess"));
   icp.setMaximumIterations (100);
   icp.setTransformationEpsilon (1e-10);
   icp.setInputTarget (target);
@@ -884,7 +884,7 @@ TEST_F (MorphableIcpTest, BadInputIsReported)
   {
     Icp icp = makeIcp ();
     icp.setInputTarget (scan.cloud);
-    icp.setInitialisation (morphreg::IcpInitialisation::landmarks);
+    icp.setInitialAlignment (morphreg::makeInitialAlignment ("landmarks"));
     EXPECT_THROW (icp.align (output), morphreg::InvalidInputError) << "landmark start without landmarks";
     EXPECT_THROW (icp.setComponentSelection (morphreg::ComponentSelection ({1, 2})), morphreg::InvalidInputError);
     EXPECT_THROW (icp.setShapePriorWeight (-1.0), morphreg::InvalidInputError);

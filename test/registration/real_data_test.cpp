@@ -85,7 +85,7 @@ registerIct (const pcl::PointCloud<pcl::PointNormal>::Ptr& target, const morphre
   icp.addCorrespondenceRejector (icp.getTargetBoundaryRejector ()); // kept in front of the chain
   icp.addCorrespondenceRejector (std::make_shared<pcl::registration::CorrespondenceRejectorOneToOne> ());
   icp.setTargetLandmarks (landmarks, 1.0);
-  icp.setInitialisation (morphreg::IcpInitialisation::landmarks);
+  icp.setInitialAlignment (morphreg::makeInitialAlignment ("landmarks"));
   icp.setInputTarget (target);
   pcl::PointCloud<pcl::PointNormal> output;
   icp.align (output);

@@ -8,6 +8,7 @@
 #include <morphreg/model/morphable_model.h>
 #include <morphreg/registration/correspondence_rejection_normal_compatibility.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
+#include <morphreg/registration/initial_alignment_strategy.h>
 #include <morphreg/registration/morphable_convergence.h>
 #include <morphreg/registration/pose_shape_least_squares.h>
 #include <morphreg/registration/registration_report.h>
@@ -36,16 +37,6 @@ struct ShapePhase
   /** lambda_2 of this phase (>= 0); unset: MorphableICP::setShapePriorWeight's. A strong prior while the
    *  correspondences settle and a weak one once they have lets many components fit a scan's detail. */
   std::optional<double> prior_weight = std::nullopt;
-};
-
-/** \brief Where the iterations start when align() is given the identity guess. */
-enum class IcpInitialisation
-{
-  automatic, ///< a non-identity guess as given; else landmarks if >= 3 are set; else the global alignment
-  guess,     ///< always the guess passed to align(), even the identity
-  landmarks, ///< Umeyama from the target landmarks (InvalidInputError if fewer than 3)
-  coarse,    ///< robustCoarseSimilarity (11 pose hypotheses about the principal axes): heads in a roughly known pose
-  global     ///< alignHeadGlobally: any rotation, scans with shoulders and clutter (see global_alignment.h)
 };
 
 /** \brief MorphableICP's defaults, which are also the command line's (RegistrationSettings{} and `morphreg register`
@@ -439,13 +430,20 @@ public:
   void
   setTargetLandmarks (const LandmarkPositions& landmarks, double weight = MorphableIcpDefaults::landmark_weight);
 
-  /** \brief How the start is found when align() is given the identity guess (default automatic).
-   *  \param[in] initialisation the start mode
+  /** \brief How the start is found (see starts/; default AutomaticStart: the guess passed to align() unless it is
+   *  the identity, else the landmarks if >= 3 are set, else the global start). Throws InvalidInputError for null.
+   *  \param[in] start the start, e.g. makeInitialAlignment ("coarse")
    */
   void
-  setInitialisation (IcpInitialisation initialisation)
+  setInitialAlignment (InitialAlignmentStrategy::ConstPtr start);
+
+  /** \brief The start in force.
+   *  \return the start
+   */
+  const InitialAlignmentStrategy::ConstPtr&
+  getInitialAlignment () const
   {
-    initialisation_ = initialisation;
+    return initial_alignment_;
   }
 
   // ---- results --------------------------------------------------------------------------------------------
@@ -523,7 +521,7 @@ protected:
    *  non-finite points, a target not in mm, unknown landmark names, a pcl::Registration setting that is not used,
    *  or fewer correspondences than unknowns), then runs the phases of the fit.
    *  \param[out] output the fitted model vertices in the target frame
-   *  \param[in] guess the start similarity, model frame to target frame (the identity: the setInitialisation start)
+   *  \param[in] guess the start similarity, model frame to target frame (the identity: the setInitialAlignment start)
    */
   void
   computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
@@ -648,7 +646,7 @@ private:
   int rising_iterations_ = 3;
   LandmarkPositions landmarks_;
   double landmark_weight_ = MorphableIcpDefaults::landmark_weight;
-  IcpInitialisation initialisation_ = IcpInitialisation::automatic;
+  InitialAlignmentStrategy::ConstPtr initial_alignment_ = makeInitialAlignment ("auto");
 
   PointCloudTargetConstPtr no_target_; ///< the placeholder target until setInputTarget
   /** The source search tree pcl::Registration made: another one came from setSearchMethodSource. */

@@ -57,6 +57,7 @@ struct RegistrationSettings
    *  see TargetSmoothing). */
   std::string target_smoothing = "auto";
   std::string units = "auto"; ///< the scan's unit: auto (guessed from its size), mm, cm, m or in
+  std::string start = "auto"; ///< where the fit starts: a registered InitialAlignmentStrategy (starts/)
 };
 
 /** \brief The components per region of the first shape phase when RegistrationSettings::refinement_prior is set. */

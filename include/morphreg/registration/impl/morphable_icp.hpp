@@ -315,52 +315,46 @@ MorphableICP<PointTarget, Scalar>::requireMillimetreTarget () const
 }
 
 template <typename PointTarget, typename Scalar>
+void
+MorphableICP<PointTarget, Scalar>::setInitialAlignment (InitialAlignmentStrategy::ConstPtr start)
+{
+  if (!start)
+    throw InvalidInputError ("MorphableICP::setInitialAlignment: no start (a null pointer); the default is "
+                             "makeInitialAlignment (\"auto\")");
+  initial_alignment_ = std::move (start);
+}
+
+template <typename PointTarget, typename Scalar>
 Eigen::Matrix4d
 MorphableICP<PointTarget, Scalar>::initialTransformation (const Matrix4& guess)
 {
-  const Eigen::Matrix4d given = guess.template cast<double> ();
-  IcpInitialisation mode = initialisation_;
-  if (mode == IcpInitialisation::automatic)
-    mode = !given.isIdentity ()      ? IcpInitialisation::guess
-           : landmarks_.size () >= 3 ? IcpInitialisation::landmarks
-                                     : IcpInitialisation::global;
-  report_.initialisation = mode == IcpInitialisation::guess       ? "guess"
-                           : mode == IcpInitialisation::landmarks ? "landmarks"
-                           : mode == IcpInitialisation::coarse    ? "coarse"
-                                                                  : "global";
-  if (mode == IcpInitialisation::guess)
-    return given;
-  if (mode == IcpInitialisation::landmarks) {
-    if (landmarks_.size () < 3)
-      throw InvalidInputError ("MorphableICP: the landmark initialisation needs >= 3 target landmarks, got " +
-                               std::to_string (landmarks_.size ()));
-    Eigen::Matrix3Xd from (3, landmarks_.size ()), to (3, landmarks_.size ());
-    int k = 0;
-    for (const auto& landmark : landmarks_) {
-      from.col (k) = model_->meanVertex (model_->landmarkVertex (landmark.first));
-      to.col (k++) = landmark.second;
-    }
-    return similarityFromLandmarks (from, to);
+  StartInputs inputs;
+  inputs.guess = guess.template cast<double> ();
+  inputs.model_mean = {Eigen::Map<const Eigen::Matrix3Xd> (model_->mean ().data (), 3, model_->numVertices ()),
+                       model_->triangles ()};
+  inputs.model_landmarks.resize (3, static_cast<Eigen::Index> (landmarks_.size ()));
+  inputs.target_landmarks.resize (3, static_cast<Eigen::Index> (landmarks_.size ()));
+  Eigen::Index k = 0;
+  for (const auto& [name, position] : landmarks_) {
+    inputs.model_landmarks.col (k) = model_->meanVertex (model_->landmarkVertex (name));
+    inputs.target_landmarks.col (k++) = position;
   }
-  const Eigen::Matrix3Xd target = pointsOf (*this->target_);
-  const Eigen::Map<const Eigen::Matrix3Xd> mean (model_->mean ().data (), 3, model_->numVertices ());
-  if (mode == IcpInitialisation::global) {
-    GlobalAlignmentSettings settings;
-    settings.viewpoint = target_viewpoint_;
-    const GlobalAlignment found =
-        alignHeadGlobally (TriangleMesh{mean, model_->triangles ()}, target, normalsIfAny (*this->target_), settings);
-    report_.initialisation_detail = found.method;
-    report_.initialisation_confidence = found.confidence;
-    report_.head_points = static_cast<int> (found.head_indices.size ());
-    return found.similarity;
-  }
-  // align() has built the target's k-d tree: the coarse start takes its neighbourhoods from it.
+  inputs.target = pointsOf (*this->target_);
+  inputs.target_normals = normalsIfAny (*this->target_);
+  inputs.viewpoint = target_viewpoint_;
+  // align() has built the target's k-d tree: starts take their neighbourhoods from it.
   const auto& tree = *this->tree_;
   const PointCloudTarget& cloud = *this->target_;
-  const auto neighbours = [&tree, &cloud] (Eigen::Index i, int k, pcl::Indices& indices, std::vector<float>& squared) {
-    tree.nearestKSearch (cloud[i], k, indices, squared);
+  inputs.target_neighbours = [&tree, &cloud] (Eigen::Index i, int n, pcl::Indices& indices,
+                                              std::vector<float>& squared) {
+    tree.nearestKSearch (cloud[i], n, indices, squared);
   };
-  return robustCoarseSimilarity (mean, target, neighbours);
+  const StartEstimate start = initial_alignment_->estimate (inputs);
+  report_.initialisation = start.method;
+  report_.initialisation_detail = start.detail;
+  report_.initialisation_confidence = start.confidence;
+  report_.head_points = start.head_points;
+  return start.similarity;
 }
 
 template <typename PointTarget, typename Scalar>
