@@ -13,7 +13,7 @@
 #include <morphreg/registration/registration_result_json.h>
 #include <morphreg/registration/registration_settings.h>
 #include <morphreg/registration/scan_checks.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/pipeline/scan_units.h>
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
 

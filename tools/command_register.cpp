@@ -29,7 +29,7 @@
 #include <morphreg/registration/registration_result_json.h>
 #include <morphreg/registration/registration_options.h>
 #include <morphreg/registration/registration_settings.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/pipeline/scan_units.h>
 #include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/convergence_plot.h>
 #include <morphreg/visualization/registration_visualizer.h>

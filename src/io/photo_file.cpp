@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "jpeg_errors.h"
 #include "png_file.h"
 
 #include <morphreg/common/error.h>
@@ -78,29 +79,6 @@ requirePlausibleJpeg (const JpegFrame& frame, const std::string& path, long file
                        " image its header declares (truncated or corrupt)");
 }
 
-/** libjpeg's error manager: errors and warnings (corrupt data, a premature end) jump back with the message. */
-struct JpegErrors
-{
-  jpeg_error_mgr manager;
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX] = {};
-};
-
-void
-jpegFail (j_common_ptr info)
-{
-  auto* errors = reinterpret_cast<JpegErrors*> (info->err);
-  (*info->err->format_message) (info, errors->message);
-  std::longjmp (errors->jump, 1);
-}
-
-void
-jpegMessage (j_common_ptr info, int level)
-{
-  if (level < 0) // a warning: the data are corrupt
-    jpegFail (info);
-}
-
 /** Decodes the JPEG \a file into \a rgb (width x height x 3, allocated by the caller); false (the message in
  *  errors.message) if libjpeg fails or the decoded size differs from the frame header's. */
 bool
@@ -138,9 +116,7 @@ loadJpeg (std::FILE* file, const std::string& path, long file_size)
   std::rewind (file);
   jpeg_decompress_struct info;
   JpegErrors errors;
-  info.err = jpeg_std_error (&errors.manager);
-  errors.manager.error_exit = jpegFail;
-  errors.manager.emit_message = jpegMessage;
+  reportJpegErrorsTo (info, errors);
   jpeg_create_decompress (&info);
   const bool decoded = decodeJpeg (info, errors, file, frame, pixels.rgb.data ());
   jpeg_destroy_decompress (&info);

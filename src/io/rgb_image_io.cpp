@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "jpeg_errors.h"
+
 #include <morphreg/common/error.h>
 #include <morphreg/io/photo_file.h>
 #include <morphreg/io/rgb_image_io.h>
@@ -57,39 +59,13 @@ decodePng (const std::vector<unsigned char>& bytes, const std::string& name, dou
   return result;
 }
 
-/** libjpeg's error manager, returning to the decoder by longjmp with the message; warnings (corrupt or cut data)
- *  count as errors. */
-struct JpegErrors
-{
-  jpeg_error_mgr manager;
-  std::jmp_buf jump;
-  char message[JMSG_LENGTH_MAX] = "";
-};
-
-[[noreturn]] void
-jpegFail (j_common_ptr info)
-{
-  auto* errors = reinterpret_cast<JpegErrors*> (info->err);
-  (*info->err->format_message) (info, errors->message);
-  std::longjmp (errors->jump, 1);
-}
-
-void
-jpegMessage (j_common_ptr info, int level)
-{
-  if (level < 0) // a warning: the data is corrupt or cut short
-    jpegFail (info);
-}
-
 /** JPEG through libjpeg(-turbo), converted to RGB. */
 RgbImage
 decodeJpeg (const std::vector<unsigned char>& bytes, const std::string& name, double max_pixels)
 {
   jpeg_decompress_struct info;
   JpegErrors errors;
-  info.err = jpeg_std_error (&errors.manager);
-  errors.manager.error_exit = &jpegFail;
-  errors.manager.emit_message = &jpegMessage;
+  reportJpegErrorsTo (info, errors);
   std::vector<unsigned char> pixels; // before setjmp: still whole when libjpeg jumps back
   jpeg_create_decompress (&info);
   if (setjmp (errors.jump)) {

@@ -7,7 +7,7 @@
 #include <morphreg/registration/iteration_progress.h>
 #include <morphreg/registration/registration_result_json.h>
 #include <morphreg/registration/scan_checks.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/pipeline/scan_units.h>
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 #include <morphreg/common/order_statistics.h>
 
 #include <morphreg/registration/cached_correspondence_estimation.h>
-#include <morphreg/registration/pose_shape_least_squares.h>
+#include <morphreg/fitting/pose_shape_least_squares.h>
 
 #include <Eigen/Geometry>
 

@@ -8,7 +8,7 @@
 
 #include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/registration/registration_result_json.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/pipeline/scan_units.h>
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include <morphreg/registration/fit_plausibility.h>
 #include <morphreg/registration/morphable_icp.h>
 #include <morphreg/registration/registration_settings.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/pipeline/scan_units.h>
 #include <morphreg/synthetic/head_generator.h>
 
 #include <pcl/registration/correspondence_rejection_distance.h>

@@ -42,7 +42,7 @@ public:
 /** \brief A registration lost its target: too few correspondences were left to determine the unknowns (a scan in
  *  the wrong unit or far from the start pose, or a max correspondence distance too small). An InvalidInputError,
  *  since it is the input that cannot be registered as given. The one rule for how many are too few, shared by every
- *  fit, is requireEnoughRows in registration/pose_shape_least_squares.h.
+ *  fit, is requireEnoughRows in fitting/pose_shape_least_squares.h.
  */
 class TooFewCorrespondencesError : public InvalidInputError
 {

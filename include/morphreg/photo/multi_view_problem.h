@@ -12,7 +12,7 @@
 #include <morphreg/photo/photo_fit.h>
 #include <morphreg/photo/photo_view.h>
 #include <morphreg/photo/polyline_2d.h>
-#include <morphreg/registration/pose_shape_least_squares.h>
+#include <morphreg/fitting/pose_shape_least_squares.h>
 
 #include <memory>
 #include <optional>

@@ -10,7 +10,7 @@
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
 #include <morphreg/registration/initial_alignment_strategy.h>
 #include <morphreg/registration/morphable_convergence.h>
-#include <morphreg/registration/pose_shape_least_squares.h>
+#include <morphreg/fitting/pose_shape_least_squares.h>
 #include <morphreg/registration/registration_report.h>
 #include <morphreg/registration/kernels/tukey_kernel.h>
 #include <morphreg/registration/robust_kernel.h>
@@ -101,7 +101,7 @@ struct MorphableIcpScalar
  *
  *  The target must be in mm: a target whose size says it is in another unit (guessLengthUnit against the model:
  *  cm, m or inches) is refused with an InvalidInputError that names the unit; convert it first, e.g. with
- *  convertScanToMillimetres (scan_units.h).
+ *  convertScanToMillimetres (pipeline/scan_units.h).
  *
  *  computeTransformation is PCL's ICP loop: per phase (the similarity stage, then each shape phase) and iteration,
  *  correspondences (their distances measured to the TargetSurface's smoothed points), the rejector chain, IRLS

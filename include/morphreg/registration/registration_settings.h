@@ -85,7 +85,7 @@ requireValidSettings (const RegistrationSettings& settings);
 
 /** \brief Configures \a icp for a fit of \a model with \a settings (checked first): components, iterations, rows,
  *  priors, robust loss and the rejector chain (the target-boundary rejector first, then the ones the settings turn
- *  on). The target must be in mm (convert the scan first, see scan_units.h: MorphableICP refuses one that is not).
+ *  on). The target must be in mm (convert the scan first, see pipeline/scan_units.h: MorphableICP refuses one that is not).
  *  \param[in,out] icp the registration to configure
  *  \param[in] settings the settings
  *  \param[in] model the model to fit

@@ -12,7 +12,8 @@
 #include <morphreg/registration/global_alignment.h>
 #include <morphreg/registration/initial_alignment.h>
 #include <morphreg/registration/morphable_icp.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/common/length_unit.h>
+#include <morphreg/model/model_radius.h>
 
 #include <pcl/common/transforms.h>
 #include <pcl/conversions.h>
@@ -311,7 +312,7 @@ MorphableICP<PointTarget, Scalar>::requireMillimetreTarget () const
     throw InvalidInputError ("MorphableICP: the target seems to be in " + toString (unit.unit) + ", not mm (" +
                              unit.reason +
                              "); MorphableICP fits in mm: convert the scan to mm first, e.g. with "
-                             "morphreg::convertScanToMillimetres (scan_units.h)");
+                             "morphreg::convertScanToMillimetres (pipeline/scan_units.h)");
 }
 
 template <typename PointTarget, typename Scalar>

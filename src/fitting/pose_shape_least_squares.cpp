@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
-#include <morphreg/registration/pose_shape_least_squares.h>
+#include <morphreg/fitting/pose_shape_least_squares.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>

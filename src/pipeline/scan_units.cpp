@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
-#include <morphreg/registration/scan_units.h>
+#include <morphreg/pipeline/scan_units.h>
 
 #include <cmath>
 #include <iomanip>
@@ -27,14 +27,6 @@ requireHeadScale (const LengthUnitGuess& unit, const std::string& scan_name)
 }
 
 } // namespace
-
-double
-modelRadius (const MorphableModel& model)
-{
-  const Eigen::Map<const Eigen::Matrix3Xd> mean (model.mean ().data (), 3, model.numVertices ());
-  const Eigen::Vector3d centroid = mean.rowwise ().mean ();
-  return std::sqrt ((mean.colwise () - centroid).colwise ().squaredNorm ().mean ());
-}
 
 LengthUnitGuess
 scanUnit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units, const MorphableModel& model,

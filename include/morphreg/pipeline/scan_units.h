@@ -5,6 +5,7 @@
  *  model's, and scans that are no head in any unit refused.
  */
 #include <morphreg/common/length_unit.h>
+#include <morphreg/model/model_radius.h>
 #include <morphreg/model/morphable_model.h>
 
 #include <pcl/point_cloud.h>
@@ -39,13 +40,5 @@ scanUnit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& unit
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
                           const MorphableModel& model, const std::string& scan_name, bool one_view = false);
-
-/** \brief The RMS distance of \a model's mean vertices from their centroid (mm): the size guessLengthUnit compares
- *  a scan with.
- *  \param[in] model the model
- *  \return its RMS radius (mm)
- */
-double
-modelRadius (const MorphableModel& model);
 
 } // namespace morphreg

@@ -3,7 +3,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/registration/correspondence_rejection_target_boundary.h>
 #include <morphreg/registration/morphable_convergence.h>
-#include <morphreg/registration/pose_shape_least_squares.h>
+#include <morphreg/fitting/pose_shape_least_squares.h>
 
 #include <Eigen/Geometry>
 
