@@ -3,7 +3,6 @@
 // with blended seams, by moving least squares (--method mls), or re-postured with rigid bones (--method
 // articulated); with --truth, the warp's error per vertex (colours of the output PLY) and in the report.
 #include "commands.h"
-#include "mesh_annotations.h"
 #include "mesh_output.h"
 #include "option_checks.h"
 #include "progress.h"
@@ -16,6 +15,7 @@
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/datasets/makehuman_bodies.h>
+#include <morphreg/io/mesh_annotations.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/skeleton_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
