@@ -2,11 +2,14 @@
 // The library's model building (pipeline/model_building.h), the sequence `morphreg build-model` runs: a model from
 // meshes in files or in memory, its inputs listed, bad sets of meshes refused naming the mesh; from scans, the scans
 // that fail left out and said why.
+#include "registration/scan_protocol.h"
 #include "support/expect_error.h"
 #include "support/synthetic_heads.h"
 #include "support/temp_directory.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/cloud_io.h>
+#include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_annotations.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/pipeline/model_building.h>
@@ -223,6 +226,42 @@ TEST (ModelBuildingTest, UnreadableScansAreReportedAndTooFewRemainingIsRefusedNa
   ASSERT_EQ (observer.left_out.size (), 2u);
   EXPECT_NE (observer.left_out[0].find ("no_such_scan_a.ply"), std::string::npos) << observer.left_out[0];
   EXPECT_THROW (morphreg::ModelFromScans (nullptr), morphreg::InvalidInputError);
+}
+
+TEST (ModelBuildingTest, SimulatedScansAreRegisteredResampledAndBuiltIntoAModel)
+{
+  const morphreg::MorphableModel::ConstPtr registering = registeringModel ();
+  morphreg::test::TempDirectory directory;
+  morphreg::ScanManifest scans;
+  morphreg::test::ProtocolSettings protocol;
+  protocol.points = 15000;
+  const std::vector<TriangleMesh> subjects = heads (9); // the registering model's six and three others
+  for (std::size_t k = 6; k < subjects.size (); ++k) {
+    const auto scan = morphreg::test::simulateProtocolScan (subjects[k], registering->landmarks (), k, protocol);
+    const std::string id = "subject_" + std::to_string (k);
+    scans.push_back ({id, directory.file (id + ".pcd"), directory.file (id + "_landmarks.json"), "folder"});
+    morphreg::saveCloud (scans.back ().scan, *scan.cloud);
+    morphreg::saveLandmarks (scans.back ().landmarks, scan.landmarks);
+  }
+  scans.push_back ({"missing", directory.file ("missing.pcd"), "", "folder"});
+  morphreg::ModelFromScansSettings settings;
+  settings.registration.components = {5};
+  const ModelBuildingOutcome built = morphreg::ModelFromScans (registering, settings).build (scans, "folder");
+
+  ASSERT_EQ (built.inputs.size (), 4u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const nlohmann::json row = built.inputs[k].row ();
+    EXPECT_TRUE (built.inputs[k].included) << built.inputs[k].reason;
+    // the scans' noise (1 mm per axis: 1.7 mm RMS in 3D) dominates the distance to the fit
+    EXPECT_LT (row["fit_rms_mm"].get<double> (), 3.0) << row.dump ();
+    EXPECT_GT (row["coverage"].get<double> (), 0.5) << row.dump ();
+    EXPECT_EQ (built.inputs[k].report["settings"]["components"][0], 5);
+  }
+  EXPECT_FALSE (built.inputs[3].included);
+  EXPECT_NE (built.inputs[3].reason.find ("missing.pcd"), std::string::npos) << built.inputs[3].reason;
+  EXPECT_EQ (built.model->numVertices (), registering->numVertices ());
+  EXPECT_EQ (built.model->numRegions (), registering->numRegions ());
+  EXPECT_EQ (built.source["included"], 3);
 }
 
 TEST (ModelBuildingTest, ScanDefaultsFitCloselyAsTheCommandLineDocuments)
