@@ -216,7 +216,8 @@ public:
   void
   setObserver (ModelBuildingObserver* observer);
 
-  /** \brief Replaces registerAndResample as the step of each scan.
+  /** \brief Replaces registerAndResample as the step of each scan (whose registration and resampling settings
+   *  are then the step's own).
    *  \param[in] step the step */
   void
   setScanStep (ScanStep step);
