@@ -1,135 +1,56 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model`: meshes in correspondence (files, a folder, or the ICT-FaceKit model) -> a model file.
+#include "build_model_console.h"
 #include "commands.h"
-#include "mesh_annotations.h"
 #include "option_checks.h"
 #include "pipeline.h"
-#include "progress.h"
 #include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/common/memory_budget.h>
-#include <morphreg/io/file_checks.h>
 #include <morphreg/datasets/ict_facekit.h>
-#include <morphreg/io/json_file.h>
-#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/scan_manifest.h>
-#include <morphreg/model/ict_region_model.h>
+#include <morphreg/pipeline/model_building.h>
 
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <sstream>
 
 namespace morphreg
 {
 namespace tools
 {
-MeshFolder
-readMeshFolder (const std::string& directory)
-{
-  if (!std::filesystem::is_directory (directory))
-    throw IoError (directory + ": not a directory");
-  const std::string manifest_path = directory + "/population.json";
-  MeshFolder folder;
-  if (std::filesystem::exists (manifest_path)) {
-    const nlohmann::json manifest = readJsonFile (manifest_path);
-    try {
-      for (const auto& head : manifest.at ("heads"))
-        folder.files.push_back (directory + "/" + head.at ("file").get<std::string> ());
-      if (manifest.contains ("profile_line"))
-        folder.profile_line = manifest.at ("profile_line").get<std::vector<int>> ();
-    }
-    catch (const nlohmann::json::exception& e) {
-      throw FormatError (manifest_path +
-                         ": expected {\"heads\": [{\"file\": mesh file}, ...], \"profile_line\": "
-                         "[vertex, ...]} (" +
-                         e.what () + ")");
-    }
-    return folder;
-  }
-  for (const auto& entry : std::filesystem::directory_iterator (directory)) {
-    const std::string ext = fileExtension (entry.path ().string ());
-    if (entry.is_regular_file () &&
-        (ext == ".ply" || ext == ".obj" || ext == ".vtk" || ext == ".stl" || ext == ".gltf" || ext == ".glb"))
-      folder.files.push_back (entry.path ().string ());
-  }
-  std::sort (folder.files.begin (), folder.files.end ());
-  if (folder.files.empty ())
-    throw InvalidInputError (directory + ": no mesh files (.ply .obj .vtk .stl .gltf .glb) in the folder");
-  return folder;
-}
-
 namespace
 {
-/** Loads every mesh, each checked against the first: a mismatch names the file. */
-std::vector<TriangleMesh>
-loadMeshes (const std::vector<std::string>& files, bool quiet)
-{
-  if (files.size () < 2)
-    throw InvalidInputError ("build-model: " + std::to_string (files.size ()) +
-                             " mesh(es) given; a model needs at least two meshes in correspondence");
-  std::vector<TriangleMesh> meshes;
-  const Progress progress ("loading meshes", static_cast<int> (files.size ()), quiet);
-  for (const std::string& file : files) {
-    meshes.push_back (loadTriangleMesh (file));
-    requireSameTopology (meshes.front (), meshes.back (), file);
-    progress.step (static_cast<int> (meshes.size ()));
-  }
-  progress.finish ();
-  return meshes;
-}
-
-MorphableModel::Ptr
-buildFromMeshes (const BuildModelOptions& options, nlohmann::json& summary)
+ModelBuildingOutcome
+buildFromMeshes (const BuildModelOptions& options, ModelBuildingObserver& observer)
 {
   MeshFolder folder;
   if (!options.directory.empty ())
     folder = readMeshFolder (options.directory);
-  std::vector<std::string>& files = folder.files;
-  files.insert (files.end (), options.meshes.begin (), options.meshes.end ());
-  const std::vector<TriangleMesh> meshes = loadMeshes (files, options.quiet);
-  const Eigen::Index num_vertices = meshes.front ().numVertices ();
-  const ModelBuilder builder (options.settings);
-  MorphableModel::Ptr model = options.regions.empty ()
-                                  ? builder.buildGlobal (meshes)
-                                  : builder.build (meshes, loadRegionLabels (options.regions, num_vertices));
-  if (!options.landmark_vertices.empty ())
-    model->setLandmarks (loadLandmarkVertices (options.landmark_vertices, num_vertices));
-  if (!folder.profile_line.empty ()) { // what fit-photos needs
-    try {
-      model->setProfileLine (folder.profile_line);
-    }
-    catch (const InvalidInputError& e) {
-      throw FormatError (options.directory + "/population.json: profile_line does not fit the meshes (" + e.what () +
-                         ")");
-    }
-  }
-  summary["source"] = {{"meshes", files.size ()},
-                       {"regions", options.regions},
-                       {"landmark_vertices", options.landmark_vertices},
-                       {"profile_line_vertices", folder.profile_line.size ()}};
-  return model;
+  folder.files.insert (folder.files.end (), options.meshes.begin (), options.meshes.end ());
+  ModelFromMeshes building ({options.settings, options.regions, options.landmark_vertices});
+  building.setObserver (&observer);
+  return building.build (folder);
 }
 
-MorphableModel::Ptr
-buildFromIct (const BuildModelOptions& options, nlohmann::json& summary)
+ModelBuildingOutcome
+buildFromIct (const BuildModelOptions& options)
 {
   if (!options.quiet)
     std::cerr << "loading the ICT-FaceKit model from " << options.ict_directory << " and sampling "
-              << options.ict_samples << " heads\n";
+              << options.ict.samples << " heads\n";
   const MorphableModel::Ptr ict = loadIctFaceKit (options.ict_directory);
-  requireMemory (ModelBuilder::memoryEstimate (static_cast<std::size_t> (options.ict_samples), ict->numVertices ()),
-                 "build-model --samples " + std::to_string (options.ict_samples) + " (heads of the ICT model's " +
-                     std::to_string (ict->numVertices ()) + " vertices)");
-  summary["source"] = {
-      {"ict_facekit", options.ict_directory}, {"samples", options.ict_samples}, {"seed", options.seed}};
-  return buildIctRegionModel (*ict, options.ict_samples, options.seed, options.settings);
+  ModelFromIctSettings settings = options.ict;
+  settings.builder = options.settings;
+  requireMemory (ictModelMemory (*ict, settings), "build-model --samples " + std::to_string (settings.samples) +
+                                                      " (heads of the ICT model's " +
+                                                      std::to_string (ict->numVertices ()) + " vertices)");
+  return buildModelFromIct (*ict, options.ict_directory, settings);
 }
 
 void
@@ -181,20 +102,6 @@ addScanOutputs (const BuildModelOptions& options, const std::string& report_dir,
   }
   plan.addOutput ((std::filesystem::path (report_dir) / "summary.json").string (), "the summary of --report-dir");
 }
-
-/** The summary of the model written: regions, components, vertices, landmarks. */
-void
-summariseModel (const MorphableModel& model, nlohmann::json& summary)
-{
-  std::vector<int> components;
-  for (const ModelRegion& region : model.regions ()) {
-    summary["regions"].push_back (region.name);
-    components.push_back (static_cast<int> (region.variances.size ()));
-  }
-  summary["components"] = components;
-  summary["vertices"] = model.numVertices ();
-  summary["landmarks"] = model.landmarks ().size ();
-}
 } // namespace
 
 nlohmann::json
@@ -213,21 +120,17 @@ buildModelFile (const BuildModelOptions& options)
   OutputTransaction outputs ({options.out}, options.from_scans.empty () ? std::vector<std::string> ()
                                                                         : std::vector<std::string>{report_dir});
   plan.check ();
-  nlohmann::json summary = {{"file", options.out},
-                            {"settings",
-                             {{"max_components", options.settings.max_components},
-                              {"explained_variance", options.settings.explained_variance},
-                              {"blend_rings", options.settings.blend_rings},
-                              {"procrustes", options.settings.align}}}};
-  const MorphableModel::Ptr model = !options.from_scans.empty ()      ? buildFromScans (options, report_dir, summary)
-                                    : !options.ict_directory.empty () ? buildFromIct (options, summary)
-                                                                      : buildFromMeshes (options, summary);
-  model->setMetadata ({{"builder", "morphreg build-model"},
-                       {"source", summary["source"].dump ()},
-                       {"morphreg_version", MORPHREG_VERSION},
-                       {"command_line", commandLine ()}});
-  saveModel (options.out, *model);
-  summariseModel (*model, summary);
+  BuildModelConsole console (options.quiet);
+  const ModelBuildingOutcome outcome = !options.from_scans.empty ()      ? buildFromScans (options, report_dir)
+                                       : !options.ict_directory.empty () ? buildFromIct (options)
+                                                                         : buildFromMeshes (options, console);
+  outcome.model->setMetadata ({{"builder", "morphreg build-model"},
+                               {"source", outcome.source.dump ()},
+                               {"morphreg_version", MORPHREG_VERSION},
+                               {"command_line", commandLine ()}});
+  saveModel (options.out, *outcome.model);
+  nlohmann::json summary = outcome.summary (options.settings);
+  summary["file"] = options.out;
   summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   outputs.commit ((std::filesystem::path (report_dir) / "summary.json").string ());
   return summary;
@@ -310,10 +213,10 @@ registerBuildModelCommand (CLI::App& app)
       "--model and resampled into its topology; scans that fail are reported and left out");
   addFromScansOptions (command, *options, scans);
   addResamplingOptions (command, options->resampling);
-  command->add_option ("--samples", options->ict_samples, "heads drawn from the ICT model (with --from-ict)")
+  command->add_option ("--samples", options->ict.samples, "heads drawn from the ICT model (with --from-ict)")
       ->check (inRange (2, 100000))
       ->capture_default_str ();
-  command->add_option ("--seed", options->seed, "seed of the ICT samples")->capture_default_str ();
+  command->add_option ("--seed", options->ict.seed, "seed of the ICT samples")->capture_default_str ();
   command->add_option ("-o,--out", options->out, "model file to write (HDF5, statismo layout)")->capture_default_str ();
   addModelBuilderOptions (command, options->settings);
   command->add_flag ("-q,--quiet", options->quiet, "no progress output");

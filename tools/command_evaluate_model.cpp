@@ -8,6 +8,7 @@
 #include "provenance.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/mesh_folder.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/model/model_quality.h>
 

@@ -10,6 +10,7 @@
 #include <morphreg/registration/registration_settings.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
+#include <morphreg/pipeline/model_building.h>
 #include <morphreg/pipeline/scan_input.h>
 
 #include <pcl/point_cloud.h>
@@ -62,14 +63,12 @@ addProvenance (const RegisterOptions& options, nlohmann::json& report)
     report["provenance"] = options.provenance;
 }
 
-/** The registration of `build-model --from-scans`: register's, but up to 60 components per region refined at a weak
- *  prior (0.2), so that each fit follows its scan and the model is built from close correspondences. */
+/** The registration of `build-model --from-scans`: the library's (ModelFromScansSettings::defaultRegistration). */
 inline RegisterOptions
 fromScansRegistration ()
 {
   RegisterOptions options;
-  options.components = {60};
-  options.refinement_prior = 0.2;
+  static_cast<RegistrationSettings&> (options) = ModelFromScansSettings::defaultRegistration ();
   options.colours = "residual"; // the fits are a step towards the model: no time spent on the scans' colours
   return options;
 }
@@ -188,11 +187,11 @@ registerScanBatch (const RegisterOptions& options, const BatchOptions& batch);
  *  to \a command. */
 void
 addRegistrationOptions (CLI::App* command, RegisterOptions& options);
-/** Inputs and settings of `morphreg build-model`. */
+/** Inputs and settings of `morphreg build-model`; the settings are the library's (model_building.h). */
 struct BuildModelOptions
 {
   std::vector<std::string> meshes; ///< mesh files in correspondence
-  std::string directory;           ///< a folder of meshes (population.json's heads if present, else every mesh)
+  std::string directory;           ///< a folder of meshes (readMeshFolder)
   std::string regions;             ///< region label file; empty: one global region
   std::string landmark_vertices;   ///< landmark vertex file; empty: none
   std::string ict_directory;       ///< ICT-FaceKit folder: the 7-region ICT model instead of meshes
@@ -200,8 +199,7 @@ struct BuildModelOptions
   std::string report_dir;          ///< from_scans: the per-scan outputs and summary (default: <out>_scans)
   RegisterOptions registration = fromScansRegistration (); ///< from_scans: its model registers the scans
   ResamplingOptions resampling;                            ///< from_scans: the resampling of each fit
-  int ict_samples = 300;
-  std::uint64_t seed = 1;
+  ModelFromIctSettings ict;                                ///< ict_directory: samples and seed
   std::string out = "model.h5";
   ModelBuilderSettings settings;
   bool quiet = false;
@@ -215,26 +213,11 @@ buildModelFile (const BuildModelOptions& options);
 void
 addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings);
 
-/** The meshes of a folder and, from its population.json, the profile line of their topology. */
-struct MeshFolder
-{
-  std::vector<std::string> files;
-  std::vector<int> profile_line; ///< empty without population.json or without "profile_line" in it
-};
-
-/** The meshes of \a directory: the heads listed in its population.json (written by synth and demo), else every
- *  .ply .obj .vtk .stl file in name order. */
-MeshFolder
-readMeshFolder (const std::string& directory);
-
-/** Registers and resamples every scan of options.from_scans with options.registration's model, writing each
- *  scan's report, fit and resampled mesh and a summary into \a report_dir; the scans that fail are reported and
- *  left out. Builds the model from the resampled meshes (the registering model's regions, landmarks and profile
- *  line carried over unless options give region or landmark files); adds the scans' counts to \a summary.
- *  Throws InvalidInputError if fewer than two scans remain.
- */
-MorphableModel::Ptr
-buildFromScans (const BuildModelOptions& options, const std::string& report_dir, nlohmann::json& summary);
+/** Builds the model of options.from_scans with ModelFromScans, each scan registered with options.registration's
+ *  model and resampled, writing its report, fit and resampled mesh and the study's summary.json into
+ *  \a report_dir; adds the registering model and the report folder to the outcome's source. */
+ModelBuildingOutcome
+buildFromScans (const BuildModelOptions& options, const std::string& report_dir);
 
 } // namespace tools
 } // namespace morphreg

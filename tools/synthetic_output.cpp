@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mesh_annotations.h"
 #include "progress.h"
 #include "provenance.h"
 #include "synthetic_output.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/mesh_annotations.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/photo/photo_view_io.h>

@@ -15,7 +15,7 @@ namespace morphreg
 namespace tools
 {
 /** Writes head_<i>.ply and head_<i>_landmarks.json for each head, regions.json and landmark_vertices.json (the
- *  shared topology's annotations, see mesh_annotations.h) and population.json (parameters per head, profile line);
+ *  shared topology's annotations, see morphreg/io/mesh_annotations.h) and population.json (parameters per head, profile line);
  *  returns the manifest written. */
 nlohmann::json
 writePopulation (const std::string& directory, const synthetic::HeadGenerator& generator,

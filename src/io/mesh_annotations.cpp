@@ -1,15 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "mesh_annotations.h"
-
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
+#include <morphreg/io/mesh_annotations.h>
 
 #include <algorithm>
 #include <limits>
 
 namespace morphreg
-{
-namespace tools
 {
 void
 saveRegionLabels (const std::string& path, const RegionLabels& regions)
@@ -71,5 +68,4 @@ loadLandmarkVertices (const std::string& path, Eigen::Index num_vertices)
   }
   return landmarks;
 }
-} // namespace tools
 } // namespace morphreg
