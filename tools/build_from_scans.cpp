@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `morphreg build-model --from-scans`: every raw scan of a study registered with a given model and resampled into its
 // topology (as `resample` does), the scans that fail reported and left out, and the model built from the rest.
-#include "batch_summary.h"
 #include "mesh_annotations.h"
 #include "pipeline.h"
 #include "progress.h"
@@ -9,6 +8,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/scan_manifest.h>
+#include <morphreg/pipeline/batch_summary.h>
 #include <morphreg/model/region_segmentation.h>
 
 #include <cmath>
@@ -39,9 +39,9 @@ registerAndResample (const BuildModelOptions& options, const ScanEntry& entry, c
   const std::string resampled = (fs::path (report_dir) / (entry.id + ".ply")).string ();
   return registerStudyScan (
       registration, model,
-      [&] (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted, nlohmann::json& report) {
+      [&] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted, nlohmann::json& report) {
         std::optional<ResamplingResult> result =
-            resampleFit (options.resampling, entry.scan, resampled, scan, fitted, report);
+            resampleFit (options.resampling, entry.scan, resampled, *fit.scan.cloud, fitted, report);
         if (result)
           mesh = std::move (result->mesh);
       },

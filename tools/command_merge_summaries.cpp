@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `morphreg merge-summaries`: the summaries of the shards of a batch registration (register --scans --shard I/N,
 // e.g. a Slurm job array) combined into the summary one run over every scan writes.
-#include "batch_provenance.h"
-#include "batch_summary.h"
 #include "commands.h"
+#include "provenance.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
+#include <morphreg/pipeline/batch_provenance.h>
+#include <morphreg/pipeline/batch_summary.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -121,7 +122,7 @@ runMerge (const MergeOptions& options)
   plan.check ();
   nlohmann::json run;
   const std::vector<ScanSummary> rows = mergeShards (files, run);
-  writeSummary (base, rows, "all", run);
+  writeSummary (base, rows, "all", run, {{"morphreg", provenanceJson ()}});
   outputs.commit ();
   const auto failed =
       std::count_if (rows.begin (), rows.end (), [] (const ScanSummary& r) { return r.status != "ok"; });
