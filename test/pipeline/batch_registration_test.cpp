@@ -15,6 +15,7 @@
 #include <morphreg/io/model_io.h>
 #include <morphreg/model/model_builder.h>
 #include <morphreg/pipeline/batch_registration.h>
+#include <morphreg/pipeline/batch_summary_merge.h>
 
 #include <gtest/gtest.h>
 
@@ -204,7 +205,7 @@ TEST_F (BatchRegistrationTest, ACancelledRunLeavesItsScansPending)
   EXPECT_FALSE (std::filesystem::exists (out.file ("fits/.morphreg.lock"))); // released
 }
 
-TEST_F (BatchRegistrationTest, AShardRegistersItsShareAndNamesItsSummary)
+TEST_F (BatchRegistrationTest, ShardsRegisterTheirSharesAndMergeIntoTheStudy)
 {
   morphreg::test::TempDirectory out;
   BatchRegistrationSettings settings = quickSettings ();
@@ -219,6 +220,20 @@ TEST_F (BatchRegistrationTest, AShardRegistersItsShareAndNamesItsSummary)
   EXPECT_EQ (summary["shard"], "1/2");
   EXPECT_EQ (summary["total"], 1);
   EXPECT_FALSE (std::filesystem::exists (out.file ("fits/head_0.json"))); // another shard's
+  // a missing shard is named; with both, the merge holds every scan of the study once
+  expectErrorContaining<morphreg::InvalidInputError> (
+      [&] { morphreg::mergeShardSummaries (morphreg::shardSummariesIn (out.file ("fits"))); }, "shard 0/2 is missing");
+  settings.shard = {0, 2};
+  run (out.file ("fits"), settings, nullptr);
+  const morphreg::MergedSummary merged = morphreg::mergeShardSummaries (morphreg::shardSummariesIn (out.file ("fits")));
+  EXPECT_EQ (merged.shards, 2);
+  EXPECT_EQ (merged.rows.size (), 3u);
+  EXPECT_EQ (merged.run, summary["run"]);
+  // a shard of another run (other settings) is refused, naming the setting
+  settings.scan.shape_prior *= 2.0;
+  run (out.file ("fits"), settings, nullptr);
+  expectErrorContaining<morphreg::InvalidInputError> (
+      [&] { morphreg::mergeShardSummaries (morphreg::shardSummariesIn (out.file ("fits"))); }, "shape_prior");
 }
 
 TEST_F (BatchRegistrationTest, BadSettingsAreRefusedNamingTheSetting)
