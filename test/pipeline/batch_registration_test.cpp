@@ -220,6 +220,10 @@ TEST_F (BatchRegistrationTest, ShardsRegisterTheirSharesAndMergeIntoTheStudy)
   EXPECT_EQ (summary["shard"], "1/2");
   EXPECT_EQ (summary["total"], 1);
   EXPECT_FALSE (std::filesystem::exists (out.file ("fits/head_0.json"))); // another shard's
+  // without resume, a done scan is registered again
+  settings.resume = false;
+  EXPECT_EQ (run (out.file ("fits"), settings, nullptr).attempted, 1u);
+  settings.resume = true;
   // a missing shard is named; with both, the merge holds every scan of the study once
   expectErrorContaining<morphreg::InvalidInputError> (
       [&] { morphreg::mergeShardSummaries (morphreg::shardSummariesIn (out.file ("fits"))); }, "shard 0/2 is missing");
