@@ -13,7 +13,6 @@
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/model_io.h>
-#include <morphreg/model/model_builder.h>
 #include <morphreg/pipeline/batch_registration.h>
 #include <morphreg/pipeline/batch_summary_merge.h>
 
@@ -70,14 +69,7 @@ protected:
   static void
   SetUpTestSuite ()
   {
-    const auto& generator = morphreg::test::headGenerator ();
-    std::vector<morphreg::TriangleMesh> meshes;
-    for (auto& head : generator.population (20, 1000))
-      meshes.push_back (std::move (head.mesh));
-    morphreg::ModelBuilderSettings settings;
-    settings.max_components = 5;
-    auto model = morphreg::ModelBuilder (settings).build (meshes, generator.regions ());
-    model->setLandmarks (generator.landmarks ());
+    const morphreg::MorphableModel::Ptr model = morphreg::test::headModel (20, 5);
     study_ = new morphreg::test::TempDirectory ();
     morphreg::saveModel (study_->file ("model.h5"), *model);
     std::mt19937_64 rng (5);
