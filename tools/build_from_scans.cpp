@@ -33,15 +33,15 @@ registerAndResample (const BuildModelOptions& options, const ScanEntry& entry, c
   registration.quiet = true;
   const std::string resampled = (fs::path (report_dir) / (entry.id + ".ply")).string ();
   ScanForModel done;
-  done.report = registerStudyScan (
-      registration, model,
-      [&] (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted, nlohmann::json& report) {
-        std::optional<ResamplingResult> result =
-            resampleFit (options.resampling, entry.scan, resampled, scan, fitted, report);
-        if (result)
-          done.mesh = std::move (result->mesh);
-      },
-      {resampled});
+  done.report =
+      registerStudyScan (registration, model,
+                         [&] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted, nlohmann::json& report) {
+                           std::optional<ResamplingResult> result =
+                               resampleFit (options.resampling, entry.scan, resampled, *fit.scan.cloud, fitted, report);
+                           if (result)
+                             done.mesh = std::move (result->mesh);
+                         },
+                         {resampled});
   return done;
 }
 

@@ -9,7 +9,7 @@
 #include "progress.h"
 #include "display_inputs.h"
 #include "provenance.h"
-#include "scan_colours.h"
+#include <morphreg/pipeline/scan_colours.h>
 #include "table_options.h"
 
 #include <morphreg/common/cloud_matrix.h>
@@ -149,11 +149,8 @@ namespace
 void
 reportFileUnit (const RegisterOptions& options, std::ostream& out)
 {
-  const FileFormat format = sniffFileFormat (options.scan);
-  if (const auto file_unit = specifiedLengthUnit (format))
-    out << "units: " << options.scan << " is " << fileFormatName (format) << ", whose unit is the "
-        << toString (*file_unit) << " by specification: converted to mm on reading (x" << millimetresPer (*file_unit)
-        << ")\n";
+  if (const std::string message = scanFileUnitMessage (options.scan); !message.empty ())
+    out << message << '\n';
 }
 } // namespace
 
@@ -193,9 +190,8 @@ MorphableModel::Ptr
 loadModelFile (const std::string& path, std::ostream& out)
 {
   MorphableModel::Ptr model = loadModel (path);
-  const auto file_units = model->metadata ().find (kFileUnitsKey);
-  if (file_units != model->metadata ().end () && file_units->second.rfind ("mm ", 0) != 0)
-    out << "units: the model file " << path << " is in " << file_units->second << '\n';
+  if (const std::string message = modelFileUnitsMessage (*model, path); !message.empty ())
+    out << message << '\n';
   return model;
 }
 
@@ -279,50 +275,6 @@ private:
   std::optional<Progress> progress_;
 };
 
-/** The report of the library (ScanRegistration::report) with the files of this run: the scan's (and the unit its
- *  format fixes), the model's, the landmarks' and the fitted mesh's. */
-nlohmann::json
-fileReport (const RegisterOptions& options, const ScanRegistration& registration, const ScanRegistrationOutcome& fit)
-{
-  nlohmann::json report = registration.report (fit);
-  report["scan"]["file"] = options.scan;
-  const FileFormat format = sniffFileFormat (options.scan);
-  if (const auto file_unit = specifiedLengthUnit (format))
-    report["scan"]["file_unit"] = {{"unit", toString (*file_unit)},
-                                   {"scale_to_mm", millimetresPer (*file_unit)},
-                                   {"reason", fileFormatName (format) +
-                                                  "'s unit by specification, converted on reading; units "
-                                                  "and scale_to_mm apply after it"}};
-  report["model"]["file"] = options.model;
-  report["settings"]["landmarks"] = options.landmarks;
-  report["fitted_mesh"] = fit.lostScan () ? nlohmann::json () : nlohmann::json (options.out);
-  addProvenance (options, report);
-  return report;
-}
-
-/** Writes the report of a fit that lost the scan (it passed its checks, so it is a failed fit, not bad input) and
- *  throws FitCheckFailure.
- */
-[[noreturn]] void
-reportLostFit (const RegisterOptions& options, const ScanRegistration& registration, const ScanRegistrationOutcome& fit)
-{
-  const std::string report_path = reportPath (options);
-  const nlohmann::json report = fileReport (options, registration, fit);
-  writeReport (report_path, report);
-  throw FitCheckFailure (fit.lost + "; no mesh written (see " + report_path + ")", report);
-}
-
-/** The scan's colours at the fitted \a vertices as options.colours asks (scanColoursAt); none for a depth image,
- *  which has no colours (loadScan refuses --colours scan with it). */
-std::optional<VertexColours>
-fittedScanColours (const RegisterOptions& options, const LengthUnitGuess& unit, const Eigen::Matrix3Xd& vertices,
-                   std::ostream& warnings)
-{
-  if (!options.intrinsics.empty ())
-    return std::nullopt;
-  return scanColoursAt (options.scan, unit.scale_to_mm, options.colours, vertices, warnings);
-}
-
 /** The fit's one-paragraph summary on \a out; throws FitCheckFailure when the report failed its checks. */
 void
 concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const nlohmann::json& report,
@@ -348,15 +300,27 @@ concludeFit (const RegisterOptions& options, const IcpReport& icp_report, const 
   throw FitCheckFailure (reasons + " (see " + report_path + ")", report);
 }
 
-/** The library's registration of \a model with the options' settings and landmarks, telling \a observer. */
-ScanRegistration
-makeRegistration (const RegisterOptions& options, const MorphableModel::Ptr& model, RegistrationObserver& observer)
+/** The files of the options' registration. */
+ScanFiles
+scanFiles (const RegisterOptions& options)
 {
-  ScanRegistration registration (model, options);
-  registration.setObserver (&observer);
-  if (!options.landmarks.empty ())
-    registration.setLandmarks (loadLandmarks (options.landmarks), options.landmarks, LandmarkUnit::millimetre);
-  return registration;
+  return {options.scan, options.landmarks, options.model, options.out, reportPath (options)};
+}
+
+/** Truth errors and figures (the single-scan extras) and then \a follow_up, on a finished fit. */
+FitFollowUp
+registerFollowUp (const RegisterOptions& options, RegistrationVisualizer* viewer, std::ostream& out,
+                  const FitFollowUp& follow_up)
+{
+  return [&options, viewer, &out, follow_up] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted,
+                                              nlohmann::json& report) {
+    if (!options.truth.empty ())
+      report["truth_vertex_error_mm"] = truthErrors (options, fitted, fit.icp->getVertexResiduals (), out);
+    const double scale = report["residuals_mm"]["colour_scale_max"].get<double> ();
+    report["timings_s"]["figures"] = saveFigures (viewer, options, *fit.icp, *fit.scan.cloud, fitted, scale, report);
+    if (follow_up)
+      follow_up (fit, fitted, report);
+  };
 }
 } // namespace
 
@@ -365,44 +329,31 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const ScanInput scan_as_read = loadScan (options);
-  reportFileUnit (options, out);
+  const ScanInput scan = loadScan (options);
   ConsoleObserver observer (options.quiet, out, warnings);
-  const ScanRegistration registration = makeRegistration (options, model, observer);
-  const double load_seconds = model_seconds + secondsSince (start);
-  const ScanRegistrationOutcome fit = registration.registerScan (scan_as_read);
-  if (fit.lostScan ())
-    reportLostFit (options, registration, fit);
-  Icp& icp = *fit.icp;
-  const auto& scan = fit.scan.cloud;
+  ScanFileSettings settings = options;
+  if (!options.intrinsics.empty ())
+    settings.colours = "residual"; // a depth image has no colours (loadScan refuses --colours scan with it)
+  ScanFileRegistration registration (model, settings);
+  registration.setObserver (&observer);
+  registration.setReportFields ({{"morphreg", provenanceJson ()}});
+  const ScanFileOutcome outcome =
+      registration.registerScan (scan, scanFiles (options), registerFollowUp (options, viewer, out, follow_up),
+                                 model_seconds + secondsSince (start));
+  if (outcome.fit.lostScan ())
+    throw FitCheckFailure (outcome.fit.lost + "; no mesh written (see " + reportPath (options) + ")", outcome.report);
+  concludeFit (options, outcome.fit.icp->getRegistrationReport (), outcome.report, outcome.fit.fit_seconds,
+               outcome.colour_scale, out);
+  return outcome.report;
+}
 
-  const auto write_start = Clock::now ();
-  const TriangleMesh fitted = fit.fittedMesh ();
-  const Eigen::VectorXd& residuals = icp.getVertexResiduals ();
-  const double scale = residualColourScale (residuals, options.colour_max);
-  const auto scan_colours = fittedScanColours (options, fit.unit, fitted.vertices, warnings);
-  savePolygonMesh (
-      options.out,
-      toPolygonMesh (fitted, scan_colours ? *scan_colours : residualColours (residuals, scale), residuals));
-  const double write_seconds = secondsSince (write_start);
-
-  nlohmann::json report = fileReport (options, registration, fit);
-  report["residuals_mm"]["colour_scale_max"] = scale;
-  report["fitted_mesh_colours"] = scan_colours ? "scan" : "residual";
-  if (!options.truth.empty ())
-    report["truth_vertex_error_mm"] = truthErrors (options, fitted, residuals, out);
-  const double figure_seconds = saveFigures (viewer, options, icp, *scan, fitted, scale, report);
-  if (follow_up)
-    follow_up (*scan, fitted, report);
-  report["timings_s"] = {{"load", load_seconds},
-                         {"fit", fit.fit_seconds},
-                         {"write_mesh", write_seconds},
-                         {"figures", figure_seconds},
-                         {"total", model_seconds + secondsSince (start)}};
-  // Written last and atomically: a report on disk means the scan's outputs are complete (batch resume trusts it).
-  writeReport (reportPath (options), report);
-  concludeFit (options, icp.getRegistrationReport (), report, fit.fit_seconds, scale, out);
-  return report;
+nlohmann::json
+registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up,
+                   const std::vector<std::string>& follow_up_outputs)
+{
+  ScanFileRegistration registration (model, options);
+  registration.setReportFields ({{"morphreg", provenanceJson ()}});
+  return registration.registerStudyScan (scanFiles (options), follow_up, follow_up_outputs);
 }
 
 void

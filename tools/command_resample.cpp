@@ -7,7 +7,7 @@
 #include "mesh_output.h"
 #include "pipeline.h"
 #include "provenance.h"
-#include "scan_colours.h"
+#include <morphreg/pipeline/scan_colours.h>
 #include "scan_resampling.h"
 
 #include <morphreg/common/cloud_matrix.h>
@@ -111,8 +111,9 @@ runResample (ResampleOptions options)
   }
   commitUnlessBadInput (outputs, [&] {
     return registerScan (registration, model, nullptr, 0.0, std::cout, std::cerr,
-                         [&] (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
-                              nlohmann::json& report) { resampleAndReport (options, scan, fitted, report); });
+                         [&] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted, nlohmann::json& report) {
+                           resampleAndReport (options, *fit.scan.cloud, fitted, report);
+                         });
   });
 }
 

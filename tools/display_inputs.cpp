@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "display_inputs.h"
 
-#include <morphreg/common/distance_statistics.h>
+#include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
 #include <morphreg/io/mesh_io.h>
@@ -20,16 +20,6 @@ namespace morphreg
 {
 namespace tools
 {
-double
-residualColourScale (const Eigen::VectorXd& residuals, double requested)
-{
-  if (requested > 0.0)
-    return requested;
-  const std::vector<double> finite = sortedFinite (residuals);
-  const double percentile = finite.empty () ? 0.0 : finite[(finite.size () * 95) / 100];
-  return std::max (percentile, 1e-3);
-}
-
 std::optional<Eigen::VectorXd>
 vertexQuality (const pcl::PolygonMesh& mesh, const std::string& path)
 {

@@ -18,10 +18,6 @@ class RegistrationVisualizer;
 
 namespace tools
 {
-/** The colour scale (mm) of a residual map: \a requested if positive, else the 95th percentile of the residuals. */
-double
-residualColourScale (const Eigen::VectorXd& residuals, double requested);
-
 /** The residuals (mm) of a mesh register wrote: its per-vertex float "quality" (NaN where no scan point
  *  corresponds); none when the mesh has no such field. A quality that cannot be a distance (negative or infinite,
  *  e.g. another tool's curvature) gives none, and a note naming \a path on stderr. */

@@ -11,6 +11,7 @@
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/pipeline/model_building.h>
+#include <morphreg/pipeline/scan_file_registration.h>
 #include <morphreg/pipeline/scan_input.h>
 
 #include <pcl/point_cloud.h>
@@ -35,8 +36,9 @@ class RegistrationVisualizer;
 
 namespace tools
 {
-/** Inputs and outputs of `morphreg register`; the registration settings are the library's, by the same names. */
-struct RegisterOptions : RegistrationSettings
+/** Inputs and outputs of `morphreg register`; the registration settings (and the fitted mesh's colours: colours,
+ *  colour_max) are the library's, by the same names. */
+struct RegisterOptions : ScanFileSettings
 {
   std::string scan, model, out = "fitted.ply";
   std::string scans;            ///< batch mode: a folder of scans or a manifest CSV (see morphreg/io/scan_manifest.h)
@@ -47,21 +49,8 @@ struct RegisterOptions : RegistrationSettings
   std::string landmarks, truth;
   /** With a depth image as the scan (a 16-bit PNG in mm): its camera's intrinsics (JSON; depth_image_io.h). */
   std::string intrinsics;
-  double colour_max = 0.0;      ///< mm, 0 = the 95th percentile of the residuals
-  std::string colours = "auto"; ///< the fitted mesh's vertex colours: auto (the scan's if it has any), scan, residual
   bool quiet = false;
-  /** Batch mode: what produces the outputs (inputs' content hashes, settings, version; batch_provenance.h),
-   *  recorded in every report the registration writes as "provenance". Null: none recorded. */
-  nlohmann::json provenance;
 };
-
-/** Copies options.provenance, if any, into \a report as "provenance". */
-inline void
-addProvenance (const RegisterOptions& options, nlohmann::json& report)
-{
-  if (!options.provenance.is_null ())
-    report["provenance"] = options.provenance;
-}
 
 /** The registration of `build-model --from-scans`: the library's (ModelFromScansSettings::defaultRegistration). */
 inline RegisterOptions
@@ -130,11 +119,6 @@ loadModelFile (const std::string& path, std::ostream& out);
 nlohmann::json
 registerScanFile (const RegisterOptions& options);
 
-/** Work on a finished fit before its report is written (resample: the scan resampled into the model's topology):
- *  given the scan (mm, the frame of the fit) and the fitted mesh, it adds its results to the report. */
-using FitFollowUp = std::function<void (const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
-                                        nlohmann::json& report)>;
-
 /** registerScanFile() with the model already loaded (\a model_seconds it took, counted in the report's load time)
  *  and the viewer already open (nullptr: no screenshot); progress and results go to \a out, warnings (landmarks
  *  the model lacks) to \a warnings; \a follow_up, if given, runs on the fit before the report is written. The fitted
@@ -153,10 +137,8 @@ addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan);
 std::string
 reportPath (const RegisterOptions& options);
 
-/** registerScan() for one scan of a study: its progress kept off the console (several scans run at once), a fit
- *  that failed its checks returned as its written report, and any other failure (a bad file, a scan the follow-up
- *  refuses) recorded as a report {"status": "failed", "failure": why} written in the registration's place. The
- *  scan's outputs (with \a follow_up_outputs, the files \a follow_up writes) are committed together.
+/** The library's ScanFileRegistration::registerStudyScan with the options' files and settings, its reports
+ *  stamped with the command line: one scan of a study, whose failure is its report's, not an error.
  *  \return the scan's report
  */
 nlohmann::json
@@ -176,10 +158,9 @@ struct BatchOptions
 CLI::Option*
 addBatchOptions (CLI::App* command, RegisterOptions& options, BatchOptions& batch);
 
-/** Registers every scan of options.scans (its shard) to the model, loaded once, writing per-scan outputs and
- *  the summary into batch.out_dir; see `morphreg register --help`. Throws FitCheckFailure naming the summary if
- *  any scan failed.
- */
+/** Registers every scan of options.scans (its shard) with the library's BatchRegistration, printing its progress;
+ *  see `morphreg register --help`. Throws FitCheckFailure naming the summary if any scan failed; exits 130 after
+ *  a Ctrl-C. */
 void
 registerScanBatch (const RegisterOptions& options, const BatchOptions& batch);
 

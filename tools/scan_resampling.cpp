@@ -2,7 +2,7 @@
 #include "scan_resampling.h"
 
 #include "table_options.h"
-#include "scan_colours.h"
+#include <morphreg/pipeline/scan_colours.h>
 
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>

@@ -94,6 +94,17 @@ def register(model: Model, points: ArrayLike, normals: Optional[ArrayLike] = Non
              area_weighting: bool = False,
              loss: str = "tukey", loss_scale: float = 0.0, reject_distance: float = 0.0, reject_median: float = 0.0,
              reject_one_to_one: bool = False, reject_trimmed: float = 0.0) -> RegistrationResult: ...
+def register_study(model: str, scans: str, out_dir: str, *, jobs: int = 1, threads_per_fit: int = 0,
+                   shard: Tuple[int, int] = (0, 1), resume: bool = True, retry_failed: bool = False,
+                   colours: str = "auto", colour_max: float = 0.0,
+                   iterations: int = 100, similarity_iterations: int = 60, max_distance: float = 0.0,
+                   components: Union[None, int, Sequence[int]] = None, point_to_plane: bool = True,
+                   tangential_weight: float = 0.02, shape_prior: float = 3.0,
+                   refinement_prior: Optional[float] = None, refinement_smoothness: float = 1.0,
+                   landmark_weight: float = 0.0, target_smoothing: Union[str, bool] = "auto", units: str = "auto",
+                   area_weighting: bool = False, loss: str = "tukey", loss_scale: float = 0.0,
+                   reject_distance: float = 0.0, reject_median: float = 0.0, reject_one_to_one: bool = False,
+                   reject_trimmed: float = 0.0) -> Dict[str, Any]: ...
 
 class ResampledMesh:
     @property

@@ -18,6 +18,8 @@ bindModel (py::module_& m); ///< model.cpp: morphreg.Model
 void
 bindRegistration (py::module_& m); ///< registration.cpp: morphreg.register
 void
+bindBatch (py::module_& m); ///< batch.cpp: morphreg.register_study
+void
 bindResampling (py::module_& m); ///< resampling.cpp: morphreg.resample
 void
 bindWarp (py::module_& m); ///< warp.cpp: ThinPlateSpline, SegmentedWarp

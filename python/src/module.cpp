@@ -17,6 +17,7 @@ PYBIND11_MODULE (_morphreg, m)
   bindIo (m);
   bindModel (m);
   bindRegistration (m);
+  bindBatch (m);
   bindResampling (m);
   bindWarp (m);
   bindSynthetic (m);

@@ -56,7 +56,8 @@ def test_class_members_match(name):
     assert stub_class_members(stub_definitions(STUBS.body)[name]) == actual
 
 
-KEYWORD_TABLES = {"register": "_registration_options", "resample": "_resampling_options"}
+KEYWORD_TABLES = {"register": "_registration_options", "register_study": "_registration_options",
+                  "resample": "_resampling_options"}
 
 
 def keyword_settings(function):

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/error.h>
 #include <morphreg/common/colour_map.h>
+#include <morphreg/common/distance_statistics.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace morphreg
 {
@@ -54,6 +56,16 @@ residualColours (const Eigen::VectorXd& values, double max_value)
     colours.col (i) = viridis (values[i] / max_value);
   }
   return colours;
+}
+
+double
+residualColourScale (const Eigen::VectorXd& residuals, double requested)
+{
+  if (requested > 0.0)
+    return requested;
+  const std::vector<double> finite = sortedFinite (residuals);
+  const double percentile = finite.empty () ? 0.0 : finite[(finite.size () * 95) / 100];
+  return std::max (percentile, 1e-3);
 }
 
 } // namespace morphreg

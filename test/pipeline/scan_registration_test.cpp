@@ -7,7 +7,6 @@
 #include "support/synthetic_heads.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/model/model_builder.h>
 #include <morphreg/pipeline/scan_input.h>
 #include <morphreg/pipeline/scan_registration.h>
 
@@ -75,15 +74,7 @@ protected:
   static void
   SetUpTestSuite ()
   {
-    const auto& generator = morphreg::test::headGenerator ();
-    std::vector<morphreg::TriangleMesh> meshes;
-    for (auto& head : generator.population (kTrainingHeads, 1000))
-      meshes.push_back (std::move (head.mesh));
-    morphreg::ModelBuilderSettings settings;
-    settings.max_components = 10;
-    auto model = morphreg::ModelBuilder (settings).build (meshes, generator.regions ());
-    model->setLandmarks (generator.landmarks ());
-    model_ = new MorphableModel::ConstPtr (model);
+    model_ = new MorphableModel::ConstPtr (morphreg::test::headModel (kTrainingHeads, 10));
   }
 
   static void

@@ -33,4 +33,13 @@ VertexColours
 
 residualColours (const Eigen::VectorXd& values, double max_value);
 
+/** \brief The colour scale of a residual map: \a requested if positive, else the 95th percentile of the residuals
+ *  (at least 0.001 mm, so that a perfect fit still has a scale).
+ *  \param[in] residuals one residual (mm) per vertex, NaN for none
+ *  \param[in] requested the scale asked for, mm; 0: the percentile
+ *  \return the scale's maximum, mm
+ */
+double
+residualColourScale (const Eigen::VectorXd& residuals, double requested);
+
 } // namespace morphreg

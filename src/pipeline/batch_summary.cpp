@@ -1,19 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "batch_summary.h"
-#include "provenance.h"
-
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/json_file.h>
+#include <morphreg/pipeline/batch_summary.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <iomanip>
 #include <sstream>
 
 namespace morphreg
-{
-namespace tools
 {
 namespace
 {
@@ -131,13 +128,17 @@ summaryFromReport (const std::string& id, const std::string& scan, const nlohman
   return row;
 }
 
-void
+nlohmann::json
 writeSummary (const std::string& base, std::vector<ScanSummary> rows, const std::string& shard,
-              const nlohmann::json& run)
+              const nlohmann::json& run, const nlohmann::json& fields)
 {
   std::sort (rows.begin (), rows.end (), [] (const ScanSummary& a, const ScanSummary& b) { return a.id < b.id; });
-  writeReport (base + ".json", summaryJson (rows, shard, run));
+  nlohmann::json summary = summaryJson (rows, shard, run);
+  for (const auto& field : fields.items ())
+    summary[field.key ()] = field.value ();
+  writeJsonFile (base + ".json", summary);
   writeFileAtomically (base + ".csv", csvText (rows));
+  return summary;
 }
 
 std::vector<ScanSummary>
@@ -145,7 +146,7 @@ readSummary (const std::string& path, std::string* shard, nlohmann::json* run)
 {
   const nlohmann::json document = readJsonFile (path);
   if (!document.is_object () || !document.contains ("scans") || !document["scans"].is_array ())
-    throw FormatError (path + ": not a batch summary (no \"scans\" array; written by register --scans)");
+    throw FormatError (path + ": not a batch summary (no \"scans\" array, as a batch registration writes)");
   if (shard != nullptr)
     *shard = valueAt<std::string> (document, "/shard", "");
   if (run != nullptr)
@@ -161,5 +162,4 @@ readSummary (const std::string& path, std::string* shard, nlohmann::json* run)
   }
   return rows;
 }
-} // namespace tools
 } // namespace morphreg

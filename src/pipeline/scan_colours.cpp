@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "scan_colours.h"
+#include <morphreg/pipeline/scan_colours.h>
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/coloured_surface_io.h>
 
 namespace morphreg
-{
-namespace tools
 {
 std::optional<VertexColours>
 scanColoursAt (const std::string& scan_file, double scale_to_mm, const std::string& mode,
@@ -26,13 +24,13 @@ scanColoursAt (const std::string& scan_file, double scale_to_mm, const std::stri
   }
   if (!surface.hasColours ()) {
     if (mode == "scan")
-      throw InvalidInputError (scan_file + ": --colours scan, but the scan has no colours (neither vertex colours nor "
-                                           "a texture)");
+      throw InvalidInputError (scan_file +
+                               ": scan colours asked for, but the scan has no colours (neither vertex colours nor "
+                               "a texture)");
     return std::nullopt;
   }
   surface.points *= scale_to_mm;
   return sampleNearestColours (surface, vertices);
 }
 
-} // namespace tools
 } // namespace morphreg

@@ -1,14 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "batch_provenance.h"
-#include <morphreg/io/file_fingerprint.h>
-
 #include <morphreg/common/error.h>
+#include <morphreg/io/file_fingerprint.h>
+#include <morphreg/pipeline/batch_provenance.h>
 
 #include <set>
 
 namespace morphreg
-{
-namespace tools
 {
 namespace
 {
@@ -28,7 +25,7 @@ fileRecord (const std::string& path)
 
 /** The settings that shape a scan's outputs: the registration's and the fitted mesh's colour scale. */
 nlohmann::json
-settingsRecord (const RegisterOptions& options)
+settingsRecord (const ScanFileSettings& options)
 {
   nlohmann::json settings = toJson (static_cast<const RegistrationSettings&> (options));
   settings["colour_max_mm"] = options.colour_max;
@@ -81,11 +78,11 @@ settingsMismatch (const nlohmann::json& expected, const nlohmann::json& found, c
 } // namespace
 
 RunRecord
-runRecord (const RegisterOptions& options, const ScanManifest& scans)
+runRecord (const std::string& model_file, const ScanFileSettings& settings, const ScanManifest& scans)
 {
   RunRecord run;
   run.shared = {
-      {"model", fileRecord (options.model)}, {"settings", settingsRecord (options)}, {"version", MORPHREG_VERSION}};
+      {"model", fileRecord (model_file)}, {"settings", settingsRecord (settings)}, {"version", MORPHREG_VERSION}};
   if (run.shared["model"]["fnv1a64"].is_null ())
     throw IoError (run.shared["model"]["error"].get<std::string> ());
   Fnv1a64 hash;
@@ -128,5 +125,4 @@ recordMismatch (const nlohmann::json& expected, const nlohmann::json& found, con
          field (expected, "version").dump () + " " + expected_is);
   return why;
 }
-} // namespace tools
 } // namespace morphreg
