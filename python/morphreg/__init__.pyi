@@ -101,8 +101,8 @@ def register_study(model: str, scans: str, out_dir: str, *, jobs: int = 1, threa
                    components: Union[None, int, Sequence[int]] = None, point_to_plane: bool = True,
                    tangential_weight: float = 0.02, shape_prior: float = 3.0,
                    refinement_prior: Optional[float] = None, refinement_smoothness: float = 1.0,
-                   landmark_weight: float = 0.0, target_smoothing: Union[str, bool] = "auto", units: str = "auto",
-                   area_weighting: bool = False, loss: str = "tukey", loss_scale: float = 0.0,
+                   landmark_weight: float = 0.0, start: str = "auto", target_smoothing: Union[str, bool] = "auto",
+                   units: str = "auto", area_weighting: bool = False, loss: str = "tukey", loss_scale: float = 0.0,
                    reject_distance: float = 0.0, reject_median: float = 0.0, reject_one_to_one: bool = False,
                    reject_trimmed: float = 0.0) -> Dict[str, Any]: ...
 
