@@ -6,6 +6,7 @@
 #include "provenance.h"
 
 #include <morphreg/io/scan_manifest.h>
+#include <morphreg/pipeline/fit_resampling.h>
 #include <morphreg/pipeline/model_building.h>
 
 #include <filesystem>
@@ -37,7 +38,8 @@ registerAndResample (const BuildModelOptions& options, const ScanEntry& entry, c
       registerStudyScan (registration, model,
                          [&] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted, nlohmann::json& report) {
                            std::optional<ResamplingResult> result =
-                               resampleFit (options.resampling, entry.scan, resampled, *fit.scan.cloud, fitted, report);
+                               writeResampledFit (*fit.scan.cloud, entry.scan, fitted, options.resampling,
+                                                  {resampled, options.resampling.colours}, report, std::cerr);
                            if (result)
                              done.mesh = std::move (result->mesh);
                          },

@@ -5,10 +5,12 @@
 #include "commands.h"
 #include "option_checks.h"
 #include "pipeline.h"
+#include "progress.h"
+#include "provenance.h"
 #include "scanner_options.h"
-#include "synthetic_output.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/synthetic/population_files.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -45,10 +47,23 @@ writeSubjectScan (const DemoOptions& options, const synthetic::HeadGenerator& ge
   const synthetic::ScanSimulator scanner (options.scanner);
   const synthetic::SyntheticHead subject = generator.sample (subject_seed);
   const synthetic::SimulatedScan scan = scanner.scan (subject.mesh, subject_seed);
-  writeScan (options.out + "/scan", "scan", scan, subject.mesh, generator.landmarks ());
+  synthetic::writeScanFiles (options.out + "/scan", "scan", scan, subject.mesh, generator.landmarks (),
+                             provenanceJson ());
   if (!options.quiet)
     std::cout << "scanned a held-out head (seed " << subject_seed << "): " << scan.cloud->size () << " points, "
               << scan.num_outliers << " outliers\n";
+}
+
+/** The population's heads and annotations written into \a directory, with their progress. */
+void
+writeDemoPopulation (const DemoOptions& options, const synthetic::HeadGenerator& generator,
+                     const std::string& directory)
+{
+  const Progress progress ("writing heads", options.count, options.quiet);
+  synthetic::writePopulationFiles (directory, generator, generator.population (options.count, options.seed),
+                                   options.seed, provenanceJson (),
+                                   [&progress] (std::size_t done) { progress.step (static_cast<int> (done)); });
+  progress.finish ();
 }
 
 void
@@ -64,8 +79,7 @@ runDemo (DemoOptions options)
   const synthetic::HeadGenerator generator (options.resolution);
   const std::string population = options.out + "/population";
   OutputTransaction population_output ({}, {population});
-  writePopulation (population, generator, generator.population (options.count, options.seed), options.seed,
-                   options.quiet);
+  writeDemoPopulation (options, generator, population);
   population_output.commit (population + "/population.json");
 
   BuildModelOptions model;

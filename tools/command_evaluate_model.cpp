@@ -8,17 +8,14 @@
 #include "provenance.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/mesh_folder.h>
-#include <morphreg/io/mesh_io.h>
-#include <morphreg/model/model_quality.h>
+#include <morphreg/pipeline/model_evaluation.h>
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace morphreg
@@ -39,82 +36,57 @@ struct EvaluateModelOptions
   bool quiet = false;
 };
 
-/** The meshes of folders (as build-model reads them) and files, loaded. */
-std::vector<TriangleMesh>
-loadMeshList (const std::vector<std::string>& paths, const std::string& what, bool quiet)
+/** The evaluation's stages on the console (quiet: none). */
+class EvaluationConsole : public ModelEvaluationObserver
 {
-  std::vector<std::string> files;
-  for (const std::string& path : paths) {
-    const std::vector<std::string> listed =
-        std::filesystem::is_directory (path) ? readMeshFolder (path).files : std::vector<std::string>{path};
-    files.insert (files.end (), listed.begin (), listed.end ());
-  }
-  std::vector<TriangleMesh> meshes;
-  if (files.empty ())
-    return meshes;
-  const Progress progress ("loading " + what, static_cast<int> (files.size ()), quiet);
-  for (const std::string& file : files) {
-    meshes.push_back (loadTriangleMesh (file));
-    progress.step (static_cast<int> (meshes.size ()));
-  }
-  progress.finish ();
-  return meshes;
-}
+public:
+  explicit EvaluationConsole (bool quiet) : quiet_ (quiet) {}
 
-std::vector<int>
-componentCounts (const EvaluateModelOptions& options, int available)
-{
-  std::vector<int> counts = options.components;
-  if (counts.empty ()) {
-    for (int decade = 1; decade < available; decade *= 10)
-      for (const int step : {1, 2, 5})
-        if (step * decade < available)
-          counts.push_back (step * decade);
-    counts.push_back (available);
+  void
+  stageStarted (const std::string& stage, int count) override
+  {
+    progress_.emplace (stage, count, quiet_);
   }
-  for (const int k : counts)
+
+  void
+  stepDone (int done) override
+  {
+    progress_->step (done);
+  }
+
+  void
+  stageFinished () override
+  {
+    progress_->finish ();
+  }
+
+private:
+  bool quiet_;
+  std::optional<Progress> progress_;
+};
+
+/** Names the option when a count of --components is more than the model has. */
+void
+checkComponentsOption (const EvaluateModelOptions& options, const MorphableModel& model)
+{
+  const auto available = model.globalVariances ().size ();
+  for (const int k : options.components)
     if (k < 0 || k > available)
       throw InvalidInputError ("evaluate-model: --components " + std::to_string (k) + ": " + options.model + " has " +
                                std::to_string (available) + " global components");
-  return counts;
-}
-
-nlohmann::json
-measureJson (const QualityMeasure& measure)
-{
-  return {{"mean_mm", measure.mean}, {"std_dev_mm", measure.std_dev}};
 }
 
 /** Every measure per component count. */
 nlohmann::json
 evaluate (const EvaluateModelOptions& options, const MorphableModel& model)
 {
-  const std::vector<TriangleMesh> held_out = loadMeshList (options.meshes, "held-out meshes", options.quiet);
-  const std::vector<TriangleMesh> training = loadMeshList (options.training, "training meshes", options.quiet);
-  const Eigen::VectorXd share = compactness (model);
-  const std::vector<int> counts = componentCounts (options, static_cast<int> (share.size ()));
-  nlohmann::json rows = nlohmann::json::array ();
-  const Progress progress ("evaluating", static_cast<int> (counts.size ()), options.quiet);
-  for (const int k : counts) {
-    nlohmann::json row = {{"components", k},
-                          {"compactness", k == 0 ? 0.0 : share[k - 1]},
-                          {"generalisation", measureJson (generalisation (model, held_out, k))},
-                          {"specificity", nullptr}};
-    if (!training.empty ())
-      row["specificity"] = measureJson (specificity (model, training, k, options.samples, options.seed));
-    rows.push_back (row);
-    progress.step (static_cast<int> (rows.size ()));
-  }
-  progress.finish ();
-  return {{"model", options.model},
-          {"global_components", share.size ()},
-          {"compactness", std::vector<double> (share.data (), share.data () + share.size ())},
-          {"held_out_meshes", held_out.size ()},
-          {"training_meshes", training.size ()},
-          {"samples", options.samples},
-          {"seed", options.seed},
-          {"distance", "mean vertex distance in correspondence after rigid alignment to the model's mean (mm)"},
-          {"measures", rows}};
+  checkComponentsOption (options, model);
+  ModelEvaluationSettings settings;
+  settings.samples = options.samples;
+  settings.seed = options.seed;
+  settings.components = options.components;
+  EvaluationConsole console (options.quiet);
+  return evaluateModel (model, options.model, options.meshes, options.training, settings, &console);
 }
 
 void

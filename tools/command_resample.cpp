@@ -16,6 +16,7 @@
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
+#include <morphreg/pipeline/fit_resampling.h>
 #include <morphreg/registration/scan_checks.h>
 #include <morphreg/resampling/landmark_reference.h>
 
@@ -38,13 +39,14 @@ struct ResampleOptions
   ResamplingOptions resampling;
 };
 
-/** Resamples the fit (see resampleFit) and says what it did. */
+/** Resamples the fit (see writeResampledFit) and says what it did. */
 void
 resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::PointNormal>& scan,
                    const TriangleMesh& fitted, nlohmann::json& report)
 {
   const std::optional<ResamplingResult> result =
-      resampleFit (options.resampling, options.registration.scan, options.out, scan, fitted, report);
+      writeResampledFit (scan, options.registration.scan, fitted, options.resampling,
+                         {options.out, options.resampling.colours}, report, std::cerr);
   if (result && !options.registration.quiet)
     std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
               << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "

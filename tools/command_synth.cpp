@@ -3,11 +3,12 @@
 #include "commands.h"
 #include "option_checks.h"
 #include "progress.h"
+#include "provenance.h"
 #include "scanner_options.h"
-#include "synthetic_output.h"
 
 #include <morphreg/common/landmarks.h>
 #include <morphreg/io/output_transaction.h>
+#include <morphreg/synthetic/population_files.h>
 
 #include <cmath>
 #include <iostream>
@@ -43,9 +44,9 @@ writeHeadPhotos (const SynthOptions& options, const synthetic::HeadGenerator& ge
   for (int i = 0; i < options.photos; ++i) {
     const auto& head = heads[static_cast<std::size_t> (i)];
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t> (i);
-    writePhotos (options.out, "photo_" + std::to_string (i),
-                 simulator.photograph (head.mesh.vertices, frontal, generator.profileLine (), seed),
-                 static_cast<std::size_t> (i));
+    synthetic::writePhotoFiles (options.out, "photo_" + std::to_string (i),
+                                simulator.photograph (head.mesh.vertices, frontal, generator.profileLine (), seed),
+                                static_cast<std::size_t> (i), provenanceJson ());
   }
 }
 
@@ -57,12 +58,16 @@ runSynth (const SynthOptions& options)
   OutputTransaction output ({}, {options.out});
   const synthetic::HeadGenerator generator (options.resolution);
   const std::vector<synthetic::SyntheticHead> heads = generator.population (options.count, options.seed);
-  writePopulation (options.out, generator, heads, options.seed, options.quiet);
+  const Progress writing ("writing heads", options.count, options.quiet);
+  synthetic::writePopulationFiles (options.out, generator, heads, options.seed, provenanceJson (),
+                                   [&writing] (std::size_t done) { writing.step (static_cast<int> (done)); });
+  writing.finish ();
   const Progress progress ("scanning heads", options.scans, options.quiet);
   for (int i = 0; i < options.scans; ++i) {
     const std::string name = "scan_" + std::to_string (i);
     const TriangleMesh& head = heads[static_cast<std::size_t> (i)].mesh;
-    writeScan (options.out, name, scanner.scan (head, options.seed + i), head, generator.landmarks ());
+    synthetic::writeScanFiles (options.out, name, scanner.scan (head, options.seed + i), head, generator.landmarks (),
+                               provenanceJson ());
     progress.step (i + 1);
   }
   if (options.scans > 0)

@@ -1,19 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
-// The resampling step after a registration, shared by `resample` and `build-model --from-scans`: the scan moved into
-// the fitted model's topology by ScanResampler, the mesh written and its statistics added to the scan's report.
-#include <morphreg/mesh/triangle_mesh.h>
+// The resampling options of `resample` and `build-model --from-scans` (the library's writeResampledFit, in
+// morphreg/pipeline/fit_resampling.h, resamples and writes the mesh).
 #include <morphreg/resampling/resampling_settings.h>
-#include <morphreg/resampling/scan_resampler.h>
-
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-
-#include <nlohmann/json.hpp>
 
 #include <CLI/CLI.hpp>
 
-#include <optional>
 #include <string>
 
 namespace morphreg
@@ -30,15 +22,5 @@ struct ResamplingOptions : ResamplingSettings
 void
 addResamplingOptions (CLI::App* command, ResamplingOptions& options);
 
-/** Resamples \a scan (file \a scan_file, for messages) into the topology of \a fitted, writes the resampled mesh to
- *  \a out (PLY; vertex colours as options.colours says: the scan's, see scanColoursAt, at report["scan"]
- *  ["scale_to_mm"], or grey observed, orange filled) and adds "resampling", "resampled_mesh" and
- *  "resampled_mesh_colours" to \a report. A fit that failed its checks is not resampled (the report says so):
- *  returns nothing. Throws InvalidInputError naming the scan when the resampler refuses it (no overlap, another
- *  unit, too large a hole).
- */
-std::optional<ResamplingResult>
-resampleFit (const ResamplingOptions& options, const std::string& scan_file, const std::string& out,
-             const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted, nlohmann::json& report);
 } // namespace tools
 } // namespace morphreg

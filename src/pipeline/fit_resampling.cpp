@@ -1,12 +1,30 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
+#include <morphreg/io/mesh_io.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/pipeline/fit_resampling.h>
+#include <morphreg/pipeline/scan_colours.h>
 #include <morphreg/resampling/resampling_report.h>
 
 #include <chrono>
 
 namespace morphreg
 {
+namespace
+{
+/** Observed vertices light grey, filled ones orange. */
+VertexColours
+stateColours (const std::vector<ResampledVertex>& state)
+{
+  VertexColours colours (3, static_cast<Eigen::Index> (state.size ()));
+  for (std::size_t v = 0; v < state.size (); ++v)
+    colours.col (static_cast<Eigen::Index> (v)) =
+        state[v] == ResampledVertex::observed ? Rgb8 (200, 200, 200) : Rgb8 (240, 120, 20);
+  return colours;
+}
+} // namespace
+
 FitResampling
 resampleFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& scan_name, const TriangleMesh& fitted,
              bool fit_passed, const ResamplingSettings& settings)
@@ -31,6 +49,25 @@ resampleFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& s
   resampled.report["timings_s"]["total"] =
       std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   return resampled;
+}
+
+std::optional<ResamplingResult>
+writeResampledFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& scan_file,
+                   const TriangleMesh& fitted, const ResamplingSettings& settings, const ResampledMeshFile& file,
+                   nlohmann::json& report, std::ostream& warnings)
+{
+  FitResampling resampled = resampleFit (scan, scan_file, fitted, report["checks"]["passed"].get<bool> (), settings);
+  report["resampling"] = resampled.report;
+  report["resampled_mesh"] = nullptr;
+  if (!resampled.result)
+    return std::nullopt;
+  const ResamplingResult& result = *resampled.result;
+  const auto scan_colours = scanColoursAt (scan_file, report["scan"].value ("scale_to_mm", 1.0), file.colours,
+                                           result.mesh.vertices, warnings);
+  savePolygonMesh (file.path, toPolygonMesh (result.mesh, scan_colours ? *scan_colours : stateColours (result.state)));
+  report["resampled_mesh_colours"] = scan_colours ? "scan" : "state";
+  report["resampled_mesh"] = file.path;
+  return std::move (resampled.result);
 }
 
 } // namespace morphreg

@@ -3,7 +3,7 @@
 /** \file fit_resampling.h
  *  \brief A registered scan resampled into its fit's topology (the step after ScanRegistration of `morphreg
  *  resample` and `build-model --from-scans`): skipped for a fit that failed its checks, refused naming the scan when
- *  the resampler cannot use it, and reported.
+ *  the resampler cannot use it, and reported; writeResampledFit() writes the mesh and adds it to the fit's report.
  */
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/resampling/resampling_settings.h>
@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <ostream>
 #include <string>
 
 namespace morphreg
@@ -41,5 +42,32 @@ struct FitResampling
 FitResampling
 resampleFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& scan_name, const TriangleMesh& fitted,
              bool fit_passed, const ResamplingSettings& settings);
+
+/** \brief The file writeResampledFit() writes the resampled mesh to, and its vertex colours. */
+struct ResampledMeshFile
+{
+  std::string path;              ///< the mesh file (PLY)
+  std::string colours = "state"; ///< "scan" or "auto" (the scan's, see scanColoursAt()), else "state"
+};
+
+/** \brief resampleFit() of a registration whose report is \a report (its "checks" "passed" decides whether to
+ *  resample, its "scan" "scale_to_mm" scales the scan's colours), the mesh written to \a file with vertex colours:
+ *  the scan's as scanColoursAt() gives them, else grey observed and orange filled vertices. Adds "resampling",
+ *  "resampled_mesh" (the file, null when skipped) and "resampled_mesh_colours" ("scan" or "state") to \a report.
+ *  Throws as resampleFit(), InvalidInputError for scan colours asked of a scan without them, and IoError naming a
+ *  file that cannot be written.
+ *  \param[in] scan the scan in mm, in the fit's frame
+ *  \param[in] scan_file the scan's file (its colours, and its name for messages)
+ *  \param[in] fitted the fitted mesh
+ *  \param[in] settings the resampling settings
+ *  \param[in] file where to write the mesh and how to colour it
+ *  \param[in,out] report the fit's report
+ *  \param[out] warnings where scan colours that cannot be read are said ("auto")
+ *  \return the resampled mesh; none when the fit failed its checks
+ */
+std::optional<ResamplingResult>
+writeResampledFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& scan_file,
+                   const TriangleMesh& fitted, const ResamplingSettings& settings, const ResampledMeshFile& file,
+                   nlohmann::json& report, std::ostream& warnings);
 
 } // namespace morphreg

@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "progress.h"
-#include "provenance.h"
-#include "synthetic_output.h"
-
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
-#include <morphreg/io/mesh_annotations.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
+#include <morphreg/io/mesh_annotations.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/photo/photo_view_io.h>
+#include <morphreg/synthetic/population_files.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -16,7 +14,7 @@
 
 namespace morphreg
 {
-namespace tools
+namespace synthetic
 {
 namespace
 {
@@ -38,18 +36,18 @@ landmarkPositions (const LandmarkVertices& landmarks, const TriangleMesh& head)
 }
 
 nlohmann::json
-parametersJson (const synthetic::HeadParameters& parameters)
+parametersJson (const HeadParameters& parameters)
 {
   nlohmann::json json;
-  for (const auto& range : synthetic::HeadParameters::ranges ())
+  for (const auto& range : HeadParameters::ranges ())
     json[range.name] = parameters.*(range.member);
   return json;
 }
 
-/** The topology's annotations: regions.json and landmark_vertices.json (read by build-model), referenced from the
+/** The topology's annotations: regions.json and landmark_vertices.json (the model builder reads them), referenced from the
  *  manifest with the profile line. */
 nlohmann::json
-writeTopology (const std::string& directory, const synthetic::HeadGenerator& generator)
+writeTopology (const std::string& directory, const HeadGenerator& generator)
 {
   saveRegionLabels (directory + "/regions.json", generator.regions ());
   saveLandmarkVertices (directory + "/landmark_vertices.json", generator.landmarks ());
@@ -58,8 +56,8 @@ writeTopology (const std::string& directory, const synthetic::HeadGenerator& gen
           {"landmark_vertices", "landmark_vertices.json"},
           {"profile_line", generator.profileLine ()}};
 }
-} // namespace
 
+/** Creates \a directory (and parents); IoError naming it on failure. */
 void
 makeDirectory (const std::string& directory)
 {
@@ -69,16 +67,26 @@ makeDirectory (const std::string& directory)
     throw IoError (directory + ": cannot create the directory (" + ec.message () + ")");
 }
 
+/** Writes \a document to \a path with \a provenance as "morphreg" when it is not null. */
+void
+writeStamped (const std::string& path, nlohmann::json document, const nlohmann::json& provenance)
+{
+  if (!provenance.is_null ())
+    document["morphreg"] = provenance;
+  writeJsonFile (path, document);
+}
+} // namespace
+
 nlohmann::json
-writePopulation (const std::string& directory, const synthetic::HeadGenerator& generator,
-                 const std::vector<synthetic::SyntheticHead>& heads, std::uint64_t seed, bool quiet)
+writePopulationFiles (const std::string& directory, const HeadGenerator& generator,
+                      const std::vector<SyntheticHead>& heads, std::uint64_t seed, const nlohmann::json& provenance,
+                      const HeadWrittenCallback& head_written)
 {
   makeDirectory (directory);
   nlohmann::json manifest = writeTopology (directory, generator);
   manifest["units"] = "mm";
   manifest["seed"] = seed;
   manifest["heads"] = nlohmann::json::array ();
-  const Progress progress ("writing heads", static_cast<int> (heads.size ()), quiet);
   for (std::size_t i = 0; i < heads.size (); ++i) {
     const std::string file = headFileName (i, ".ply"), landmarks = headFileName (i, "_landmarks.json");
     saveTriangleMesh (directory + "/" + file, heads[i].mesh);
@@ -87,16 +95,16 @@ writePopulation (const std::string& directory, const synthetic::HeadGenerator& g
                                   {"landmarks", landmarks},
                                   {"seed", seed + i},
                                   {"parameters", parametersJson (heads[i].parameters)}});
-    progress.step (static_cast<int> (i + 1));
+    if (head_written)
+      head_written (i + 1);
   }
-  progress.finish ();
-  writeReport (directory + "/population.json", manifest);
+  writeStamped (directory + "/population.json", manifest, provenance);
   return manifest;
 }
 
 nlohmann::json
-writeScan (const std::string& directory, const std::string& name, const synthetic::SimulatedScan& scan,
-           const TriangleMesh& head, const LandmarkVertices& landmarks)
+writeScanFiles (const std::string& directory, const std::string& name, const SimulatedScan& scan,
+                const TriangleMesh& head, const LandmarkVertices& landmarks, const nlohmann::json& provenance)
 {
   makeDirectory (directory);
   TriangleMesh posed = head;
@@ -114,7 +122,7 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
                           {"source_triangle", scan.source_triangle},
                           {"barycentric", std::vector<double> (scan.barycentric.data (),
                                                                scan.barycentric.data () + scan.barycentric.size ())}};
-  writeReport (directory + "/" + name + "_truth.json", truth);
+  writeStamped (directory + "/" + name + "_truth.json", truth, provenance);
   if (!scan.range_mesh.polygons.empty ())
     savePolygonMesh (directory + "/" + name + "_range.ply", scan.range_mesh);
   return {{"cloud", name + ".pcd"},
@@ -127,8 +135,8 @@ writeScan (const std::string& directory, const std::string& name, const syntheti
 }
 
 nlohmann::json
-writePhotos (const std::string& directory, const std::string& name, const synthetic::SimulatedPhotos& photos,
-             std::size_t head_index)
+writePhotoFiles (const std::string& directory, const std::string& name, const SimulatedPhotos& photos,
+                 std::size_t head_index, const nlohmann::json& provenance)
 {
   makeDirectory (directory);
   saveProfileView (directory + "/" + name + "_profile.json", photos.profile);
@@ -141,9 +149,9 @@ writePhotos (const std::string& directory, const std::string& name, const synthe
                                 {"head_to_photo", std::vector<double> (pose.data (), pose.data () + 16)},
                                 {"head_to_photo_layout", "column-major 4x4"},
                                 {"scale", photos.scale}};
-  writeReport (directory + "/" + name + "_truth.json", truth);
+  writeStamped (directory + "/" + name + "_truth.json", truth, provenance);
   return {{"profile", name + "_profile.json"}, {"frontal", name + "_frontal.json"}, {"truth", name + "_truth.json"}};
 }
 
-} // namespace tools
+} // namespace synthetic
 } // namespace morphreg
