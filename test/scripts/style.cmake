@@ -13,6 +13,12 @@ add_test(NAME StyleTest.FunctionsAreAtMost60Lines
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_function_length.py --max-lines 60
           ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/include ${PROJECT_SOURCE_DIR}/python/src
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+# FixtureTest: every fixture a test requires is set up by some test, so ctest orders them (scripts/check_fixtures.py
+# reads the suite from ctest itself).
+add_test(NAME FixtureTest.EveryRequiredFixtureIsSetUp
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_fixtures.py ${CMAKE_BINARY_DIR})
+add_test(NAME FixtureTest.CheckerFindsAnUnknownFixture
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_fixtures.py --self-test)
 # LayerTest: the library's folders include only the folders docs/architecture.md's layer table allows them, and no
 # public header names the shared data's path (scripts/check_layers.py).
 add_test(NAME LayerTest.IncludesFollowTheLayers

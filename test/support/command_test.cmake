@@ -76,9 +76,12 @@ function(morphreg_add_parsed_test name)
   endif()
   math(EXPR timeout "${arg_TIMEOUT} * ${MORPHREG_TEST_TIMEOUT_FACTOR}")
   set_tests_properties(${name} PROPERTIES TIMEOUT ${timeout} SKIP_REGULAR_EXPRESSION "SKIPPED: " ${arg_PROPERTIES})
+  # cmake_parse_arguments(PARSE_ARGV) keeps a quoted "a;b" as one value with an escaped semicolon, which ctest would
+  # take for one fixture named "a;b": split it into the fixtures it lists.
   foreach(kind REQUIRED SETUP)
     if(arg_FIXTURES_${kind})
-      set_tests_properties(${name} PROPERTIES FIXTURES_${kind} "${arg_FIXTURES_${kind}}")
+      string(REPLACE "\\;" ";" fixtures "${arg_FIXTURES_${kind}}")
+      set_tests_properties(${name} PROPERTIES FIXTURES_${kind} "${fixtures}")
     endif()
   endforeach()
   if(arg_XVFB)
