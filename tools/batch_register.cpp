@@ -10,6 +10,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/io/output_lock.h>
 #include <morphreg/pipeline/batch_registration.h>
+#include <morphreg/pipeline/batch_shard.h>
 
 #include <algorithm>
 #include <atomic>
@@ -53,39 +54,6 @@ onTerminate (int)
 {
   releaseOutputLockNow ();
   _exit (143);
-}
-
-int
-environmentInteger (const char* name)
-{
-  const char* value = std::getenv (name);
-  if (value == nullptr || *value == '\0')
-    throw InvalidInputError (std::string ("--shard auto: the environment variable ") + name +
-                             " is not set (run it as a Slurm job array: sbatch --array=0-(N-1))");
-  char* end = nullptr;
-  const long number = std::strtol (value, &end, 10);
-  if (*end != '\0' || number < 0)
-    throw InvalidInputError (std::string ("--shard auto: ") + name + "='" + value + "' is not a whole number");
-  return static_cast<int> (number);
-}
-
-/** "I/N", or "auto": Slurm's array task id (less the array's first id) of its task count. */
-BatchShard
-parseShard (const std::string& text)
-{
-  if (text.empty ())
-    return {};
-  if (text == "auto") {
-    const int first = std::getenv ("SLURM_ARRAY_TASK_MIN") ? environmentInteger ("SLURM_ARRAY_TASK_MIN") : 0;
-    return {environmentInteger ("SLURM_ARRAY_TASK_ID") - first, environmentInteger ("SLURM_ARRAY_TASK_COUNT")};
-  }
-  BatchShard shard;
-  char slash = 0, rest = 0;
-  std::istringstream stream (text);
-  if (!(stream >> shard.index >> slash >> shard.count) || slash != '/' || stream >> rest || shard.count < 1 ||
-      shard.index < 0 || shard.index >= shard.count)
-    throw InvalidInputError ("--shard '" + text + "': expected I/N with 0 <= I < N (e.g. 0/4), or auto");
-  return shard;
 }
 
 /** The run on the console: the library's findings, the plan, each scan's counts with rate and ETA; holds a scan
@@ -180,7 +148,7 @@ batchSettings (const RegisterOptions& options, const BatchOptions& batch)
   BatchRegistrationSettings settings;
   settings.scan = options;
   settings.jobs = batch.jobs > 0 ? batch.jobs : usableCores ();
-  settings.shard = parseShard (batch.shard);
+  settings.shard = parseBatchShard (batch.shard);
   settings.retry_failed = batch.retry_failed;
   settings.report_fields = {{"morphreg", provenanceJson ()}};
   return settings;

@@ -43,6 +43,12 @@ public:
     std::cerr << "build-model: left out " << input.file << ": " << input.reason << '\n';
   }
 
+  void
+  warning (const std::string& text) override
+  {
+    std::cerr << "build-model: warning: " << text << '\n';
+  }
+
 private:
   bool quiet_;
   std::optional<Progress> progress_;

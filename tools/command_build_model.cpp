@@ -7,7 +7,6 @@
 #include "provenance.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/common/memory_budget.h>
 #include <morphreg/datasets/ict_facekit.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
@@ -47,10 +46,34 @@ buildFromIct (const BuildModelOptions& options)
   const MorphableModel::Ptr ict = loadIctFaceKit (options.ict_directory);
   ModelFromIctSettings settings = options.ict;
   settings.builder = options.settings;
-  requireMemory (ictModelMemory (*ict, settings), "build-model --samples " + std::to_string (settings.samples) +
-                                                      " (heads of the ICT model's " +
-                                                      std::to_string (ict->numVertices ()) + " vertices)");
   return buildModelFromIct (*ict, options.ict_directory, settings);
+}
+
+/** Builds the model of options.from_scans with ModelFromScans, each scan registered with options.registration's
+ *  model and resampled, its report, fit and resampled mesh and the study's summary.json written into
+ *  \a report_dir; adds the registering model and the report folder to the outcome's source. */
+ModelBuildingOutcome
+buildFromScans (const BuildModelOptions& options, const std::string& report_dir)
+{
+  const ScanManifest scans = loadScanList (options.from_scans);
+  ModelFromScansSettings settings;
+  settings.builder = options.settings;
+  settings.regions = options.regions;
+  settings.landmark_vertices = options.landmark_vertices;
+  settings.registration = options.registration;
+  settings.resampling = options.resampling;
+  ModelFromScans building (loadModelFile (options.registration.model, std::cout), settings);
+  building.writeScanFilesInto (report_dir, options.registration.model, options.registration.colours,
+                               {{"morphreg", provenanceJson ()}});
+  BuildModelConsole console (options.quiet);
+  building.setObserver (&console);
+  ModelBuildingOutcome outcome = building.build (scans, options.from_scans);
+  const std::size_t included = outcome.source["included"];
+  std::cout << "build-model: " << included << " of " << scans.size () << " scans registered and resampled, "
+            << scans.size () - included << " left out (reports in " << report_dir << ")\n";
+  outcome.source["registering_model"] = options.registration.model;
+  outcome.source["report_dir"] = report_dir;
+  return outcome;
 }
 
 void
@@ -90,18 +113,25 @@ addInputs (const BuildModelOptions& options, OutputPlan& plan)
   plan.addInputFolder (options.ict_directory, "--from-ict");
 }
 
-/** The outputs of --from-scans in \a report_dir: each scan's report, fit and resampled mesh, and the summary. */
+/** Adds the ModelBuilder settings (--components, --variance, --blend-rings, --no-procrustes) to \a command. */
 void
-addScanOutputs (const BuildModelOptions& options, const std::string& report_dir, OutputPlan& plan)
+addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
 {
-  for (const ScanEntry& entry : loadScanList (options.from_scans)) {
-    const std::string base = (std::filesystem::path (report_dir) / entry.id).string ();
-    plan.addOutput (base + ".json", "the report of scan '" + entry.id + "'");
-    plan.addOutput (base + "_fit.ply", "the fit of scan '" + entry.id + "'");
-    plan.addOutput (base + ".ply", "the resampled mesh of scan '" + entry.id + "'");
-  }
-  plan.addOutput ((std::filesystem::path (report_dir) / "summary.json").string (), "the summary of --report-dir");
+  command
+      ->add_option ("--components", settings.max_components, "at most this many components per region (0 = no limit)")
+      ->check (nonNegative ())
+      ->capture_default_str ();
+  command
+      ->add_option ("--variance", settings.explained_variance,
+                    "keep the fewest components explaining this fraction of each region's variance")
+      ->check (inRange (1e-6, 1.0))
+      ->capture_default_str ();
+  command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
+      ->check (nonNegative ())
+      ->capture_default_str ();
+  command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
 }
+
 } // namespace
 
 nlohmann::json
@@ -115,7 +145,8 @@ buildModelFile (const BuildModelOptions& options)
   addInputs (options, plan);
   plan.addOutput (options.out, "--out");
   if (!options.from_scans.empty ())
-    addScanOutputs (options, report_dir, plan);
+    for (const auto& [file, what] : ModelFromScans::scanFolderOutputs (loadScanList (options.from_scans), report_dir))
+      plan.addOutput (file, what);
   // The report folder is made (and removed again on failure) by the transaction before the plan checks it.
   OutputTransaction outputs ({options.out}, options.from_scans.empty () ? std::vector<std::string> ()
                                                                         : std::vector<std::string>{report_dir});
@@ -134,24 +165,6 @@ buildModelFile (const BuildModelOptions& options)
   summary["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   outputs.commit ((std::filesystem::path (report_dir) / "summary.json").string ());
   return summary;
-}
-
-void
-addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
-{
-  command
-      ->add_option ("--components", settings.max_components, "at most this many components per region (0 = no limit)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--variance", settings.explained_variance,
-                    "keep the fewest components explaining this fraction of each region's variance")
-      ->check (inRange (1e-6, 1.0))
-      ->capture_default_str ();
-  command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
 }
 
 /** The options of `--from-scans` (\a scans): the registering model, the reports and the fits' settings. */

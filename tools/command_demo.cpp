@@ -9,11 +9,10 @@
 #include "provenance.h"
 #include "scanner_options.h"
 
-#include <morphreg/common/error.h>
 #include <morphreg/synthetic/population_files.h>
+#include <morphreg/visualization/x_display.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -71,9 +70,9 @@ runDemo (DemoOptions options)
 {
   const auto start = std::chrono::steady_clock::now ();
   const synthetic::ScanSimulator check_scanner (options.scanner); // bad scanner settings fail before any work
-  if ((options.screenshot || options.convergence_plot) && !std::getenv ("DISPLAY"))
-    throw InvalidInputError ("demo: the overlay screenshot and the convergence plot render through X and $DISPLAY is "
-                             "unset; run under `xvfb-run -a` (scripts/demo.sh does) or pass --no-screenshot");
+  if (options.screenshot || options.convergence_plot)
+    requireXDisplay ("demo (its overlay screenshot and plot; scripts/demo.sh runs it under xvfb-run, --no-screenshot "
+                     "skips them)");
   // Each step's outputs are committed when the step is complete (each later step reads them); report.json, written
   // last, marks a complete demo.
   const synthetic::HeadGenerator generator (options.resolution);

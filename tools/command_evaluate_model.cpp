@@ -65,22 +65,10 @@ private:
   std::optional<Progress> progress_;
 };
 
-/** Names the option when a count of --components is more than the model has. */
-void
-checkComponentsOption (const EvaluateModelOptions& options, const MorphableModel& model)
-{
-  const auto available = model.globalVariances ().size ();
-  for (const int k : options.components)
-    if (k < 0 || k > available)
-      throw InvalidInputError ("evaluate-model: --components " + std::to_string (k) + ": " + options.model + " has " +
-                               std::to_string (available) + " global components");
-}
-
 /** Every measure per component count. */
 nlohmann::json
 evaluate (const EvaluateModelOptions& options, const MorphableModel& model)
 {
-  checkComponentsOption (options, model);
   ModelEvaluationSettings settings;
   settings.samples = options.samples;
   settings.seed = options.seed;

@@ -7,25 +7,20 @@
 #include "option_checks.h"
 #include "pipeline.h"
 #include "provenance.h"
+#include "table_options.h"
 
-#include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
-#include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/photo/photo_fit_options.h>
 #include <morphreg/pipeline/photo_registration.h>
 
 #include <chrono>
-#include <cmath>
 #include <algorithm>
-#include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <optional>
 
 namespace morphreg
 {
@@ -42,22 +37,14 @@ struct FitPhotosOptions : PhotoFitOptions
   bool quiet = false;
 };
 
-/** The option combinations that name no photos, or photos the approach cannot fit. */
+/** The approach needs frontal landmarks: a pair without its frontal annotation fits only the profile. (The library
+ *  refuses the other combinations as it reads the photos.) */
 void
 requirePhotoOptions (const FitPhotosOptions& options)
 {
-  const PhotoSetFiles& photos = options.photos;
-  if (!photos.views.empty () && (!photos.profile.empty () || !photos.frontal.empty () || !photos.photo.empty ()))
-    throw InvalidInputError ("fit-photos: --view photos and the orthographic pair (--profile, --frontal, --photo) "
-                             "cannot be fitted together (their frames differ)");
-  if (photos.views.empty () && photos.profile.empty ())
-    throw InvalidInputError ("fit-photos: give --view photos (with --landmarks, --camera, --outline) or the "
-                             "orthographic pair (--profile, --frontal)");
-  if (photos.views.empty () && photos.frontal.empty () && options.approach != "profile")
+  if (options.photos.views.empty () && options.photos.frontal.empty () && options.approach != "profile")
     throw InvalidInputError ("fit-photos --approach " + options.approach +
                              " needs --frontal (the frontal landmarks); only --approach profile fits without them");
-  if (!photos.photo.empty () && photos.frontal.empty ())
-    throw InvalidInputError ("fit-photos --photo needs --frontal: the frontal annotation places the photo");
 }
 
 /** Says on stderr what the fit does and what it warns of. */
@@ -115,32 +102,6 @@ printTruthErrors (const nlohmann::json& report)
             << std::defaultfloat;
 }
 
-/** Writes the fitted mesh coloured by its error against --truth (with the error as its quality), by the photos, or
- *  plain; returns what the colours show. */
-std::string
-writeFittedMesh (const FitPhotosOptions& options, const PhotoFit& fit, const PhotoSet& photos, nlohmann::json& report)
-{
-  if (!options.truth.empty ()) {
-    const PhotoTruthErrors errors = photoTruthErrors (readPhotoTruth (options.truth), fit);
-    report.update (errors.json);
-    printTruthErrors (report);
-    savePolygonMesh (options.out,
-                     toPolygonMesh (fit.model_mesh, residualColours (errors.vertex_errors, options.colour_max),
-                                    errors.vertex_errors));
-    return "error against the truth, 0-" + nlohmann::json (options.colour_max).dump () + " mm";
-  }
-  const std::optional<VertexTexture> texture = photoTexture (fit, photos);
-  if (!texture) {
-    saveTriangleMesh (options.out, fit.model_mesh);
-    return "none";
-  }
-  report["texture"] = {{"photos", std::count_if (photos.images.begin (), photos.images.end (),
-                                                 [] (const RgbImage& image) { return image.width > 0; })},
-                       {"visible_vertices", texture->visibleCount ()}};
-  savePolygonMesh (options.out, toPolygonMesh (fit.model_mesh, texture->colours));
-  return "the photos, blended by angle (grey where unseen)";
-}
-
 /** The run's inputs and outputs, checked before anything is read. */
 OutputPlan
 fitPhotosPlan (const FitPhotosOptions& options)
@@ -173,7 +134,10 @@ runFitPhotos (const FitPhotosOptions& options)
   const PhotoSet photos = readPhotoSet (options.photos);
   PhotoRegistrationOutcome outcome = registration.fit (photos);
   printFitSummary (options, outcome.fit);
-  const std::string colouring = writeFittedMesh (options, outcome.fit, photos, outcome.report);
+  const std::string colouring =
+      writePhotoFitMesh (options.out, outcome.fit, photos, options.truth, options.colour_max, outcome.report);
+  if (!options.truth.empty ())
+    printTruthErrors (outcome.report);
   outcome.report["output"] = {{"mesh", options.out}, {"frame", "model, mm"}, {"colours", colouring}};
   outcome.report["seconds"] = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   if (!options.report.empty ())
@@ -232,50 +196,19 @@ addViewOptions (CLI::App* command)
   return [command, view, parts] () { return viewGroups (*command, view, parts); };
 }
 
+/** The photo fit's settings from the library's table (photo_fit_options.h); --shape-prior also takes auto. */
 void
 addFitSettingOptions (CLI::App* command, const std::shared_ptr<FitPhotosOptions>& options)
 {
-  command->add_option ("--smoothness", options->smoothness, "lambda_1, the smoothness prior across regions (> 0)")
-      ->check (positive ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--shape-prior", options->shape_prior_text,
-                    "lambda_2, the shape prior (>= 0, coefficients in prior standard deviations), or auto: chosen "
-                    "from the landmark noise and landmarks left out of the fit")
-      ->check (CLI::IsMember ({"auto"}) | nonNegative ())
-      ->capture_default_str ();
-  command->add_option ("--landmark-noise", options->landmark_noise, "the landmarks' noise in pixels (> 0)")
-      ->check (positive ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--components", options->components,
-                    "shape components per region: one count for all, or one per region")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--coefficient-limit", options->coefficient_limit,
-                    "no shape coefficient beyond this many prior standard deviations (> 0; inf for no limit)")
-      ->check (positiveOrInfinite ())
-      ->capture_default_str ();
-  command->add_option ("--landmark-weight", options->landmark_weight, "weight of each landmark's rows (> 0)")
-      ->check (positive ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--outline-landmarks", options->outline_landmarks,
-                    "the jaw, chin, neck and head-contour landmarks: outline (the model's outline passes through "
-                    "them), vertex (fixed vertices) or ignored")
-      ->check (CLI::IsMember ({"outline", "vertex", "ignored"}))
-      ->capture_default_str ();
-  command
-      ->add_option ("--outline-landmark-weight", options->outline_landmark_weight,
-                    "weight of each outline landmark's row (>= 0)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--sagittal-weight", options->sagittal_weight,
-                    "weight of the rows that keep the profile in the plane X = 0 (0 for a turned or tilted head)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
+  for (const PhotoFitOption& option : photoFitOptionTable ()) {
+    if (option.name != "shape_prior") {
+      addTableOption<PhotoFitOptions> (command, *options, option);
+      continue;
+    }
+    command->add_option ("--shape-prior", options->shape_prior_text, option.help)
+        ->check (CLI::IsMember ({"auto"}) | nonNegative ())
+        ->capture_default_str ();
+  }
 }
 } // namespace
 
@@ -291,12 +224,6 @@ registerFitPhotosCommand (CLI::App& app)
   command->add_option ("--profile", options->photos.profile, "profile annotation (JSON: silhouette, nose tip, pixels)");
   command->add_option ("--frontal", options->photos.frontal,
                        "frontal annotation (JSON: named landmarks, pixels); needed by --approach joint and tps");
-  std::string approaches;
-  for (const std::string& name : photoFitMethodNames ())
-    approaches += (approaches.empty () ? "" : ", ") + name;
-  command->add_option ("--approach", options->approach, "the fitting method: " + approaches)
-      ->check (CLI::IsMember (photoFitMethodNames ()))
-      ->capture_default_str ();
   command->add_option ("--photo", options->photos.photo,
                        "frontal photo (PNG/JPEG) of --frontal: colour the head from it");
   command->add_option ("--truth", options->truth,

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "provenance.h"
 
+#include <morphreg/io/model_description.h>
 #include <morphreg/io/model_io.h>
 
 #include <nlohmann/json.hpp>
@@ -25,38 +26,6 @@ struct ModelInfoOptions
   std::string model;
   bool json = false;
 };
-
-std::vector<double>
-toStdVector (const Eigen::VectorXd& values)
-{
-  return std::vector<double> (values.data (), values.data () + values.size ());
-}
-
-/** The model's description; both outputs are printed from it. */
-nlohmann::json
-describeModel (const std::string& path, const MorphableModel& model)
-{
-  nlohmann::json regions = nlohmann::json::array ();
-  for (const ModelRegion& region : model.regions ())
-    regions.push_back ({{"name", region.name},
-                        {"vertices", region.vertices.size ()},
-                        {"components", region.variances.size ()},
-                        {"variances_mm2", toStdVector (region.variances)}});
-  const auto file_units = model.metadata ().find (kFileUnitsKey);
-  return {
-      {"file", path},
-      {"units", model.units ()},
-      {"file_units", file_units == model.metadata ().end () ? std::string ("mm") : file_units->second},
-      {"vertices", model.numVertices ()},
-      {"triangles", model.triangles ().cols ()},
-      {"regions", regions},
-      {"global_pca",
-       {{"components", model.globalVariances ().size ()}, {"variances_mm2", toStdVector (model.globalVariances ())}}},
-      {"noise_variance_mm2", model.noiseVariance ()},
-      {"profile_line_vertices", model.profileLine ().size ()},
-      {"landmarks", model.landmarks ()},
-      {"metadata", model.metadata ()}};
-}
 
 /** "12.5 3.1 ... (40 in all)": the first few variances of a list. */
 std::string
@@ -102,7 +71,7 @@ registerModelInfoCommand (CLI::App& app)
       ->required ();
   command->add_flag ("--json", options->json, "print JSON (every variance) instead of text");
   command->callback ([options] () {
-    const nlohmann::json info = describeModel (options->model, *loadModel (options->model));
+    const nlohmann::json info = describeModel (*loadModel (options->model), options->model);
     if (options->json)
       std::cout << stamped (info).dump (2) << '\n';
     else

@@ -7,38 +7,24 @@
 #include "option_checks.h"
 #include "pipeline.h"
 #include "progress.h"
-#include "display_inputs.h"
 #include "provenance.h"
-#include <morphreg/pipeline/scan_colours.h>
 #include "table_options.h"
 
-#include <morphreg/common/cloud_matrix.h>
-#include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
-#include <morphreg/common/length_unit.h>
-#include <morphreg/io/file_format.h>
-#include <morphreg/io/json_file.h>
-#include <morphreg/io/landmark_io.h>
-#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
-#include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/pipeline/scan_colours.h>
 #include <morphreg/pipeline/scan_input.h>
 #include <morphreg/pipeline/scan_registration.h>
 #include <morphreg/registration/morphable_icp.h>
-#include <morphreg/registration/registration_result_json.h>
 #include <morphreg/registration/registration_options.h>
 #include <morphreg/registration/registration_settings.h>
-#include <morphreg/pipeline/scan_units.h>
-#include <morphreg/common/colour_map.h>
 #include <morphreg/visualization/convergence_plot.h>
+#include <morphreg/visualization/fit_layers.h>
 #include <morphreg/visualization/registration_visualizer.h>
+#include <morphreg/visualization/x_display.h>
 
-#include <algorithm>
-#include <limits>
 #include <chrono>
-#include <cstdlib>
-#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -61,42 +47,15 @@ secondsSince (Clock::time_point start)
   return std::chrono::duration<double> (Clock::now () - start).count ();
 }
 
-/** Vertex distances between the fit and the true mesh (model topology, scan frame), over every vertex and over
- *  the vertices the scan covers (those with a residual); printed and reported. */
-nlohmann::json
-truthErrors (const RegisterOptions& options, const TriangleMesh& fitted, const Eigen::VectorXd& residuals,
-             std::ostream& out)
+/** The fit's vertex distances to the true mesh (truthVertexErrors) on \a out. */
+void
+printTruthErrors (const nlohmann::json& report, std::ostream& out)
 {
-  const TriangleMesh truth = loadTriangleMesh (options.truth);
-  requireSameTopology (fitted, truth, options.truth);
-  const Eigen::VectorXd errors = (fitted.vertices - truth.vertices).colwise ().norm ().transpose ();
-  const Eigen::VectorXd covered = residuals.array ().isFinite ().select (errors, NAN);
-  nlohmann::json report = distanceStatistics (errors);
-  report["covered_by_scan"] = distanceStatistics (covered);
-  report["file"] = options.truth;
-  out << "vertex RMS against the truth " << options.truth << ": " << std::fixed << std::setprecision (3)
-      << report["rms"].get<double> () << " mm (mean " << report["mean"].get<double> () << ", max "
-      << report["max"].get<double> () << "); over the " << report["covered_by_scan"]["count"]
+  out << "vertex RMS against the truth " << report["file"].get<std::string> () << ": " << std::fixed
+      << std::setprecision (3) << report["rms"].get<double> () << " mm (mean " << report["mean"].get<double> ()
+      << ", max " << report["max"].get<double> () << "); over the " << report["covered_by_scan"]["count"]
       << " vertices the scan covers: RMS " << report["covered_by_scan"]["rms"].get<double> () << " mm\n"
       << std::defaultfloat;
-  return report;
-}
-
-/** The fitted model coloured by residual under a sparse sample of the scan's points (small, grey: no moiré), seen
- *  from the fitted face's front-left, the head filling the picture. */
-void
-saveOverlay (RegistrationVisualizer& viewer, const RegisterOptions& options,
-             const pcl::PointCloud<pcl::PointNormal>& scan, const TriangleMesh& fitted,
-             const Eigen::VectorXd& residuals, double scale, const Eigen::Matrix4d& pose)
-{
-  const std::size_t scan_points = static_cast<std::size_t> (options.width) * options.height / 60;
-  viewer.addScanOverlay (scan, scan_points, "scan");
-  viewer.addResidualHeatMap (fitted, residuals, scale, "residuals");
-  viewer.setFramedShapes ({"residuals"});
-  const Eigen::Matrix3d linear = pose.topLeftCorner<3, 3> ();
-  const Eigen::Matrix3d rotation = linear / std::cbrt (linear.determinant ());
-  viewer.resetCamera (rotation * Eigen::Vector3d (0.5, 0.15, 1.0).normalized (), rotation * Eigen::Vector3d::UnitY ());
-  viewer.saveScreenshot (options.screenshot, options.width, options.height);
 }
 
 /** The overlay (with a viewer) and the convergence plot (if asked), recorded in \a report; returns the seconds. */
@@ -107,8 +66,8 @@ saveFigures (RegistrationVisualizer* viewer, const RegisterOptions& options, Icp
 {
   const auto start = Clock::now ();
   if (viewer) {
-    saveOverlay (*viewer, options, scan, fitted, icp.getVertexResiduals (), scale,
-                 icp.getFinalTransformation ().cast<double> ());
+    saveFitOverlay (*viewer, scan, fitted, icp.getVertexResiduals (), scale,
+                    icp.getFinalTransformation ().cast<double> (), options.screenshot, options.width, options.height);
     report["screenshot"] = {{"file", options.screenshot}, {"width", options.width}, {"height", options.height}};
   }
   if (!options.convergence_plot.empty ()) {
@@ -129,45 +88,16 @@ runRegister (const RegisterOptions& options, const BatchOptions& batch)
   else
     registerScanBatch (options, batch);
 }
+
+/** The report file of a registration: --report, else the --out path with .json. */
+std::string
+reportPath (const RegisterOptions& options)
+{
+  return options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string ()
+                                 : options.report;
+}
+
 } // namespace
-
-ScanInput
-loadScan (const RegisterOptions& options)
-{
-  if (options.intrinsics.empty ())
-    return readScanFile (options.scan);
-  if (options.colours == "scan")
-    throw InvalidInputError ("--colours scan with --depth " + options.scan + ": a depth image has no colours");
-  if (options.units != "auto" && options.units != "mm")
-    throw InvalidInputError ("--units " + options.units + " with --depth: a depth image holds mm");
-  return readDepthImageScan (options.scan, options.intrinsics);
-}
-
-namespace
-{
-/** Says on \a out when the scan's format fixes its unit (glTF: metres), converted on reading. */
-void
-reportFileUnit (const RegisterOptions& options, std::ostream& out)
-{
-  if (const std::string message = scanFileUnitMessage (options.scan); !message.empty ())
-    out << message << '\n';
-}
-} // namespace
-
-LengthUnitGuess
-convertScanToMillimetres (ScanInput& scan, const RegisterOptions& options, const MorphableModel& model,
-                          std::ostream& out)
-{
-  reportFileUnit (options, out);
-  const std::string units = scan.unit ? toString (*scan.unit) : options.units;
-  const LengthUnitGuess unit =
-      morphreg::convertScanToMillimetres (*scan.cloud, units, model, options.scan, scan.viewpoint.has_value ());
-  if (scan.viewpoint)
-    *scan.viewpoint *= unit.scale_to_mm;
-  if (unit.unit != LengthUnit::millimetre)
-    out << "units: the scan's unit is " << toString (unit.unit) << " (" << unit.reason << "); rescaled to mm\n";
-  return unit;
-}
 
 void
 addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan)
@@ -177,13 +107,6 @@ addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan)
   plan.addInput (options.model, "--model");
   plan.addInput (options.landmarks, "--landmarks");
   plan.addInput (options.truth, "--truth");
-}
-
-std::string
-reportPath (const RegisterOptions& options)
-{
-  return options.report.empty () ? std::filesystem::path (options.out).replace_extension (".json").string ()
-                                 : options.report;
 }
 
 MorphableModel::Ptr
@@ -213,10 +136,8 @@ registerScanFile (const RegisterOptions& options)
   std::optional<RegistrationVisualizer> viewer;
   if (!options.screenshot.empty ())
     viewer.emplace (RegistrationVisualizer::Display::Offscreen);
-  const char* x_display = std::getenv ("DISPLAY");
-  if (!options.convergence_plot.empty () && (x_display == nullptr || *x_display == '\0'))
-    throw InvalidInputError ("register --convergence-plot " + options.convergence_plot +
-                             ": the plot renders through X and $DISPLAY is unset; run under `xvfb-run -a`");
+  if (!options.convergence_plot.empty ())
+    requireXDisplay ("register --convergence-plot " + options.convergence_plot);
   const MorphableModel::Ptr model = loadModelFile (options.model, std::cout);
   return commitUnlessBadInput (outputs, [&] {
     return registerScan (options, model, viewer ? &*viewer : nullptr, secondsSince (start), std::cout, std::cerr);
@@ -314,8 +235,10 @@ registerFollowUp (const RegisterOptions& options, RegistrationVisualizer* viewer
 {
   return [&options, viewer, &out, follow_up] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted,
                                               nlohmann::json& report) {
-    if (!options.truth.empty ())
-      report["truth_vertex_error_mm"] = truthErrors (options, fitted, fit.icp->getVertexResiduals (), out);
+    if (!options.truth.empty ()) {
+      report["truth_vertex_error_mm"] = truthVertexErrors (fitted, fit.icp->getVertexResiduals (), options.truth);
+      printTruthErrors (report["truth_vertex_error_mm"], out);
+    }
     const double scale = report["residuals_mm"]["colour_scale_max"].get<double> ();
     report["timings_s"]["figures"] = saveFigures (viewer, options, *fit.icp, *fit.scan.cloud, fitted, scale, report);
     if (follow_up)
@@ -329,11 +252,11 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
               double model_seconds, std::ostream& out, std::ostream& warnings, const FitFollowUp& follow_up)
 {
   const auto start = Clock::now ();
-  const ScanInput scan = loadScan (options);
+  const ScanInput scan = readScanOrDepthImage (options.scan, options.intrinsics, options.colours, options.units);
   ConsoleObserver observer (options.quiet, out, warnings);
   ScanFileSettings settings = options;
   if (!options.intrinsics.empty ())
-    settings.colours = "residual"; // a depth image has no colours (loadScan refuses --colours scan with it)
+    settings.colours = "residual"; // a depth image has no colours (readScanOrDepthImage refuses colours scan)
   ScanFileRegistration registration (model, settings);
   registration.setObserver (&observer);
   registration.setReportFields ({{"morphreg", provenanceJson ()}});
@@ -345,15 +268,6 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
   concludeFit (options, outcome.fit.icp->getRegistrationReport (), outcome.report, outcome.fit.fit_seconds,
                outcome.colour_scale, out);
   return outcome.report;
-}
-
-nlohmann::json
-registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up,
-                   const std::vector<std::string>& follow_up_outputs)
-{
-  ScanFileRegistration registration (model, options);
-  registration.setReportFields ({{"morphreg", provenanceJson ()}});
-  return registration.registerStudyScan (scanFiles (options), follow_up, follow_up_outputs);
 }
 
 void

@@ -3,14 +3,12 @@
 // mesh with a per-vertex "quality" (register's fitted meshes: the residual in mm) is coloured by it, with a colour bar.
 #include "commands.h"
 #include "option_checks.h"
-#include "display_inputs.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
-#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
+#include <morphreg/visualization/fit_layers.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
 #include <iostream>
@@ -66,7 +64,10 @@ addMeshes (const RenderOptions& options, const std::vector<int>& viewports, Regi
   std::vector<std::string> ids;
   for (std::size_t i = 0; i < options.meshes.size (); ++i) {
     ids.push_back ("mesh_" + std::to_string (i));
-    addMeshFile (viewer, options.meshes[i], options.colour_max, options.opacity, ids.back (), viewports[i]);
+    const FittedMeshFile file =
+        addFittedMeshFile (viewer, options.meshes[i], options.colour_max, options.opacity, ids.back (), viewports[i]);
+    if (!file.note.empty ())
+      std::cerr << "morphreg: " << file.note << '\n';
   }
   return ids;
 }

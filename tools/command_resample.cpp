@@ -7,18 +7,14 @@
 #include "mesh_output.h"
 #include "pipeline.h"
 #include "provenance.h"
-#include <morphreg/pipeline/scan_colours.h>
 #include "scan_resampling.h"
 
-#include <morphreg/common/cloud_matrix.h>
 #include <morphreg/common/error.h>
-#include <morphreg/io/landmark_io.h>
-#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/pipeline/fit_resampling.h>
-#include <morphreg/registration/scan_checks.h>
-#include <morphreg/resampling/landmark_reference.h>
+#include <morphreg/pipeline/scan_colours.h>
+#include <morphreg/pipeline/scan_units.h>
 
 #include <filesystem>
 #include <iostream>
@@ -39,55 +35,46 @@ struct ResampleOptions
   ResamplingOptions resampling;
 };
 
-/** Resamples the fit (see writeResampledFit) and says what it did. */
+/** Says what the resampling did. */
 void
-resampleAndReport (const ResampleOptions& options, const pcl::PointCloud<pcl::PointNormal>& scan,
-                   const TriangleMesh& fitted, nlohmann::json& report)
+printResampled (const ResampleOptions& options, const std::optional<ResamplingResult>& result,
+                const nlohmann::json& report)
 {
-  const std::optional<ResamplingResult> result =
-      writeResampledFit (scan, options.registration.scan, fitted, options.resampling,
-                         {options.out, options.resampling.colours}, report, std::cerr);
-  if (result && !options.registration.quiet)
-    std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
-              << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
-              << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
-              << options.out << ' '
-              << meshContents (
-                     options.out,
-                     report["resampled_mesh_colours"] == "scan" ? kScanColoursText : "grey observed, orange filled", "")
-              << '\n';
+  if (!result || options.registration.quiet)
+    return;
+  std::cout << "resampled " << options.registration.scan << ": " << result->statistics.observed << " of "
+            << result->statistics.vertices << " vertices observed (coverage " << result->statistics.coverage << "), "
+            << result->statistics.filled << " filled in " << result->statistics.holes.size () << " holes; wrote "
+            << options.out << ' '
+            << meshContents (
+                   options.out,
+                   report["resampled_mesh_colours"] == "scan" ? kScanColoursText : "grey observed, orange filled", "")
+            << '\n';
 }
 
 /** --reference landmarks: the model's mean warped by a thin plate spline onto the scan's landmarks is the reference
- *  (METHOD section 5), without a registration; writes it, the resampled mesh and the report, and returns the
- *  report. */
+ *  (the library's resampleFromLandmarks); writes it, the resampled mesh and the report, and returns the report. */
 nlohmann::json
 resampleFromLandmarks (const ResampleOptions& options, const MorphableModel& model)
 {
   const RegisterOptions& registration = options.registration;
   if (registration.landmarks.empty ())
     throw InvalidInputError ("resample --reference landmarks needs --landmarks (landmarks marked on the scan)");
-  ScanInput loaded = loadScan (registration);
-  const auto& scan = loaded.cloud;
-  const LengthUnitGuess unit = convertScanToMillimetres (loaded, registration, model, std::cout);
-  const LandmarkPositions landmarks = loadLandmarks (registration.landmarks);
-  requireLandmarksOnScan (landmarks, pointsOf (*scan), registration.landmarks);
-  const TriangleMesh reference =
-      landmarkReference (model.meanMesh (), model.landmarks (), landmarks, registration.landmarks);
-  saveTriangleMesh (registration.out, reference);
-  nlohmann::json report = {
-      {"status", "ok"},
-      {"checks", {{"passed", true}, {"failures", nlohmann::json::array ()}}},
-      {"units", "mm"},
-      {"scan",
-       {{"file", registration.scan},
-        {"points", scan->size ()},
-        {"units", toString (unit.unit)},
-        {"scale_to_mm", millimetresPer (unit.unit)}}},
-      {"reference", {{"method", "landmarks"}, {"landmarks", registration.landmarks}, {"mesh", registration.out}}}};
-  resampleAndReport (options, *scan, reference, report);
-  writeReport (registration.report, report);
-  return report;
+  if (const std::string message = scanFileUnitMessage (registration.scan); !message.empty ())
+    std::cout << message << '\n';
+  const LandmarkResampling outcome =
+      morphreg::resampleFromLandmarks (model,
+                                       {registration.scan,
+                                        registration.intrinsics,
+                                        registration.landmarks,
+                                        registration.out,
+                                        {options.out, options.resampling.colours}},
+                                       registration.units, options.resampling, std::cerr);
+  if (const std::string message = unitConversionMessage (outcome.unit); !message.empty ())
+    std::cout << message << '\n';
+  printResampled (options, outcome.result, outcome.report);
+  writeReport (registration.report, outcome.report);
+  return outcome.report;
 }
 
 void
@@ -112,10 +99,14 @@ runResample (ResampleOptions options)
     return;
   }
   commitUnlessBadInput (outputs, [&] {
-    return registerScan (registration, model, nullptr, 0.0, std::cout, std::cerr,
-                         [&] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted, nlohmann::json& report) {
-                           resampleAndReport (options, *fit.scan.cloud, fitted, report);
-                         });
+    return registerScan (
+        registration, model, nullptr, 0.0, std::cout, std::cerr,
+        [&] (const ScanRegistrationOutcome& fit, const TriangleMesh& fitted, nlohmann::json& report) {
+          printResampled (options,
+                          writeResampledFit (*fit.scan.cloud, options.registration.scan, fitted, options.resampling,
+                                             {options.out, options.resampling.colours}, report, std::cerr),
+                          report);
+        });
   });
 }
 

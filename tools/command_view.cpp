@@ -3,24 +3,20 @@
 // landmarks and the fit's correspondences to the scan, each a layer its key shows or hides; --screenshot writes a PNG
 // instead of opening the window (headless: xvfb-run -a).
 #include "commands.h"
-#include "display_inputs.h"
 
 #include <morphreg/common/error.h>
-#include <morphreg/io/cloud_io.h>
 #include <morphreg/io/landmark_io.h>
-#include <morphreg/io/mesh_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
+#include <morphreg/visualization/fit_layers.h>
 #include <morphreg/visualization/layer_toggles.h>
 #include <morphreg/visualization/registration_visualizer.h>
 
-#include <pcl/search/kdtree.h>
 #include <pcl/visualization/pcl_visualizer.h>
 
 #include <vtkRenderWindow.h>
 
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -42,33 +38,6 @@ struct ViewOptions
   bool quiet = false;
 };
 
-/** Lines from fitted vertices with a residual (all without residuals) to their nearest scan points, at most
- *  \a most of them, evenly spread over the vertices. */
-void
-addCorrespondences (RegistrationVisualizer& viewer, const pcl::PointCloud<pcl::PointXYZ>& scan, const TriangleMesh& fit,
-                    const std::optional<Eigen::VectorXd>& residuals, int most)
-{
-  pcl::PointCloud<pcl::PointXYZ>::Ptr valid (new pcl::PointCloud<pcl::PointXYZ>);
-  for (const pcl::PointXYZ& p : scan)
-    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-      valid->push_back (p);
-  pcl::search::KdTree<pcl::PointXYZ> tree;
-  tree.setInputCloud (valid);
-  pcl::PointCloud<pcl::PointXYZ> vertices;
-  pcl::Correspondences pairs;
-  for (Eigen::Index v = 0; v < fit.numVertices (); ++v) {
-    const Eigen::Vector3f position = fit.vertices.col (v).cast<float> ();
-    vertices.push_back (pcl::PointXYZ (position.x (), position.y (), position.z ()));
-    if (residuals && !std::isfinite ((*residuals)[v]))
-      continue; // the fit found no scan point for this vertex
-    pcl::Indices nearest (1);
-    std::vector<float> distances (1);
-    if (tree.nearestKSearch (vertices.back (), 1, nearest, distances) == 1)
-      pairs.emplace_back (static_cast<int> (v), nearest[0], distances[0]);
-  }
-  viewer.addCorrespondences (vertices, *valid, pairs, static_cast<std::size_t> (most), "correspondences");
-}
-
 /** Adds what the options name, each as a layer with its key; returns the layers. */
 std::unique_ptr<LayerToggles>
 addLayers (const ViewOptions& options, RegistrationVisualizer& viewer)
@@ -80,11 +49,14 @@ addLayers (const ViewOptions& options, RegistrationVisualizer& viewer)
     layers->addLayer ("scan", 't', {"scan"});
   }
   if (!options.fit.empty ()) {
-    const auto [mesh, residuals] = addMeshFile (viewer, options.fit, options.colour_max, 1.0, "fit");
-    layers->addLayer (residuals ? "fit and residuals" : "fit", 'm', {"fit"});
+    const FittedMeshFile fit = addFittedMeshFile (viewer, options.fit, options.colour_max, 1.0, "fit");
+    if (!fit.note.empty ())
+      std::cerr << "morphreg: " << fit.note << '\n';
+    layers->addLayer (fit.residuals ? "fit and residuals" : "fit", 'm', {"fit"});
     viewer.setFramedShapes ({"fit"});
     if (scan && options.correspondences > 0) {
-      addCorrespondences (viewer, *scan, fromPolygonMesh (mesh, options.fit), residuals, options.correspondences);
+      addFitCorrespondences (viewer, *scan, fromPolygonMesh (fit.mesh, options.fit), fit.residuals,
+                             static_cast<std::size_t> (options.correspondences));
       layers->addLayer ("correspondences", 'v', {"correspondences"});
     }
   }

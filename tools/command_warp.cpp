@@ -59,21 +59,6 @@ saveWithTruthErrors (const WarpOptions& options, const MeshWarpInput& input, Mes
   return meshContents (options.out, colours.str (), "error against the truth in mm");
 }
 
-/** The option checks that need the inputs: the articulated method's labels, a --blend and --overlap value per
- *  segment. */
-void
-checkOptionsAgainst (const WarpOptions& options, const MeshWarpInput& input)
-{
-  if (options.settings.method == WarpMethod::articulated && !input.segments)
-    throw InvalidInputError ("warp --method articulated needs --labels: the segment of each vertex, which the "
-                             "skeleton's bones carry");
-  if (options.settings.method == WarpMethod::thin_plate_spline && input.segments) {
-    const int num_segments = static_cast<int> (input.segments->names.size ());
-    valuePerSegment (options.settings.blend_width, num_segments, "warp: --blend");
-    valuePerSegment (options.settings.overlap, num_segments, "warp: --overlap");
-  }
-}
-
 void
 runWarp (const WarpOptions& options)
 {
@@ -91,7 +76,6 @@ runWarp (const WarpOptions& options)
   const MeshWarpInput input = readMeshWarpInput (options.files, unit);
   if (unit != LengthUnit::millimetre && !options.quiet)
     std::cout << "units: the inputs are in " << options.units << ", converted to mm (the output is in mm)\n";
-  checkOptionsAgainst (options, input);
   MeshWarpOutcome outcome = warpMesh (input, options.settings);
   outcome.report.update ({{"input_units", options.units}, {"mesh", options.files.mesh}, {"output", options.out}});
   std::string contents;

@@ -1,86 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The CLI's verbosity: PCL's console level and a VTK output window that filters by message type.
+// The CLI's verbosity options, applied to PCL's console and VTK's messages (visualization/message_verbosity.h).
 #include "console.h"
 
-#include <pcl/console/print.h>
-
-#include <vtkLogger.h>
-#include <vtkObjectFactory.h>
-#include <vtkOutputWindow.h>
-#include <vtkSmartPointer.h>
-
-#include <iostream>
-#include <string>
+#include <morphreg/visualization/message_verbosity.h>
 
 namespace morphreg
 {
 namespace tools
 {
-namespace
-{
-Verbosity current_verbosity = Verbosity::normal;
-std::string held_errors; ///< VTK's errors in normal mode, printed at the end unless the command failed
-
-/** Prints VTK's warnings, debug and plain text only when verbose (on stderr: stdout carries results, e.g. model-info
- *  --json). Its errors are printed at once when verbose and held in normal mode: a failing command's own message
- *  names the problem, so they are shown only when the command does not fail (printHeldErrors).
- */
-class VerbosityOutputWindow : public vtkOutputWindow
-{
-public:
-  static VerbosityOutputWindow*
-  New ();
-  vtkTypeMacro (VerbosityOutputWindow, vtkOutputWindow);
-
-  void
-  DisplayText (const char* text) override
-  {
-    if (current_verbosity == Verbosity::verbose)
-      std::cerr << text << std::flush;
-    else if (current_verbosity == Verbosity::normal && GetCurrentMessageType () == MESSAGE_TYPE_ERROR)
-      held_errors += text;
-  }
-};
-vtkStandardNewMacro (VerbosityOutputWindow);
-
-pcl::console::VERBOSITY_LEVEL
-pclLevel (Verbosity verbosity)
-{
-  switch (verbosity) {
-  case Verbosity::quiet:
-    return pcl::console::L_ALWAYS;
-  case Verbosity::verbose:
-    return pcl::console::L_DEBUG;
-  default:
-    return pcl::console::L_ERROR;
-  }
-}
-} // namespace
-
-void
-setVerbosity (Verbosity verbosity)
-{
-  current_verbosity = verbosity;
-  pcl::console::setVerbosityLevel (pclLevel (verbosity));
-  // VTK's macros log each message to vtkLogger's stderr and hand it to the output window: the window alone prints.
-  vtkLogger::SetStderrVerbosity (vtkLogger::VERBOSITY_OFF);
-  if (!vtkOutputWindow::GetInstance ()->IsA ("VerbosityOutputWindow"))
-    vtkOutputWindow::SetInstance (vtkSmartPointer<VerbosityOutputWindow>::New ());
-}
-
-void
-printHeldErrors ()
-{
-  std::cerr << held_errors << std::flush;
-  held_errors.clear ();
-}
-
-void
-discardHeldErrors ()
-{
-  held_errors.clear ();
-}
-
 void
 addVerbosityOptions (CLI::App& app)
 {
@@ -94,9 +21,9 @@ addVerbosityOptions (CLI::App& app)
   app.parse_complete_callback ([&app] {
     for (CLI::App* command : app.get_subcommands ()) {
       if (command->count ("--verbose") > 0)
-        setVerbosity (Verbosity::verbose);
+        setMessageVerbosity (MessageVerbosity::verbose);
       else
-        setVerbosity (command->count ("--quiet") > 0 ? Verbosity::quiet : Verbosity::normal);
+        setMessageVerbosity (command->count ("--quiet") > 0 ? MessageVerbosity::quiet : MessageVerbosity::normal);
     }
   });
 }

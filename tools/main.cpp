@@ -7,6 +7,7 @@
 #include "provenance.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/visualization/message_verbosity.h>
 
 #include <CLI/CLI.hpp>
 
@@ -39,20 +40,20 @@ main (int argc, char** argv)
     return status == 0 ? 0 : morphreg::tools::kExitBadArguments;
   }
   catch (const morphreg::tools::FitCheckFailure& e) {
-    morphreg::tools::printHeldErrors ();
+    std::cerr << morphreg::takeHeldVtkErrors () << std::flush;
     std::cerr << "morphreg: the fit failed its checks: " << e.what () << '\n';
     return morphreg::tools::kExitFitFailedChecks;
   }
   catch (const morphreg::Error& e) {
-    morphreg::tools::discardHeldErrors (); // the message names the problem
+    morphreg::takeHeldVtkErrors (); // dropped: the message names the problem
     std::cerr << "morphreg: error: " << e.what () << '\n';
     return morphreg::tools::kExitInputError;
   }
   catch (const std::exception& e) {
-    morphreg::tools::printHeldErrors ();
+    std::cerr << morphreg::takeHeldVtkErrors () << std::flush;
     std::cerr << "morphreg: internal error: " << e.what () << '\n';
     return morphreg::tools::kExitInternalError;
   }
-  morphreg::tools::printHeldErrors ();
+  std::cerr << morphreg::takeHeldVtkErrors () << std::flush;
   return 0;
 }

@@ -4,26 +4,16 @@
 #include "scan_resampling.h"
 
 #include <morphreg/model/model_builder.h>
-#include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/model/morphable_model.h>
-#include <morphreg/common/length_unit.h>
-#include <morphreg/registration/registration_settings.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/output_transaction.h>
 #include <morphreg/pipeline/model_building.h>
 #include <morphreg/pipeline/scan_file_registration.h>
-#include <morphreg/pipeline/scan_input.h>
-
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
 
 #include <nlohmann/json.hpp>
 
 #include <CLI/CLI.hpp>
 
-#include <cstdint>
-#include <functional>
-#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -99,17 +89,6 @@ commitUnlessBadInput (OutputTransaction& outputs, Run run) -> decltype (run ())
   }
 }
 
-/** options.scan as a scan (readScanFile), or with options.intrinsics a depth image (readDepthImageScan: a 16-bit
- *  PNG, mm; its camera the viewpoint). */
-ScanInput
-loadScan (const RegisterOptions& options);
-
-/** Converts \a scan (its points and viewpoint) to mm, its unit given by options.units or guessed against \a model
- *  (see scan_units.h), and says so on \a out when it was not in mm; returns the unit and why. */
-LengthUnitGuess
-convertScanToMillimetres (ScanInput& scan, const RegisterOptions& options, const MorphableModel& model,
-                          std::ostream& out);
-
 /** Loads a model file (loadModel: in mm whatever the file's unit) and says on \a out when the file was in another
  *  unit and converted. */
 MorphableModel::Ptr
@@ -132,18 +111,6 @@ registerScan (const RegisterOptions& options, const MorphableModel::Ptr& model, 
 /** Adds the files a registration reads (--scan, --model, --landmarks, --truth) to \a plan. */
 void
 addRegistrationInputs (const RegisterOptions& options, OutputPlan& plan);
-
-/** The report file of a registration: --report, else the --out path with .json. */
-std::string
-reportPath (const RegisterOptions& options);
-
-/** The library's ScanFileRegistration::registerStudyScan with the options' files and settings, its reports
- *  stamped with the command line: one scan of a study, whose failure is its report's, not an error.
- *  \return the scan's report
- */
-nlohmann::json
-registerStudyScan (const RegisterOptions& options, const MorphableModel::Ptr& model, const FitFollowUp& follow_up = {},
-                   const std::vector<std::string>& follow_up_outputs = {});
 
 /** Settings of `register --scans` beyond the single-scan ones. */
 struct BatchOptions
@@ -189,16 +156,6 @@ struct BuildModelOptions
 /** Builds and saves the model; returns a summary for reports. */
 nlohmann::json
 buildModelFile (const BuildModelOptions& options);
-
-/** Adds the ModelBuilder settings (--components, --variance, --blend-rings, --no-procrustes) to \a command. */
-void
-addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings);
-
-/** Builds the model of options.from_scans with ModelFromScans, each scan registered with options.registration's
- *  model and resampled, writing its report, fit and resampled mesh and the study's summary.json into
- *  \a report_dir; adds the registering model and the report folder to the outcome's source. */
-ModelBuildingOutcome
-buildFromScans (const BuildModelOptions& options, const std::string& report_dir);
 
 } // namespace tools
 } // namespace morphreg

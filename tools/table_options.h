@@ -15,18 +15,23 @@ namespace morphreg
 {
 namespace tools
 {
-/** The check of a numeric table entry: whole numbers for counts, "a number >= L" without an upper bound. */
+/** The check of a numeric table entry: whole numbers for counts, a range "from L to H", or a rule ("a number >= L",
+ *  "a number > 0 (or inf)") for the entries without an upper bound or above zero (setting_options.h). */
 template <typename Settings>
 CLI::Validator
 rangeCheck (const SettingOption<Settings>& option, bool whole)
 {
+  const double low = option.lowest, high = option.highest;
   if (whole)
-    return inRange (static_cast<long long> (option.lowest), static_cast<long long> (option.highest));
-  if (option.highest < kUnboundedSetting)
-    return inRange (option.lowest, option.highest);
-  const double lowest = option.lowest;
-  return numberCheck ([lowest] (double v) { return std::isfinite (v) && v >= lowest; },
-                      "a number >= " + boundText (lowest), "NUMBER >= " + boundText (lowest));
+    return inRange (static_cast<long long> (low), static_cast<long long> (high));
+  if (high < kUnboundedSetting && low != kAboveZeroSetting)
+    return inRange (low, high);
+  const std::string from = low == kAboveZeroSetting ? "> 0" : ">= " + boundText (low);
+  const std::string rule = "a number " + from +
+                           (high == kInfiniteSetting   ? " (or inf)"
+                            : high < kUnboundedSetting ? " and <= " + boundText (high)
+                                                       : std::string ());
+  return numberCheck ([low, high] (double v) { return isSettingInRange (v, low, high); }, rule, "NUMBER " + from);
 }
 
 /** Adds the option of one table entry to a command, bound to its field of the settings. */

@@ -6,4 +6,4 @@ error is a morphreg.Error (InvalidInputError is also a ValueError, IoError an OS
 """
 from ._morphreg import *  # noqa: F401,F403
 from ._morphreg import __version__  # noqa: F401
-from ._morphreg import _registration_options, _resampling_options  # noqa: F401  (the settings tables)
+from ._morphreg import _photo_fit_options, _registration_options, _resampling_options  # noqa: F401  (the settings tables)

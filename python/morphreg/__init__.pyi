@@ -34,6 +34,7 @@ class Model:
               components: int = 0, variance: float = 1.0, blend_rings: int = 2, procrustes: bool = True,
               landmarks: Dict[str, int] = ..., profile_line: Sequence[int] = ...) -> Model: ...
     def save(self, path: str) -> None: ...
+    def describe(self) -> Dict[str, Any]: ...
     @property
     def num_vertices(self) -> int: ...
     @property
@@ -95,7 +96,7 @@ def register(model: Model, points: ArrayLike, normals: Optional[ArrayLike] = Non
              loss: str = "tukey", loss_scale: float = 0.0, reject_distance: float = 0.0, reject_median: float = 0.0,
              reject_one_to_one: bool = False, reject_trimmed: float = 0.0) -> RegistrationResult: ...
 def register_study(model: str, scans: str, out_dir: str, *, jobs: int = 1, threads_per_fit: int = 0,
-                   shard: Tuple[int, int] = (0, 1), resume: bool = True, retry_failed: bool = False,
+                   shard: Union[Tuple[int, int], str] = (0, 1), resume: bool = True, retry_failed: bool = False,
                    colours: str = "auto", colour_max: float = 0.0,
                    iterations: int = 100, similarity_iterations: int = 60, max_distance: float = 0.0,
                    components: Union[None, int, Sequence[int]] = None, point_to_plane: bool = True,

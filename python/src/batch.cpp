@@ -6,6 +6,7 @@
 #include "keyword_settings.h"
 
 #include <morphreg/pipeline/batch_registration.h>
+#include <morphreg/pipeline/batch_shard.h>
 #include <morphreg/registration/registration_options.h>
 
 #include <pybind11/stl.h>
@@ -80,10 +81,26 @@ runInterruptibly (BatchRegistration& batch)
   return std::move (*outcome);
 }
 
+/** register_study's shard: "I/N" or "auto" (a Slurm job array's task) as the command line takes them, or (i, n). */
+BatchShard
+shardArgument (const py::object& shard)
+{
+  if (py::isinstance<py::str> (shard))
+    return parseBatchShard (shard.cast<std::string> ());
+  try {
+    const auto [index, count] = shard.cast<std::pair<int, int>> ();
+    return {index, count};
+  }
+  catch (const py::cast_error&) {
+    throw py::type_error ("register_study(): shard must be (i, n), \"I/N\" or \"auto\", got " +
+                          std::string (py::repr (shard)));
+  }
+}
+
 py::object
 registerStudy (const std::string& model, const std::string& scans, const std::string& out_dir, int jobs,
-               int threads_per_fit, std::pair<int, int> shard, bool resume, bool retry_failed,
-               const std::string& colours, double colour_max, const py::kwargs& keywords)
+               int threads_per_fit, const py::object& shard, bool resume, bool retry_failed, const std::string& colours,
+               double colour_max, const py::kwargs& keywords)
 {
   BatchRegistrationSettings settings;
   static_cast<RegistrationSettings&> (settings.scan) =
@@ -92,7 +109,7 @@ registerStudy (const std::string& model, const std::string& scans, const std::st
   settings.scan.colour_max = colour_max;
   settings.jobs = jobs;
   settings.threads_per_fit = threads_per_fit;
-  settings.shard = {shard.first, shard.second};
+  settings.shard = shardArgument (shard);
   settings.resume = resume;
   settings.retry_failed = retry_failed;
   BatchRegistration batch (model, scans, out_dir, settings);
@@ -106,7 +123,8 @@ registerStudyDoc ()
   return keywordDoc (
       "Registers every scan of a study (a folder of scans or a manifest CSV, as `morphreg register --scans`) to the\n"
       "model file, writing <id>.ply, <id>.json and summary.csv / summary.json into out_dir: jobs scans at a time,\n"
-      "shard=(i, n) for share i of n, resumed from the reports whose records match (resume), failed ones again\n"
+      "shard=(i, n) or \"I/N\" for share i of n (\"auto\": this task of a Slurm job array), resumed from the reports "
+      "whose records match (resume), failed ones again\n"
       "with retry_failed. A scan that cannot be registered is a failed row, not an error. Returns the summary as a\n"
       "dict (\"scans\": id, status, rms_mm, reason ...; \"counts\") with \"skipped\", \"attempted\" and \"redone\".\n"
       "Ctrl-C stops it taking new scans (KeyboardInterrupt once the scans in progress are done; a rerun resumes).\n"

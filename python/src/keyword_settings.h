@@ -9,6 +9,7 @@
 #include <morphreg/common/setting_options.h>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <algorithm>
 #include <optional>
@@ -116,6 +117,16 @@ settingsFromKeywords (const py::kwargs& keywords, const std::vector<SettingOptio
   return settings;
 }
 
+/** \a counts as Python writes a list: "[1, 2, 3]". */
+inline std::string
+listText (const std::vector<int>& counts)
+{
+  std::string text;
+  for (int count : counts)
+    text += (text.empty () ? "[" : ", ") + std::to_string (count);
+  return text + "]";
+}
+
 /** The default of \a option's field as Python writes it. */
 template <typename Settings>
 std::string
@@ -130,8 +141,10 @@ keywordDefault (const SettingOption<Settings>& option)
           return value ? "True" : "False";
         else if constexpr (std::is_same_v<T, std::string>)
           return "\"" + value + "\"";
-        else if constexpr (std::is_same_v<T, std::optional<double>> || std::is_same_v<T, std::vector<int>>)
+        else if constexpr (std::is_same_v<T, std::optional<double>>)
           return "None";
+        else if constexpr (std::is_same_v<T, std::vector<int>>)
+          return value.empty () ? "None" : value.size () == 1 ? std::to_string (value.front ()) : listText (value);
         else {
           std::ostringstream text;
           text << value;
@@ -150,6 +163,17 @@ keywordDoc (const std::string& summary, const std::vector<SettingOption<Settings
   for (const SettingOption<Settings>& option : options)
     doc += "  " + option.name + " = " + keywordDefault (option) + ": " + option.help + "\n";
   return doc;
+}
+
+/** The values of \a settings by the names of \a options: name -> value. */
+template <typename Settings>
+py::dict
+keywordValues (const Settings& settings, const std::vector<SettingOption<Settings>>& options)
+{
+  py::dict values;
+  for (const SettingOption<Settings>& option : options)
+    std::visit ([&] (auto field) { values[py::str (option.name)] = py::cast (settings.*field); }, option.field);
+  return values;
 }
 
 /** The table as Python sees it: name -> (default as Python writes it, help). */

@@ -2,10 +2,12 @@
 // morphreg.Model: a multi-region PCA head model (statismo HDF5 files), its mean, regions, components, landmarks,
 // instances and random samples as numpy arrays.
 #include "bindings.h"
+#include "json_objects.h"
 #include "numpy_arrays.h"
 #include "python_model.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/model_description.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/model/coefficient_units.h>
 #include <morphreg/model/model_builder.h>
@@ -207,6 +209,10 @@ bindModel (py::module_& m)
       .def (
           "save", [] (const MorphableModel& model, const std::string& path) { saveModel (path, model); },
           py::arg ("path"), "Writes the model as statismo HDF5, atomically.")
+      .def (
+          "describe", [] (const MorphableModel& model) { return toPython (describeModel (model)); },
+          "What the model holds, as `morphreg model-info --json` prints it: vertices, triangles, regions (name, "
+          "vertices, components, variances_mm2), global_pca, landmarks, profile_line_vertices, metadata, units.")
       .def_property_readonly ("num_vertices", &MorphableModel::numVertices)
       .def_property_readonly ("num_regions", &MorphableModel::numRegions)
       .def_property_readonly ("component_counts", &regionComponentCounts, "Components per region.")

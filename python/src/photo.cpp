@@ -3,6 +3,7 @@
 // files of `morphreg fit-photos`), morphreg.fit_photos, and morphreg.PhotoSimulator for annotated synthetic photos.
 #include "bindings.h"
 #include "json_objects.h"
+#include "keyword_settings.h"
 #include "numpy_arrays.h"
 #include "python_model.h"
 
@@ -133,22 +134,9 @@ bindResult (py::module_& m)
 
 PhotoFitResult
 fitPhotoPair (const MorphableModel::Ptr& model, const ProfileView& profile, const FrontalView* frontal,
-              const std::string& approach, const py::handle& components, double smoothness,
-              const std::optional<double>& shape_prior, double landmark_noise, double coefficient_limit,
-              double landmark_weight, const std::string& outline_landmarks, double outline_landmark_weight,
-              double sagittal_weight)
+              const py::kwargs& keywords)
 {
-  PhotoFitOptions options;
-  options.approach = approach;
-  options.components = componentCounts (components);
-  options.smoothness = smoothness;
-  options.shape_prior = shape_prior;
-  options.landmark_noise = landmark_noise;
-  options.coefficient_limit = coefficient_limit;
-  options.landmark_weight = landmark_weight;
-  options.outline_landmarks = outline_landmarks;
-  options.outline_landmark_weight = outline_landmark_weight;
-  options.sagittal_weight = sagittal_weight;
+  const PhotoFitOptions options = settingsFromKeywords (keywords, photoFitOptionTable (), "fit_photos");
   PhotoSet photos;
   photos.views = orthographicPairViews (profile, frontal);
   photos.images.resize (photos.views.size ());
@@ -200,17 +188,13 @@ bindPhoto (py::module_& m)
   bindViews (m);
   bindResult (m);
   bindSimulator (m);
-  const PhotoFitOptions d;
   m.def ("fit_photos", &fitPhotoPair, py::arg ("model"), py::arg ("profile"), py::arg ("frontal") = nullptr,
-         py::kw_only (), py::arg ("approach") = d.approach, py::arg ("components") = d.components.front (),
-         py::arg ("smoothness") = d.smoothness, py::arg ("shape_prior") = d.shape_prior,
-         py::arg ("landmark_noise") = d.landmark_noise, py::arg ("coefficient_limit") = d.coefficient_limit,
-         py::arg ("landmark_weight") = d.landmark_weight, py::arg ("outline_landmarks") = d.outline_landmarks,
-         py::arg ("outline_landmark_weight") = d.outline_landmark_weight,
-         py::arg ("sagittal_weight") = d.sagittal_weight,
-         "Fits the model to a profile view and (unless approach='profile') a frontal view, as `morphreg\n"
-         "fit-photos --profile --frontal` does; the keyword arguments are its options (shape_prior None: chosen\n"
-         "from the data). Returns a PhotoFitResult.");
+         keywordDoc ("Fits the model to a profile view and (unless approach='profile') a frontal view, as `morphreg\n"
+                     "fit-photos --profile --frontal` does. Returns a PhotoFitResult. The keyword settings are\n"
+                     "fit-photos' options:\n",
+                     photoFitOptionTable ())
+             .c_str ());
+  m.attr ("_photo_fit_options") = keywordTable (photoFitOptionTable ());
 }
 
 } // namespace python

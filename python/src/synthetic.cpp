@@ -2,6 +2,7 @@
 // The built-in synthetic data: morphreg.HeadGenerator (heads with known parameters, landmarks and regions) and
 // morphreg.ScanSimulator (laser scans of them with a known pose and per-point ground truth).
 #include "bindings.h"
+#include "keyword_settings.h"
 #include "numpy_arrays.h"
 
 #include <morphreg/common/cloud_matrix.h>
@@ -9,6 +10,7 @@
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/synthetic/head_generator.h>
 #include <morphreg/synthetic/scan_simulator.h>
+#include <morphreg/synthetic/scanner_options.h>
 
 #include <pybind11/stl.h>
 
@@ -126,62 +128,22 @@ bindScan (py::module_& m)
       .def_property_readonly ("num_outliers", [] (const SimulatedScan& s) { return s.num_outliers; });
 }
 
-ScanSimulator::Parameters
-scannerParameters (const py::kwargs& settings)
-{
-  ScanSimulator::Parameters p;
-  const std::map<std::string, double*> reals{{"row_spacing", &p.row_spacing},
-                                             {"max_incidence_deg", &p.max_incidence_deg},
-                                             {"camera_elevation_deg", &p.camera_elevation_deg},
-                                             {"noise", &p.noise_sigma},
-                                             {"outliers", &p.outlier_fraction},
-                                             {"max_rotation_deg", &p.max_rotation_deg},
-                                             {"max_scale_deviation", &p.max_scale_deviation},
-                                             {"max_translation", &p.max_translation},
-                                             {"max_edge_length", &p.max_edge_length}};
-  for (const auto& item : settings) {
-    const auto name = item.first.cast<std::string> ();
-    if (name == "angular_samples")
-      p.angular_samples = item.second.cast<int> ();
-    else if (name == "range_mesh")
-      p.range_mesh = item.second.cast<bool> ();
-    else if (reals.count (name))
-      *reals.at (name) = item.second.cast<double> ();
-    else
-      throw InvalidInputError ("ScanSimulator: no setting \"" + name + "\"");
-  }
-  return p;
-}
-
-py::dict
-scannerSettings (const ScanSimulator& scanner)
-{
-  const ScanSimulator::Parameters& p = scanner.parameters ();
-  py::dict d;
-  d["angular_samples"] = p.angular_samples;
-  d["row_spacing"] = p.row_spacing;
-  d["max_incidence_deg"] = p.max_incidence_deg;
-  d["camera_elevation_deg"] = p.camera_elevation_deg;
-  d["noise"] = p.noise_sigma;
-  d["outliers"] = p.outlier_fraction;
-  d["max_rotation_deg"] = p.max_rotation_deg;
-  d["max_scale_deviation"] = p.max_scale_deviation;
-  d["max_translation"] = p.max_translation;
-  d["range_mesh"] = p.range_mesh;
-  d["max_edge_length"] = p.max_edge_length;
-  return d;
-}
-
 void
 bindScanSimulator (py::module_& m)
 {
   py::class_<ScanSimulator> (m, "ScanSimulator",
-                             "A cylindrical laser scanner: settings as keyword arguments, named as synth's options "
-                             "(angular_samples, row_spacing, noise, outliers, range_mesh) or as ScanSimulator's "
-                             "parameters (max_incidence_deg, camera_elevation_deg, max_rotation_deg, "
-                             "max_scale_deviation, max_translation, max_edge_length).")
-      .def (py::init ([] (const py::kwargs& settings) { return ScanSimulator (scannerParameters (settings)); }))
-      .def_property_readonly ("settings", &scannerSettings)
+                             keywordDoc ("A cylindrical laser scanner; its keyword settings are synth's options:\n",
+                                         synthetic::scannerOptions ())
+                                 .c_str ())
+      .def (py::init ([] (const py::kwargs& settings) {
+        return ScanSimulator (settingsFromKeywords (settings, synthetic::scannerOptions (), "ScanSimulator"));
+      }))
+      .def_property_readonly (
+          "settings",
+          [] (const ScanSimulator& scanner) {
+            return keywordValues (scanner.parameters (), synthetic::scannerOptions ());
+          },
+          "The settings by their names: name -> value.")
       .def (
           "scan",
           [] (const ScanSimulator& scanner, const py::handle& vertices, const py::handle& faces, std::uint64_t seed) {

@@ -49,5 +49,24 @@ def test_bad_settings_are_named(model_file, study, tmp_path):
         morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "a"), jobs=0)
     with pytest.raises(morphreg.InvalidInputError, match="shard 2/2"):
         morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "b"), shard=(2, 2))
+    with pytest.raises(morphreg.InvalidInputError, match="shard '2/2': expected I/N"):
+        morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "b"), shard="2/2")
     with pytest.raises(TypeError, match="register_study"):
         morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "c"), no_such_setting=1)
+    with pytest.raises(TypeError, match="shard must be"):
+        morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "d"), shard=1.5)
+
+
+def test_a_slurm_array_task_takes_its_share(model_file, study, tmp_path, monkeypatch):
+    monkeypatch.delenv("SLURM_ARRAY_TASK_ID", raising=False)
+    with pytest.raises(morphreg.InvalidInputError, match="SLURM_ARRAY_TASK_ID is not set"):
+        morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "a"), shard="auto")
+    monkeypatch.setenv("SLURM_ARRAY_TASK_ID", "11")
+    monkeypatch.setenv("SLURM_ARRAY_TASK_MIN", "10")
+    monkeypatch.setenv("SLURM_ARRAY_TASK_COUNT", "2")
+    by_name = morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "b"), components=5,
+                                      shard="1/2")
+    by_slurm = morphreg.register_study(model_file, str(study / "manifest.csv"), str(tmp_path / "c"), components=5,
+                                       shard="auto")
+    assert [row["id"] for row in by_slurm["scans"]] == [row["id"] for row in by_name["scans"]]
+    assert len(by_name["scans"]) == 1

@@ -1,5 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """morphreg.Model: files, mean, regions, components, instances, samples and projections; equal to the C++ API."""
+import json
+
 import numpy as np
 import pytest
 
@@ -15,6 +17,15 @@ def test_load_gives_the_saved_model(model, model_file):
     assert np.array_equal(loaded.faces, model.faces)
     assert loaded.landmarks == model.landmarks and loaded.profile_line == model.profile_line
     assert relative_difference(loaded.components(), model.components()) <= 1e-12
+
+
+def test_describe_is_model_info(model_file):
+    described = morphreg.Model.load(model_file).describe()
+    printed = json.loads(run_cli("model-info", "--model", model_file, "--json").stdout)
+    assert printed["file"] == model_file and described["file"] == ""
+    for key in ("vertices", "triangles", "regions", "global_pca", "landmarks", "units", "file_units"):
+        assert described[key] == printed[key], key
+    assert described["vertices"] == 3458 and len(described["regions"]) == 7
 
 
 def test_mean_is_a_read_only_view(model):

@@ -60,6 +60,11 @@ def test_bad_input(model, photos):
         morphreg.fit_photos(model, photos.profile, photos.frontal, approach="side")
     with pytest.raises(morphreg.InvalidInputError, match="0 landmarks fix model vertices; at least 3 are needed"):
         morphreg.fit_photos(model, photos.profile)
+    with pytest.raises(morphreg.InvalidInputError,
+                       match=r"photo fit setting smoothness = 0 is out of range \(above 0\)"):
+        morphreg.fit_photos(model, photos.profile, photos.frontal, smoothness=0.0)
+    with pytest.raises(TypeError, match="fit_photos\\(\\) got an unexpected keyword argument 'lambda1'"):
+        morphreg.fit_photos(model, photos.profile, photos.frontal, lambda1=0.5)
     with pytest.raises(morphreg.InvalidInputError, match=r"silhouette: shape \(10, 3\), expected \(N, 2\)"):
         morphreg.ProfileView(1000, 1200, np.zeros((10, 3)), [0.0, 0.0])
     with pytest.raises(morphreg.InvalidInputError, match="expected a dict"):

@@ -57,12 +57,12 @@ def test_class_members_match(name):
 
 
 KEYWORD_TABLES = {"register": "_registration_options", "register_study": "_registration_options",
-                  "resample": "_resampling_options"}
+                  "resample": "_resampling_options", "fit_photos": "_photo_fit_options"}
 
 
 def keyword_settings(function):
     """The settings a function takes as **keywords: the table the command line reads too (registration_options.h,
-    resampling_settings.h), as name -> (default as Python writes it, help)."""
+    resampling_settings.h, photo_fit_options.h), as name -> (default as Python writes it, help)."""
     return getattr(morphreg, KEYWORD_TABLES.get(function.__name__, ""), {})
 
 

@@ -49,7 +49,10 @@ def test_range_mesh_and_settings(truth):
 
 
 def test_bad_scanner_settings():
-    with pytest.raises(morphreg.InvalidInputError, match="no setting \"samples\""):
+    with pytest.raises(TypeError, match="ScanSimulator\\(\\) got an unexpected keyword argument 'samples'"):
         morphreg.ScanSimulator(samples=10)
-    with pytest.raises(morphreg.InvalidInputError, match="angular"):
+    with pytest.raises(morphreg.InvalidInputError, match=r"scanner setting angular_samples = 2 is out of range"):
         morphreg.ScanSimulator(angular_samples=2)
+    with pytest.raises(TypeError, match="noise must be a number"):
+        morphreg.ScanSimulator(noise="loud")
+    assert morphreg.ScanSimulator(scale_deviation=0.0).settings["scale_deviation"] == 0.0

@@ -17,15 +17,32 @@ commandLineName (const std::string& name)
   return option;
 }
 
+bool
+isSettingInRange (double value, double lowest, double highest)
+{
+  if (std::isinf (value))
+    return value > 0 && highest == kInfiniteSetting;
+  return value >= lowest && value <= highest; // false for a NaN
+}
+
+std::string
+settingRangeText (double lowest, double highest)
+{
+  using detail::numberText;
+  const std::string from = lowest == kAboveZeroSetting ? "above 0" : "at least " + numberText (lowest);
+  if (highest == kInfiniteSetting)
+    return from + ", or inf";
+  if (highest == kUnboundedSetting)
+    return from;
+  return (lowest == kAboveZeroSetting ? "above 0 to " : numberText (lowest) + " to ") + numberText (highest);
+}
+
 void
 requireSettingInRange (const std::string& kind, const std::string& name, double value, double lowest, double highest)
 {
-  if (std::isfinite (value) && value >= lowest && value <= highest)
-    return;
-  using detail::numberText;
-  const std::string range = highest == kUnboundedSetting ? "at least " + numberText (lowest)
-                                                         : numberText (lowest) + " to " + numberText (highest);
-  throw InvalidInputError (kind + " " + name + " = " + numberText (value, 6) + " is out of range (" + range + ")");
+  if (!isSettingInRange (value, lowest, highest))
+    throw InvalidInputError (kind + " " + name + " = " + detail::numberText (value, 6) + " is out of range (" +
+                             settingRangeText (lowest, highest) + ")");
 }
 
 void

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/colour_map.h>
 #include <morphreg/common/error.h>
+#include <morphreg/common/cloud_matrix.h>
+#include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/pipeline/fit_resampling.h>
 #include <morphreg/pipeline/scan_colours.h>
+#include <morphreg/pipeline/scan_units.h>
+#include <morphreg/registration/scan_checks.h>
+#include <morphreg/resampling/landmark_reference.h>
 #include <morphreg/resampling/resampling_report.h>
 
 #include <chrono>
@@ -68,6 +73,37 @@ writeResampledFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::str
   report["resampled_mesh_colours"] = scan_colours ? "scan" : "state";
   report["resampled_mesh"] = file.path;
   return std::move (resampled.result);
+}
+
+LandmarkResampling
+resampleFromLandmarks (const MorphableModel& model, const LandmarkResamplingFiles& files, const std::string& units,
+                       const ResamplingSettings& settings, std::ostream& warnings)
+{
+  if (files.landmarks.empty ())
+    throw InvalidInputError ("resampling " + files.scan +
+                             " from landmarks: no landmark file (landmarks marked on the "
+                             "scan place the reference)");
+  const ScanInput as_read = readScanOrDepthImage (files.scan, files.intrinsics, files.resampled.colours, units);
+  LandmarkResampling outcome;
+  outcome.unit = scanInputUnit (as_read, units, model);
+  const ScanInput scan = scaledScan (as_read, outcome.unit.scale_to_mm);
+  const LandmarkPositions landmarks = loadLandmarks (files.landmarks);
+  requireLandmarksOnScan (landmarks, pointsOf (*scan.cloud), files.landmarks);
+  const TriangleMesh reference = landmarkReference (model.meanMesh (), model.landmarks (), landmarks, files.landmarks);
+  saveTriangleMesh (files.reference, reference);
+  outcome.report = {
+      {"status", "ok"},
+      {"checks", {{"passed", true}, {"failures", nlohmann::json::array ()}}},
+      {"units", "mm"},
+      {"scan",
+       {{"file", files.scan},
+        {"points", scan.cloud->size ()},
+        {"units", toString (outcome.unit.unit)},
+        {"scale_to_mm", outcome.unit.scale_to_mm}}},
+      {"reference", {{"method", "landmarks"}, {"landmarks", files.landmarks}, {"mesh", files.reference}}}};
+  outcome.result =
+      writeResampledFit (*scan.cloud, files.scan, reference, settings, files.resampled, outcome.report, warnings);
+  return outcome;
 }
 
 } // namespace morphreg

@@ -268,6 +268,8 @@ ModelFromScans::tryScans (const ScanManifest& scans, std::vector<ModelInput>& in
                                                       std::to_string (k + 1 - meshes.size ()) + " left out");
   }
   observer.stageFinished ();
+  if (!folder_.empty ())
+    writeSummary (inputs);
   observer.inputsTried (inputs);
   return meshes;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <morphreg/common/colour_map.h>
+#include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 #include <morphreg/io/file_format.h>
@@ -222,6 +223,19 @@ ScanFileRegistration::registerStudyScan (const ScanFiles& files, const FitFollow
                             {"timings_s", {{"total", secondsSince (start)}}}};
   writeReport (files.report, failure);
   return failure;
+}
+
+nlohmann::json
+truthVertexErrors (const TriangleMesh& fitted, const Eigen::VectorXd& residuals, const std::string& truth_file)
+{
+  const TriangleMesh truth = loadTriangleMesh (truth_file);
+  requireSameTopology (fitted, truth, truth_file);
+  const Eigen::VectorXd errors = (fitted.vertices - truth.vertices).colwise ().norm ().transpose ();
+  const Eigen::VectorXd covered = residuals.array ().isFinite ().select (errors, NAN);
+  nlohmann::json report = distanceStatistics (errors);
+  report["covered_by_scan"] = distanceStatistics (covered);
+  report["file"] = truth_file;
+  return report;
 }
 
 } // namespace morphreg

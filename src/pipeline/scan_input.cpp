@@ -67,4 +67,17 @@ readDepthImageScan (const std::string& depth_png, const std::string& intrinsics_
   return scan;
 }
 
+ScanInput
+readScanOrDepthImage (const std::string& path, const std::string& intrinsics, const std::string& colours,
+                      const std::string& units)
+{
+  if (intrinsics.empty ())
+    return readScanFile (path);
+  if (colours == "scan")
+    throw InvalidInputError ("the depth image " + path + " has no colours to give the fitted mesh (colours scan)");
+  if (units != "auto" && units != "mm")
+    throw InvalidInputError ("the depth image " + path + " holds mm, not " + units + " (units " + units + ")");
+  return readDepthImageScan (path, intrinsics);
+}
+
 } // namespace morphreg

@@ -24,21 +24,6 @@ namespace
 using Clock = std::chrono::steady_clock;
 using Icp = ScanRegistration::Icp;
 
-/** \a scan with its points (and viewpoint) times \a factor. */
-ScanInput
-scaledScan (const ScanInput& scan, double factor)
-{
-  ScanInput scaled = scan;
-  scaled.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointNormal>> (*scan.cloud);
-  const auto to_mm = static_cast<float> (factor);
-  if (to_mm != 1.0f)
-    for (auto& point : *scaled.cloud)
-      point.getVector3fMap () *= to_mm;
-  if (scaled.viewpoint)
-    *scaled.viewpoint *= factor;
-  return scaled;
-}
-
 /** The fit's similarity scale (model to scan). */
 double
 fittedScale (Icp& icp)
@@ -224,13 +209,9 @@ ScanRegistration::fitAtHeadScale (const ScanInput& as_given, ScanRegistrationOut
 ScanRegistrationOutcome
 ScanRegistration::registerScan (const ScanInput& scan) const
 {
-  if (!scan.cloud)
-    throw InvalidInputError (scan.name + ": no points (a null cloud)");
-  const std::string units = scan.unit ? toString (*scan.unit) : settings_.units;
-  const LengthUnitGuess guess = scanUnit (*scan.cloud, units, *model_, scan.name, scan.viewpoint.has_value ());
-  if (guess.unit != LengthUnit::millimetre)
-    observer ().message ("units: the scan's unit is " + toString (guess.unit) + " (" + guess.reason +
-                         "); rescaled to mm");
+  const LengthUnitGuess guess = scanInputUnit (scan, settings_.units, *model_);
+  if (const std::string message = unitConversionMessage (guess); !message.empty ())
+    observer ().message (message);
   ScanRegistrationOutcome fit{scaledScan (scan, guess.scale_to_mm), guess, nullptr, "", 0.0};
   if (guess.recognised || settings_.units != "auto")
     fit = fitAt (scan, guess);

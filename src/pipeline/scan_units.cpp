@@ -57,4 +57,35 @@ convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::st
   return unit;
 }
 
+LengthUnitGuess
+scanInputUnit (const ScanInput& scan, const std::string& units, const MorphableModel& model)
+{
+  if (!scan.cloud)
+    throw InvalidInputError (scan.name + ": no points (a null cloud)");
+  return scanUnit (*scan.cloud, scan.unit ? toString (*scan.unit) : units, model, scan.name,
+                   scan.viewpoint.has_value ());
+}
+
+ScanInput
+scaledScan (const ScanInput& scan, double factor)
+{
+  ScanInput scaled = scan;
+  scaled.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointNormal>> (*scan.cloud);
+  const auto to_mm = static_cast<float> (factor);
+  if (to_mm != 1.0f)
+    for (auto& point : *scaled.cloud)
+      point.getVector3fMap () *= to_mm;
+  if (scaled.viewpoint)
+    *scaled.viewpoint *= factor;
+  return scaled;
+}
+
+std::string
+unitConversionMessage (const LengthUnitGuess& unit)
+{
+  if (unit.unit == LengthUnit::millimetre)
+    return "";
+  return "units: the scan's unit is " + toString (unit.unit) + " (" + unit.reason + "); rescaled to mm";
+}
+
 } // namespace morphreg

@@ -152,20 +152,13 @@ robustnessOptions ()
   };
 }
 
-std::vector<RegistrationOption>
-makeOptions ()
-{
-  std::vector<RegistrationOption> options = fitOptions ();
-  for (auto part : {scanOptions (), robustnessOptions ()})
-    options.insert (options.end (), part.begin (), part.end ());
-  return options;
-}
 } // namespace
 
 const std::vector<RegistrationOption>&
 registrationOptions ()
 {
-  static const std::vector<RegistrationOption> options = makeOptions ();
+  static const std::vector<RegistrationOption> options =
+      joinedOptions ({fitOptions (), scanOptions (), robustnessOptions ()});
   return options;
 }
 
@@ -173,12 +166,6 @@ const RegistrationOption*
 findRegistrationOption (const std::string& name)
 {
   return findSettingOption (registrationOptions (), name);
-}
-
-void
-requireValidOption (const RegistrationOption& option, const RegistrationSettings& settings)
-{
-  morphreg::requireValidOption (option, settings, "registration setting");
 }
 
 } // namespace morphreg

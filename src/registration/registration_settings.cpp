@@ -76,8 +76,7 @@ addRejectors (MorphableICP<pcl::PointNormal>& icp, const RegistrationSettings& s
 void
 requireValidSettings (const RegistrationSettings& settings)
 {
-  for (const RegistrationOption& option : registrationOptions ())
-    requireValidOption (option, settings);
+  requireValidOptions (registrationOptions (), settings, "registration setting");
   parseTargetSmoothing (settings.target_smoothing);
 }
 

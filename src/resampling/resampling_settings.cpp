@@ -67,8 +67,7 @@ resamplingOptions ()
 void
 requireValidSettings (const ResamplingSettings& settings)
 {
-  for (const ResamplingOption& option : resamplingOptions ())
-    requireValidOption (option, settings, "resampling setting");
+  requireValidOptions (resamplingOptions (), settings, "resampling setting");
 }
 
 nlohmann::json

@@ -8,6 +8,7 @@
 #include <morphreg/photo/photo_view_io.h>
 #include <morphreg/synthetic/population_files.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -151,6 +152,50 @@ writePhotoFiles (const std::string& directory, const std::string& name, const Si
                                 {"scale", photos.scale}};
   writeStamped (directory + "/" + name + "_truth.json", truth, provenance);
   return {{"profile", name + "_profile.json"}, {"frontal", name + "_frontal.json"}, {"truth", name + "_truth.json"}};
+}
+
+namespace
+{
+/** Profile and frontal photo annotations of the first settings.photos heads, each nodding by 5 degrees. */
+void
+writeHeadPhotos (const std::string& directory, const SyntheticStudySettings& settings, const HeadGenerator& generator,
+                 const std::vector<SyntheticHead>& heads, const nlohmann::json& provenance)
+{
+  PhotoSimulator::Parameters camera;
+  camera.rotation = Eigen::AngleAxisd (5.0 * M_PI / 180.0, Eigen::Vector3d::UnitX ()).toRotationMatrix ();
+  const PhotoSimulator simulator (camera);
+  const LandmarkVertices frontal = frontalLandmarks (generator.landmarks ());
+  for (int i = 0; i < settings.photos; ++i) {
+    const SyntheticHead& head = heads[static_cast<std::size_t> (i)];
+    const std::uint64_t seed = settings.seed + static_cast<std::uint64_t> (i);
+    writePhotoFiles (directory, "photo_" + std::to_string (i),
+                     simulator.photograph (head.mesh.vertices, frontal, generator.profileLine (), seed),
+                     static_cast<std::size_t> (i), provenance);
+  }
+}
+} // namespace
+
+void
+writeSyntheticStudy (const std::string& directory, const SyntheticStudySettings& settings,
+                     const nlohmann::json& provenance, const StudyProgress& progress)
+{
+  const ScanSimulator scanner (settings.scanner); // bad scanner settings fail before anything is written
+  if (settings.scans > settings.count || settings.photos > settings.count)
+    throw InvalidInputError ("synthetic study: " + std::to_string (settings.scans) + " scans and " +
+                             std::to_string (settings.photos) + " photo pairs of " + std::to_string (settings.count) +
+                             " heads; a head is scanned or photographed at most once");
+  const StudyProgress told = progress ? progress : [] (const std::string&, int, int) {};
+  const HeadGenerator generator (settings.resolution);
+  const std::vector<SyntheticHead> heads = generator.population (settings.count, settings.seed);
+  writePopulationFiles (directory, generator, heads, settings.seed, provenance,
+                        [&] (std::size_t done) { told ("writing heads", static_cast<int> (done), settings.count); });
+  for (int i = 0; i < settings.scans; ++i) {
+    const TriangleMesh& head = heads[static_cast<std::size_t> (i)].mesh;
+    writeScanFiles (directory, "scan_" + std::to_string (i), scanner.scan (head, settings.seed + i), head,
+                    generator.landmarks (), provenance);
+    told ("scanning heads", i + 1, settings.scans);
+  }
+  writeHeadPhotos (directory, settings, generator, heads, provenance);
 }
 
 } // namespace synthetic

@@ -2,6 +2,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_normals.h>
 #include <morphreg/synthetic/scan_simulator.h>
+#include <morphreg/synthetic/scanner_options.h>
 
 #include "mesh_slicer.h"
 
@@ -33,14 +34,6 @@ struct RangeImage
   std::vector<RangeSample> samples;
   Eigen::MatrixXi cells;
 };
-
-void
-requireSetting (bool ok, const std::string& name, double value, const std::string& allowed)
-{
-  if (!ok)
-    throw InvalidInputError ("ScanSimulator: " + name + " = " + std::to_string (value) + " is invalid; it must be " +
-                             allowed);
-}
 
 /** Casts every row's rays at the head and keeps the returns the incidence limit lets through. */
 RangeImage
@@ -187,24 +180,7 @@ triangulateRangeImage (const RangeImage& image, double max_edge_length)
 
 ScanSimulator::ScanSimulator (const Parameters& parameters) : parameters_ (parameters)
 {
-  const Parameters& p = parameters;
-  // The upper limits keep a scan within memory: at most 10^5 rays per turn, rows at least 0.01 mm apart.
-  requireSetting (p.angular_samples >= 8 && p.angular_samples <= kMaxAngularSamples, "angular_samples",
-                  p.angular_samples, "in [8, 100000]");
-  requireSetting (p.row_spacing >= kMinRowSpacing, "row_spacing", p.row_spacing, "at least 0.01 (mm)");
-  requireSetting (p.max_incidence_deg > 0.0 && p.max_incidence_deg < 90.0, "max_incidence_deg", p.max_incidence_deg,
-                  "in (0, 90)");
-  requireSetting (p.camera_elevation_deg >= 0.0 && p.camera_elevation_deg < 90.0, "camera_elevation_deg",
-                  p.camera_elevation_deg, "in [0, 90)");
-  requireSetting (p.noise_sigma >= 0.0, "noise_sigma", p.noise_sigma, "non-negative (mm)");
-  requireSetting (p.outlier_fraction >= 0.0 && p.outlier_fraction <= 0.5, "outlier_fraction", p.outlier_fraction,
-                  "in [0, 0.5]");
-  requireSetting (p.max_rotation_deg >= 0.0 && p.max_rotation_deg <= 180.0, "max_rotation_deg", p.max_rotation_deg,
-                  "in [0, 180]");
-  requireSetting (p.max_scale_deviation >= 0.0 && p.max_scale_deviation < 0.5, "max_scale_deviation",
-                  p.max_scale_deviation, "in [0, 0.5)");
-  requireSetting (p.max_translation >= 0.0, "max_translation", p.max_translation, "non-negative (mm)");
-  requireSetting (p.max_edge_length > 0.0, "max_edge_length", p.max_edge_length, "positive (mm)");
+  requireValidScannerParameters (parameters);
 }
 
 SimulatedScan

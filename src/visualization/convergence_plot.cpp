@@ -4,6 +4,8 @@
 
 #include "window_png.h"
 
+#include <morphreg/visualization/x_display.h>
+
 #include <vtkAutoInit.h>
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
@@ -81,7 +83,7 @@ saveConvergencePlot (const std::string& png_path, const IcpReport& report, const
   if (width < 160 || height < 120)
     throw InvalidInputError ("saveConvergencePlot: " + png_path + ": size " + std::to_string (width) + "x" +
                              std::to_string (height) + " is under 160x120");
-  detail::requireXDisplay ("saveConvergencePlot");
+  requireXDisplay ("saveConvergencePlot");
   auto view = vtkSmartPointer<vtkContextView>::New ();
   view->GetRenderWindow ()->SetOffScreenRendering (1);
   view->GetRenderWindow ()->SetSize (width, height);

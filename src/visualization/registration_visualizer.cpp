@@ -6,6 +6,8 @@
 
 #include "window_png.h"
 
+#include <morphreg/visualization/x_display.h>
+
 #include <pcl/visualization/pcl_visualizer.h>
 
 #include <vtkActor.h>
@@ -142,7 +144,7 @@ appendPropPoints (vtkProp* prop, std::size_t most, std::vector<Eigen::Vector3d>&
 RegistrationVisualizer::RegistrationVisualizer (Display display, const std::string& window_name)
   : display_ (display), background_ (1.0, 1.0, 1.0)
 {
-  detail::requireXDisplay ("RegistrationVisualizer");
+  requireXDisplay ("RegistrationVisualizer");
   visualizer_ = std::make_shared<pcl::visualization::PCLVisualizer> (window_name, display == Display::Window);
   if (display == Display::Offscreen)
     visualizer_->getRenderWindow ()->SetOffScreenRendering (1);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "window_png.h"
 
+#include <morphreg/visualization/x_display.h>
+
 #include <morphreg/common/error.h>
 #include <morphreg/io/atomic_file.h>
 
@@ -35,15 +37,6 @@ endsWithPngEnd (const std::string& path)
 } // namespace
 
 void
-requireXDisplay (const std::string& who)
-{
-  const char* x_display = std::getenv ("DISPLAY");
-  if (x_display == nullptr || *x_display == '\0')
-    throw Error (who + ": no X display ($DISPLAY is unset); VTK renders through X even offscreen, so run headless "
-                       "programs under `xvfb-run -a`");
-}
-
-void
 writeWindowPng (vtkRenderWindow& window, const std::string& png_path)
 {
   window.Render ();
@@ -62,4 +55,13 @@ writeWindowPng (vtkRenderWindow& window, const std::string& png_path)
   });
 }
 } // namespace detail
+
+void
+requireXDisplay (const std::string& who)
+{
+  const char* x_display = std::getenv ("DISPLAY");
+  if (x_display == nullptr || *x_display == '\0')
+    throw Error (who + ": no X display ($DISPLAY is unset); VTK renders through X even offscreen, so run headless "
+                       "programs under `xvfb-run -a`");
+}
 } // namespace morphreg

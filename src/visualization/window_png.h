@@ -9,10 +9,6 @@ namespace morphreg
 {
 namespace detail
 {
-/** Throws morphreg::Error naming \a who when $DISPLAY is unset: Debian's VTK renders through X even offscreen. */
-void
-requireXDisplay (const std::string& who);
-
 /** Renders \a window and writes it as a PNG, atomically; IoError naming \a png_path if it cannot be written whole. */
 void
 writeWindowPng (vtkRenderWindow& window, const std::string& png_path);

@@ -9,6 +9,7 @@
 
 #include <morphreg/common/error.h>
 #include <morphreg/io/cloud_io.h>
+#include <morphreg/io/json_file.h>
 #include <morphreg/io/landmark_io.h>
 #include <morphreg/io/mesh_annotations.h>
 #include <morphreg/io/mesh_io.h>
@@ -16,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -228,25 +230,42 @@ TEST (ModelBuildingTest, UnreadableScansAreReportedAndTooFewRemainingIsRefusedNa
   EXPECT_THROW (morphreg::ModelFromScans (nullptr), morphreg::InvalidInputError);
 }
 
-TEST (ModelBuildingTest, SimulatedScansAreRegisteredResampledAndBuiltIntoAModel)
+/** Scans of the heads \a first.. of heads (9) (the registering model's are the first six) written into
+ *  \a directory with their landmarks, and a missing scan last. */
+morphreg::ScanManifest
+simulatedScans (const morphreg::MorphableModel& registering, const morphreg::test::TempDirectory& directory,
+                std::size_t first)
 {
-  const morphreg::MorphableModel::ConstPtr registering = registeringModel ();
-  morphreg::test::TempDirectory directory;
   morphreg::ScanManifest scans;
   morphreg::test::ProtocolSettings protocol;
   protocol.points = 15000;
-  const std::vector<TriangleMesh> subjects = heads (9); // the registering model's six and three others
-  for (std::size_t k = 6; k < subjects.size (); ++k) {
-    const auto scan = morphreg::test::simulateProtocolScan (subjects[k], registering->landmarks (), k, protocol);
+  const std::vector<TriangleMesh> subjects = heads (9);
+  for (std::size_t k = first; k < subjects.size (); ++k) {
+    const auto scan = morphreg::test::simulateProtocolScan (subjects[k], registering.landmarks (), k, protocol);
     const std::string id = "subject_" + std::to_string (k);
     scans.push_back ({id, directory.file (id + ".pcd"), directory.file (id + "_landmarks.json"), "folder"});
     morphreg::saveCloud (scans.back ().scan, *scan.cloud);
     morphreg::saveLandmarks (scans.back ().landmarks, scan.landmarks);
   }
   scans.push_back ({"missing", directory.file ("missing.pcd"), "", "folder"});
+  return scans;
+}
+
+/** ModelFromScans' settings with 5 components per region, so that the fits are quick. */
+morphreg::ModelFromScansSettings
+fiveComponents ()
+{
   morphreg::ModelFromScansSettings settings;
   settings.registration.components = {5};
-  const ModelBuildingOutcome built = morphreg::ModelFromScans (registering, settings).build (scans, "folder");
+  return settings;
+}
+
+TEST (ModelBuildingTest, SimulatedScansAreRegisteredResampledAndBuiltIntoAModel)
+{
+  const morphreg::MorphableModel::ConstPtr registering = registeringModel ();
+  morphreg::test::TempDirectory directory;
+  const morphreg::ScanManifest scans = simulatedScans (*registering, directory, 6);
+  const ModelBuildingOutcome built = morphreg::ModelFromScans (registering, fiveComponents ()).build (scans, "folder");
 
   ASSERT_EQ (built.inputs.size (), 4u);
   for (std::size_t k = 0; k < 3; ++k) {
@@ -262,6 +281,44 @@ TEST (ModelBuildingTest, SimulatedScansAreRegisteredResampledAndBuiltIntoAModel)
   EXPECT_EQ (built.model->numVertices (), registering->numVertices ());
   EXPECT_EQ (built.model->numRegions (), registering->numRegions ());
   EXPECT_EQ (built.source["included"], 3);
+}
+
+TEST (ModelBuildingTest, EachScansFitReportAndResampledMeshAndTheSummaryAreWrittenIntoTheFolder)
+{
+  const morphreg::MorphableModel::ConstPtr registering = registeringModel ();
+  morphreg::test::TempDirectory directory;
+  const morphreg::ScanManifest scans = simulatedScans (*registering, directory, 7);
+  morphreg::ModelFromScans building (registering, fiveComponents ());
+  const std::string folder = directory.file ("reports");
+  std::filesystem::create_directory (folder);
+  building.writeScanFilesInto (folder, "registering.h5", "residual", {{"made_by", "the test"}});
+  CountingObserver observer;
+  building.setObserver (&observer);
+  const ModelBuildingOutcome built = building.build (scans, "folder");
+  EXPECT_EQ (built.source["included"], 2);
+
+  const auto outputs = morphreg::ModelFromScans::scanFolderOutputs (scans, folder);
+  ASSERT_EQ (outputs.size (), 3 * scans.size () + 1);
+  EXPECT_EQ (outputs.back ().first, folder + "/summary.json");
+  EXPECT_EQ (outputs[1].second, "the fit of scan 'subject_7'");
+  for (const auto& [file, what] : outputs) {
+    if (file.find ("missing") == std::string::npos || file.find (".json") != std::string::npos)
+      EXPECT_TRUE (std::filesystem::exists (file)) << what;
+  }
+  EXPECT_FALSE (std::filesystem::exists (folder + "/missing_fit.ply")) << "a failed scan has its report alone";
+  const nlohmann::json report = morphreg::readJsonFile (folder + "/subject_7.json");
+  EXPECT_EQ (report["status"], "ok");
+  EXPECT_EQ (report["made_by"], "the test");
+  EXPECT_EQ (report["resampled_mesh"], folder + "/subject_7.ply");
+  EXPECT_EQ (report["settings"]["components"][0], 5);
+  EXPECT_EQ (morphreg::readJsonFile (folder + "/missing.json")["status"], "failed");
+  const nlohmann::json summary = morphreg::readJsonFile (folder + "/summary.json");
+  EXPECT_EQ (summary["scans"], 3);
+  EXPECT_EQ (summary["included"], 2);
+  EXPECT_EQ (summary["model"], "registering.h5");
+  EXPECT_EQ (summary["made_by"], "the test");
+  EXPECT_EQ (summary["rows"][2]["report"], folder + "/missing.json");
+  EXPECT_EQ (morphreg::loadTriangleMesh (folder + "/subject_8.ply").numVertices (), registering->numVertices ());
 }
 
 TEST (ModelBuildingTest, ScanDefaultsFitCloselyAsTheCommandLineDocuments)

@@ -7,6 +7,7 @@
 #include "support/temp_directory.h"
 
 #include <morphreg/common/error.h>
+#include <morphreg/io/fitted_mesh_io.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/rgb_image_io.h>
@@ -104,6 +105,17 @@ TEST (PhotoRegistrationTest, FitsThePairFromItsFilesEvaluatesItAgainstTheTruthFi
   std::cout << "unseen head from its photo files: vertex RMS " << rms << " mm (the mean head " << mean_rms << ")\n";
   EXPECT_LT (rms, mean_rms);
 
+  // The mesh file: coloured by the truth's errors (also its quality), or plain without a truth or photo pixels.
+  nlohmann::json report = outcome.report;
+  EXPECT_EQ (morphreg::writePhotoFitMesh (directory.file ("truth.ply"), outcome.fit, photos, head.truth, 5.0, report),
+             "error against the truth, 0-5.0 mm");
+  EXPECT_NEAR (report["truth_error_mm"]["rms"].get<double> (), rms, 1e-6);
+  const morphreg::FittedMeshFile written = morphreg::loadFittedMesh (directory.file ("truth.ply"));
+  ASSERT_TRUE (written.residuals);
+  EXPECT_LT ((*written.residuals - errors.vertex_errors).cwiseAbs ().maxCoeff (), 1e-4);
+  EXPECT_EQ (morphreg::writePhotoFitMesh (directory.file ("plain.ply"), outcome.fit, photos, "", 5.0, report), "none");
+  EXPECT_FALSE (morphreg::loadFittedMesh (directory.file ("plain.ply")).residuals);
+
   // The texture comes from the views that have pixels: none here, then a red frontal photo.
   EXPECT_FALSE (morphreg::photoTexture (outcome.fit, photos)) << "no view has pixels";
 
@@ -122,6 +134,10 @@ TEST (PhotoRegistrationTest, FitsThePairFromItsFilesEvaluatesItAgainstTheTruthFi
       EXPECT_EQ (texture->colours.col (v).cast<int> (), Eigen::Vector3i (200, 0, 0)) << "vertex " << v;
       break;
     }
+  EXPECT_EQ (morphreg::writePhotoFitMesh (directory.file ("photo.ply"), outcome.fit, photos, "", 5.0, report),
+             "the photos, blended by angle (grey where unseen)");
+  EXPECT_EQ (report["texture"]["photos"], 1);
+  EXPECT_EQ (report["texture"]["visible_vertices"], texture->visibleCount ());
 }
 
 TEST (PhotoRegistrationTest, BadInputIsNamed)

@@ -289,7 +289,7 @@ morphreg_cli_test(BatchFailingScanIsNamedInTheSummary FIXTURES_REQUIRED "cli_mod
        --out-dir ${cli_dir}/batch_failing --quiet)
 morphreg_cli_expect_exit(BatchDuplicateIdIsNamed 1 "batch_duplicate.csv:4: duplicate scan id 'scan_0' (first at"
   register --scans ${cli_dir}/batch_duplicate.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/bad_batch)
-morphreg_cli_expect_exit(BatchShardOutOfRangeIsNamed 1 "--shard '2/2': expected I/N with 0 <= I < N"
+morphreg_cli_expect_exit(BatchShardOutOfRangeIsNamed 1 "shard '2/2': expected I/N with 0 <= I < N"
   register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/bad_batch --shard 2/2)
 morphreg_cli_expect_exit(BatchShardAutoNeedsSlurm 1 "SLURM_ARRAY_TASK_ID is not set"
   register --scans ${cli_dir}/batch.csv --model ${cli_dir}/small_model.h5 --out-dir ${cli_dir}/bad_batch --shard auto)
@@ -350,7 +350,7 @@ morphreg_cli_test(EvaluateModelFromScansTable FIXTURES_REQUIRED "cli_small;cli_f
   OUTPUT "components  compactness  generalisation mm \\(sd\\)  specificity mm \\(sd\\)\n +1 +0\\.[0-9]+ +[0-9.]+ \\([0-9.]+\\)  [0-9.]+ \\("
   ARGS evaluate-model --model ${cli_dir}/from_scans.h5 --meshes ${cli_dir}/small/head_005.ply
        --training ${cli_dir}/from_scans_scans/scan_0.ply ${cli_dir}/from_scans_scans/scan_1.ply --quiet)
-morphreg_cli_expect_exit(EvaluateModelTooManyComponentsIsNamed 1 "--components 99: "
+morphreg_cli_expect_exit(EvaluateModelTooManyComponentsIsNamed 1 "99 components asked for; it has 8 global"
   evaluate-model --model ${cli_dir}/small_model.h5 --meshes ${cli_dir}/small/head_010.ply --components 99)
 set_tests_properties(CliTest.EvaluateModelTooManyComponentsIsNamed PROPERTIES FIXTURES_REQUIRED "cli_small;cli_model")
 
@@ -647,12 +647,12 @@ morphreg_cli_test(SegmentedWarpTakesABlendWidthPerSegment FIXTURES_REQUIRED cli_
   FILES ${cli_dir}/warped_blend.ply
   ARGS ${small_warp} --labels ${cli_dir}/small/regions.json --blend 0,0,0,0,0,0,40 --report ${cli_dir}/warp_blend.json
        --out ${cli_dir}/warped_blend.ply)
-morphreg_cli_expect_exit(WarpBlendCountIsNamed 1 "--blend has 3 values for 7 segments"
+morphreg_cli_expect_exit(WarpBlendCountIsNamed 1 "the blend width has 3 values for 7 segments"
   warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
   --target ${cli_dir}/small/head_001_landmarks.json --labels ${cli_dir}/small/regions.json --blend 1,2,3
   --out ${cli_dir}/bad_warp.ply)
 set_tests_properties(CliTest.WarpBlendCountIsNamed PROPERTIES FIXTURES_REQUIRED cli_small)
-morphreg_cli_expect_exit(WarpOverlapCountIsNamed 1 "--overlap has 2 values for 7 segments"
+morphreg_cli_expect_exit(WarpOverlapCountIsNamed 1 "the overlap has 2 values for 7 segments"
   warp --mesh ${cli_dir}/small/head_000.ply --source ${cli_dir}/small/head_000_landmarks.json
   --target ${cli_dir}/small/head_001_landmarks.json --labels ${cli_dir}/small/regions.json --overlap 30,30
   --out ${cli_dir}/bad_warp.ply)
@@ -698,7 +698,7 @@ function(morphreg_mh_bad_input name text)
   morphreg_cli_test(${name} FIXTURES_REQUIRED cli_mh_joints REQUIRES_DATA ${bodies}/mh_joints.json EXPECT_CODE 1
     ERROR "${text}" ABSENT ${mh_dir}/bad.ply ARGS ${ARGN})
 endfunction()
-morphreg_mh_bad_input(WarpArticulatedNeedsLabels "warp --method articulated needs --labels"
+morphreg_mh_bad_input(WarpArticulatedNeedsLabels "the articulated warp needs the segment of each vertex"
   warp --method articulated --mesh ${bodies}/mh_base.ply --source ${mh_dir}/standing.csv
   --target ${mh_dir}/seated.csv --units dm --out ${mh_dir}/bad.ply)
 # Hip and knee at one point: in the source only, the point would have two targets; in both, the thigh has no length.

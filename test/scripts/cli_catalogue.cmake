@@ -544,7 +544,7 @@ morphreg_bad_input(ScanStrayPoint 1 TEXT "scan_stray.pcd: point 42" "a stray poi
 # --- Memory before allocation -------------------------------------------------------------------------------------
 set(ict ${MORPHREG_SHARED_DATA_DIR}/ict_facekit)
 if(EXISTS ${ict})
-  morphreg_bad_input(IctSamplesNeedTooMuchMemory 1 TEXT "build-model --samples 100000" "of memory; this machine has"
+  morphreg_bad_input(IctSamplesNeedTooMuchMemory 1 TEXT "100000 heads drawn from the ICT model of" "of memory; this machine has"
     ARGS build-model --from-ict ${ict} --samples 100000 --quiet --out @CASE@/ict.h5)
 endif()
 

@@ -19,6 +19,12 @@ add_test(NAME FixtureTest.EveryRequiredFixtureIsSetUp
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_fixtures.py ${CMAKE_BINARY_DIR})
 add_test(NAME FixtureTest.CheckerFindsAnUnknownFixture
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_fixtures.py --self-test)
+# FrontEndTest: tools/ stays an adapter over the library, at most 8 % of its lines (scripts/check_front_end_share.py).
+add_test(NAME FrontEndTest.ToolsAreAtMost8PercentOfTheLibrary
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_front_end_share.py ${PROJECT_SOURCE_DIR}
+          --max-percent 8)
+add_test(NAME FrontEndTest.CheckerFindsALargeShare
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_front_end_share.py --self-test)
 # LayerTest: the library's folders include only the folders docs/architecture.md's layer table allows them, and no
 # public header names the shared data's path (scripts/check_layers.py).
 add_test(NAME LayerTest.IncludesFollowTheLayers

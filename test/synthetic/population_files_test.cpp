@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 
 using morphreg::synthetic::SyntheticHead;
@@ -108,6 +110,41 @@ TEST (PopulationFilesTest, ScanWithItsPosedTruth)
   const std::vector<double> pose = truth["head_to_scan"];
   EXPECT_TRUE (Eigen::Map<const Eigen::Matrix4d> (pose.data ()).isApprox (scan.head_to_scan.matrix (), 1e-12));
   EXPECT_FALSE (truth.contains ("morphreg"));
+}
+
+TEST (PopulationFilesTest, AStudyOfHeadsScansAndPhotosWithItsProgress)
+{
+  const morphreg::test::TempDirectory dir;
+  const std::string folder = dir.file ("study");
+  std::filesystem::create_directory (folder);
+  morphreg::synthetic::SyntheticStudySettings settings;
+  settings.count = 3;
+  settings.resolution = 20;
+  settings.scans = 2;
+  settings.photos = 1;
+  settings.scanner.angular_samples = 100;
+  settings.scanner.row_spacing = 5.0;
+  std::vector<std::string> told;
+  morphreg::synthetic::writeSyntheticStudy (
+      folder, settings, {{"by", "the test"}}, [&] (const std::string& stage, int done, int count) {
+        told.push_back (stage + " " + std::to_string (done) + "/" + std::to_string (count));
+      });
+  EXPECT_EQ (told.back (), "scanning heads 2/2");
+  EXPECT_NE (std::find (told.begin (), told.end (), "writing heads 3/3"), told.end ());
+  for (const char* file : {"population.json", "scan_1.pcd", "scan_1_truth.ply", "photo_0_profile.json"})
+    EXPECT_TRUE (std::filesystem::exists (folder + "/" + file)) << file;
+  EXPECT_FALSE (std::filesystem::exists (folder + "/scan_2.pcd"));
+  EXPECT_FALSE (std::filesystem::exists (folder + "/photo_1_profile.json"));
+
+  settings.scans = 4;
+  const std::string refused = dir.file ("refused");
+  std::filesystem::create_directory (refused);
+  morphreg::test::expectErrorContaining<morphreg::InvalidInputError> (
+      [&] { morphreg::synthetic::writeSyntheticStudy (refused, settings); }, "4 scans and 1 photo pairs of 3 heads");
+  settings.scans = 1;
+  settings.scanner.noise_sigma = -1.0;
+  EXPECT_THROW (morphreg::synthetic::writeSyntheticStudy (refused, settings), morphreg::InvalidInputError);
+  EXPECT_TRUE (std::filesystem::is_empty (refused)) << "nothing written";
 }
 
 TEST (PopulationFilesTest, UnwritableFolderIsNamed)

@@ -219,7 +219,7 @@ TEST (ScanSimulatorTest, BadInputIsRejectedWithItsName)
     FAIL () << "negative noise accepted";
   }
   catch (const morphreg::InvalidInputError& e) {
-    EXPECT_NE (std::string (e.what ()).find ("noise_sigma"), std::string::npos) << e.what ();
+    EXPECT_NE (std::string (e.what ()).find ("scanner setting noise = -1"), std::string::npos) << e.what ();
   }
   parameters = ScanSimulator::Parameters ();
   parameters.outlier_fraction = 0.9;

@@ -5,6 +5,7 @@
  *  bounds it once, and the command line (`--max-distance`), the Python keywords (`max_distance=`) and the library's
  *  checks all read the same table (registration_options.h, resampling_options.h).
  */
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <string>
@@ -16,6 +17,12 @@ namespace morphreg
 {
 /** \brief SettingOption::highest of a setting without an upper bound: any finite number at least the lowest. */
 constexpr double kUnboundedSetting = std::numeric_limits<double>::max ();
+
+/** \brief SettingOption::highest of a setting without an upper bound that also takes infinity (no limit at all). */
+constexpr double kInfiniteSetting = std::numeric_limits<double>::infinity ();
+
+/** \brief SettingOption::lowest of a setting that must be above 0 (a weight, a noise level), 0 itself refused. */
+constexpr double kAboveZeroSetting = std::numeric_limits<double>::denorm_min ();
 
 /** \brief One field of \a Settings as users set it. */
 template <typename Settings>
@@ -29,8 +36,8 @@ struct SettingOption
   std::string name;     ///< the field's name, the Python keyword; the option is "--" + name with '-' for '_'
   std::string help;     ///< one sentence for --help and the Python docstring
   Field field;          ///< the field of the settings struct it sets
-  double lowest = 0.0;  ///< numbers: the smallest value allowed (each count of a list)
-  double highest = 0.0; ///< numbers: the largest value allowed (kUnboundedSetting: no bound)
+  double lowest = 0.0;  ///< numbers: the smallest value allowed (each count of a list; kAboveZeroSetting: > 0)
+  double highest = 0.0; ///< numbers: the largest value allowed (kUnboundedSetting: no bound; kInfiniteSetting: inf too)
   std::vector<std::string> choices; ///< names: the values allowed
 };
 
@@ -40,15 +47,30 @@ struct SettingOption
 std::string
 commandLineName (const std::string& name);
 
-/** \brief Throws InvalidInputError "<kind> <name> = <value> is out of range (<range>)" unless \a value is finite
- *  and within [\a lowest, \a highest].
+/** \brief Throws InvalidInputError "<kind> <name> = <value> is out of range (<range>)" unless \a value is within
+ *  [\a lowest, \a highest] and finite (or infinite with \a highest kInfiniteSetting).
  *  \param[in] kind what the message calls a setting ("registration setting")
  *  \param[in] name the setting's name
  *  \param[in] value its value
- *  \param[in] lowest the smallest value allowed
- *  \param[in] highest the largest value allowed (kUnboundedSetting: no bound) */
+ *  \param[in] lowest the smallest value allowed (kAboveZeroSetting: any above 0)
+ *  \param[in] highest the largest value allowed (kUnboundedSetting: no bound; kInfiniteSetting: inf too) */
 void
 requireSettingInRange (const std::string& kind, const std::string& name, double value, double lowest, double highest);
+
+/** \brief The range of a numeric setting in words.
+ *  \param[in] lowest the smallest value allowed (kAboveZeroSetting: any above 0)
+ *  \param[in] highest the largest value allowed (kUnboundedSetting: no bound; kInfiniteSetting: inf too)
+ *  \return "0 to 1", "at least 0", "above 0", "above 0, or inf" */
+std::string
+settingRangeText (double lowest, double highest);
+
+/** \brief Whether \a value is within a numeric setting's range (see requireSettingInRange).
+ *  \param[in] value the value
+ *  \param[in] lowest the smallest value allowed (kAboveZeroSetting: any above 0)
+ *  \param[in] highest the largest value allowed (kUnboundedSetting: no bound; kInfiniteSetting: inf too)
+ *  \return true when it is allowed */
+bool
+isSettingInRange (double value, double lowest, double highest);
 
 /** \brief Throws InvalidInputError "<kind> <name> = "<value>" is none of <choices>" unless \a value is one of them.
  *  \param[in] kind what the message calls a setting ("registration setting")
@@ -87,6 +109,33 @@ requireValidOption (const SettingOption<Settings>& option, const Settings& setti
           requireSettingChoice (kind, option.name, value, option.choices);
       },
       option.field);
+}
+
+/** \brief Throws InvalidInputError for the first entry of \a options whose value in \a settings is outside its range
+ *  or choices (requireValidOption).
+ *  \param[in] options the table
+ *  \param[in] settings the settings
+ *  \param[in] kind what the messages call a setting of this table */
+template <typename Settings>
+void
+requireValidOptions (const std::vector<SettingOption<Settings>>& options, const Settings& settings,
+                     const std::string& kind)
+{
+  for (const SettingOption<Settings>& option : options)
+    requireValidOption (option, settings, kind);
+}
+
+/** \brief One table from its parts, in order (a long table is written as a few functions of related settings).
+ *  \param[in] parts the parts
+ *  \return the table */
+template <typename Settings>
+std::vector<SettingOption<Settings>>
+joinedOptions (std::initializer_list<std::vector<SettingOption<Settings>>> parts)
+{
+  std::vector<SettingOption<Settings>> options;
+  for (const std::vector<SettingOption<Settings>>& part : parts)
+    options.insert (options.end (), part.begin (), part.end ());
+  return options;
 }
 
 /** \brief The entry of a table by name.

@@ -2,8 +2,10 @@
 #pragma once
 /** \file photo_fit_options.h
  *  \brief The settings of a photo fit by their command-line names (`morphreg fit-photos --approach ...`), applied in
- *  one place for the command line and the Python module.
+ *  one place for the command line and the Python module, and their one table (name, help text, range or choices)
+ *  that the command line, the Python keywords and the library's checks all read.
  */
+#include <morphreg/common/setting_options.h>
 #include <morphreg/photo/photo_fit.h>
 #include <morphreg/photo/photo_fitting.h>
 #include <morphreg/photo/photo_view.h>
@@ -31,6 +33,20 @@ struct PhotoFitOptions
   double outline_landmark_weight = PhotoFitting::kDefaultLandmarkWeight; ///< their weight (>= 0)
   double sagittal_weight = PhotoFitting::kDefaultSagittalWeight;         ///< weight of the sagittal rows (>= 0)
 };
+
+/** \brief One setting of PhotoFitOptions as users set it. */
+using PhotoFitOption = SettingOption<PhotoFitOptions>;
+
+/** \brief Every user setting of a photo fit.
+ *  \return the table, in the order --help lists it */
+const std::vector<PhotoFitOption>&
+photoFitOptionTable ();
+
+/** \brief Throws InvalidInputError naming the first setting of \a options ("photo fit setting NAME") outside its
+ *  range or choices.
+ *  \param[in] options the settings */
+void
+requireValidPhotoFitOptions (const PhotoFitOptions& options);
 
 /** \brief The mode called \a name ("outline", "vertex", "ignored"); InvalidInputError otherwise.
  *  \param[in] name the mode's name

@@ -2,7 +2,7 @@
 #pragma once
 /** \file batch_shard.h
  *  \brief One share of a study for one machine of a job array (see manifestShard in io/scan_manifest.h): which it
- *  is, and the names of its files.
+ *  is, the names of its files, and the share a user names ("I/N", or "auto" in a Slurm job array).
  */
 #include <string>
 
@@ -30,4 +30,12 @@ struct BatchShard
     return count > 1 ? "shard-" + std::to_string (index) + "-of-" + std::to_string (count) : std::string ("all");
   }
 };
+
+/** \brief The share \a text names: "I/N" (0 <= I < N), "auto" for this task of a Slurm job array (its
+ *  SLURM_ARRAY_TASK_ID less SLURM_ARRAY_TASK_MIN, of SLURM_ARRAY_TASK_COUNT), or empty for the whole study.
+ *  \param[in] text the share as a user writes it
+ *  \return the share
+ *  \throws InvalidInputError naming \a text when it is neither, or the Slurm variable that is unset or not a number */
+BatchShard
+parseBatchShard (const std::string& text);
 } // namespace morphreg

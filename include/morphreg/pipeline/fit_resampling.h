@@ -5,7 +5,9 @@
  *  resample` and `build-model --from-scans`): skipped for a fit that failed its checks, refused naming the scan when
  *  the resampler cannot use it, and reported; writeResampledFit() writes the mesh and adds it to the fit's report.
  */
+#include <morphreg/common/length_unit.h>
 #include <morphreg/mesh/triangle_mesh.h>
+#include <morphreg/model/morphable_model.h>
 #include <morphreg/resampling/resampling_settings.h>
 #include <morphreg/resampling/scan_resampler.h>
 
@@ -69,5 +71,39 @@ std::optional<ResamplingResult>
 writeResampledFit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& scan_file,
                    const TriangleMesh& fitted, const ResamplingSettings& settings, const ResampledMeshFile& file,
                    nlohmann::json& report, std::ostream& warnings);
+
+/** \brief The files of a resampling whose reference is the model's mean warped onto landmarks marked on the scan. */
+struct LandmarkResamplingFiles
+{
+  std::string scan;            ///< the scan file, or a depth image (with intrinsics)
+  std::string intrinsics;      ///< the depth image's camera (JSON), or empty for a scan file
+  std::string landmarks;       ///< the landmarks marked on the scan (mm, as every landmark file)
+  std::string reference;       ///< the warped mean head to write (the reference, in the scan's frame, mm)
+  ResampledMeshFile resampled; ///< the resampled mesh to write
+};
+
+/** \brief What resampleFromLandmarks did. */
+struct LandmarkResampling
+{
+  std::optional<ResamplingResult> result; ///< the resampled mesh
+  LengthUnitGuess unit;                   ///< the scan's unit, given or guessed
+  /** "status", "checks", "units", "scan" (file, points, unit), "reference" (method, landmarks, mesh) and the
+   *  resampling's entries (writeResampledFit). */
+  nlohmann::json report;
+};
+
+/** \brief The scan resampled without a registration (METHOD section 5): read (readScanOrDepthImage) and brought to mm
+ *  (\a units given or guessed, scanInputUnit), the model's mean warped by a thin plate spline onto the landmarks
+ *  marked on it (landmarkReference) as the reference, which is written, then resampled into it (writeResampledFit).
+ *  InvalidInputError when there are no landmarks, or they lie off the scan.
+ *  \param[in] model the model (its mean head and landmarks)
+ *  \param[in] files the inputs and outputs
+ *  \param[in] units the scan's unit, or "auto"
+ *  \param[in] settings the resampling's settings
+ *  \param[out] warnings where the resampling's warnings go
+ *  \return the resampling, the unit and the report */
+LandmarkResampling
+resampleFromLandmarks (const MorphableModel& model, const LandmarkResamplingFiles& files, const std::string& units,
+                       const ResamplingSettings& settings, std::ostream& warnings);
 
 } // namespace morphreg

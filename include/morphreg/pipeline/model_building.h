@@ -27,6 +27,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace morphreg
@@ -91,6 +92,11 @@ public:
   /** Every input has been tried, before the model is built (and before too few inputs are refused). */
   virtual void
   inputsTried (const std::vector<ModelInput>& /*inputs*/)
+  {}
+
+  /** Something about an input the user should know that does not leave it out (its colours could not be read). */
+  virtual void
+  warning (const std::string& /*text*/)
   {}
 };
 
@@ -222,6 +228,26 @@ public:
   void
   setScanStep (ScanStep step);
 
+  /** \brief Writes each scan's outputs into \a folder as the scans are tried, as `morphreg register` and `resample`
+   *  write them (ScanFileRegistration::registerStudyScan): \<id\>_fit.ply (the fit, coloured as \a colours says),
+   *  \<id\>.json (its report) and \<id\>.ply (the resampled mesh); once every scan was tried, summary.json (a row per
+   *  scan with its report's file). Replaces the scan step (setScanStep).
+   *  \param[in] folder the folder (it must exist)
+   *  \param[in] model_file the registering model's file, for the reports
+   *  \param[in] colours the fits' colours (ScanFileSettings::colours)
+   *  \param[in] report_fields fields every report and the summary get at their top level (setReportFields) */
+  void
+  writeScanFilesInto (const std::string& folder, const std::string& model_file, const std::string& colours = "auto",
+                      const nlohmann::json& report_fields = nlohmann::json::object ());
+
+  /** \brief The files writeScanFilesInto writes for \a scans into \a folder, each with what it is ("the report of
+   *  scan 'a'"), for an output plan.
+   *  \param[in] scans the scans
+   *  \param[in] folder the folder
+   *  \return path and description, the summary last */
+  static std::vector<std::pair<std::string, std::string>>
+  scanFolderOutputs (const ScanManifest& scans, const std::string& folder);
+
   /** \brief Registers and resamples every scan (the step), then builds the model from those that made it.
    *  Throws InvalidInputError naming \a study when fewer than two remain.
    *  \param[in] scans the scans (scan_manifest.h)
@@ -252,10 +278,20 @@ private:
   MorphableModel::Ptr
   buildModel (const std::vector<TriangleMesh>& meshes) const;
 
+  ScanForModel
+  writeScanFiles (const ScanEntry& entry, const std::string& model_file, const std::string& colours,
+                  const nlohmann::json& report_fields) const;
+
+  void
+  writeSummary (const std::vector<ModelInput>& inputs) const;
+
   MorphableModel::ConstPtr registering_;
   ModelFromScansSettings settings_;
   ModelBuildingObserver* observer_ = nullptr;
   ScanStep step_;
+  std::string folder_;            ///< writeScanFilesInto's folder, or empty
+  std::string model_file_;        ///< its registering model's file
+  nlohmann::json summary_fields_; ///< fields of its summary.json
 };
 
 } // namespace morphreg

@@ -100,6 +100,21 @@ photoTruthErrors (const PhotoTruth& truth, const PhotoFit& fit);
 std::optional<VertexTexture>
 photoTexture (const PhotoFit& fit, const PhotoSet& photos);
 
+/** \brief Writes the fitted head (model frame, mm) as the mesh file \a path: coloured by its error against
+ *  \a truth_file (the error also as each vertex's quality; \a colour_max mm at the top of the scale) when one is given,
+ *  else by the photos (photoTexture) when a view has one, else plain. Adds the truth errors (photoTruthErrors) or the
+ *  texture's counts to \a report.
+ *  \param[in] path the mesh file to write
+ *  \param[in] fit the fit
+ *  \param[in] photos the photos it was fitted to
+ *  \param[in] truth_file the true head and pose (readPhotoTruth), or empty
+ *  \param[in] colour_max the error at the top of the colour scale (mm)
+ *  \param[in,out] report the fit's report
+ *  \return what the colours show: "error against the truth, 0-C mm", the photos, or "none" */
+std::string
+writePhotoFitMesh (const std::string& path, const PhotoFit& fit, const PhotoSet& photos, const std::string& truth_file,
+                   double colour_max, nlohmann::json& report);
+
 /** \brief What a photo fit tells as it goes; every method does nothing by default. */
 class PhotoRegistrationObserver
 {

@@ -158,4 +158,15 @@ modelFileUnitsMessage (const MorphableModel& model, const std::string& path);
 std::string
 scanFileUnitMessage (const std::string& scan_file);
 
+/** \brief The fit's vertex distances to the true mesh \a truth_file (the model's topology, in the scan's frame): over
+ *  every vertex, and over the vertices the scan covers (those with a finite residual). InvalidInputError naming
+ *  \a truth_file when its topology is not the fit's.
+ *  \param[in] fitted the fitted mesh, in the scan's frame
+ *  \param[in] residuals its per-vertex residuals (NaN where no scan point corresponds)
+ *  \param[in] truth_file the true mesh
+ *  \return the statistics (distance_statistics.h) with "covered_by_scan" and "file": a report's
+ *  "truth_vertex_error_mm" */
+nlohmann::json
+truthVertexErrors (const TriangleMesh& fitted, const Eigen::VectorXd& residuals, const std::string& truth_file);
+
 } // namespace morphreg

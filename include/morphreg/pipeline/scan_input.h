@@ -53,4 +53,16 @@ readScanFile (const std::string& path);
 ScanInput
 readDepthImageScan (const std::string& depth_png, const std::string& intrinsics_json);
 
+/** \brief The scan of a registration: the scan file \a path (readScanFile), or with \a intrinsics a depth image
+ *  (readDepthImageScan). A depth image has no colours and holds mm: InvalidInputError naming it when \a colours is
+ *  "scan" or \a units neither "auto" nor "mm".
+ *  \param[in] path the scan file, or the depth image (16-bit PNG, mm)
+ *  \param[in] intrinsics the depth image's camera (JSON), or empty for a scan file
+ *  \param[in] colours the fitted mesh's colours asked for ("scan", "residual", "auto")
+ *  \param[in] units the scan's unit asked for
+ *  \return the scan */
+ScanInput
+readScanOrDepthImage (const std::string& path, const std::string& intrinsics, const std::string& colours,
+                      const std::string& units);
+
 } // namespace morphreg

@@ -7,6 +7,7 @@
 #include <morphreg/common/length_unit.h>
 #include <morphreg/model/model_radius.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/pipeline/scan_input.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -40,5 +41,27 @@ scanUnit (const pcl::PointCloud<pcl::PointNormal>& scan, const std::string& unit
 LengthUnitGuess
 convertScanToMillimetres (pcl::PointCloud<pcl::PointNormal>& scan, const std::string& units,
                           const MorphableModel& model, const std::string& scan_name, bool one_view = false);
+
+/** \brief The unit of a scan as read: the one its source fixes (a depth image holds mm), else \a units given or
+ *  guessed as scanUnit does (a scan with a viewpoint is one sensor's view).
+ *  \param[in] scan the scan as read
+ *  \param[in] units the scan's unit, or "auto"
+ *  \param[in] model the model it will be registered to (mm)
+ *  \return the unit, the size ratio and why */
+LengthUnitGuess
+scanInputUnit (const ScanInput& scan, const std::string& units, const MorphableModel& model);
+
+/** \brief A copy of \a scan with its points and viewpoint times \a factor (normals keep their direction).
+ *  \param[in] scan the scan
+ *  \param[in] factor the scale, e.g. LengthUnitGuess::scale_to_mm
+ *  \return the scaled copy */
+ScanInput
+scaledScan (const ScanInput& scan, double factor);
+
+/** \brief What a front end says of a scan that was not in mm: "units: the scan's unit is m (why); rescaled to mm".
+ *  \param[in] unit the scan's unit
+ *  \return the sentence, or empty for a scan in mm */
+std::string
+unitConversionMessage (const LengthUnitGuess& unit);
 
 } // namespace morphreg

@@ -27,12 +27,4 @@ registrationOptions ();
 const RegistrationOption*
 findRegistrationOption (const std::string& name);
 
-/** \brief Throws InvalidInputError naming \a option ("registration setting NAME"), its value in \a settings and
- *  the range or the choices, when the value is outside them.
- *  \param[in] option the option to check
- *  \param[in] settings the settings holding its value
- */
-void
-requireValidOption (const RegistrationOption& option, const RegistrationSettings& settings);
-
 } // namespace morphreg

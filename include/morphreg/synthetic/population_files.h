@@ -79,5 +79,30 @@ nlohmann::json
 writePhotoFiles (const std::string& directory, const std::string& name, const SimulatedPhotos& photos,
                  std::size_t head_index, const nlohmann::json& provenance = nullptr);
 
+/** \brief What writeSyntheticStudy writes: the heads, and scans and photo pairs of the first of them. */
+struct SyntheticStudySettings
+{
+  int count = 20;                    ///< heads
+  std::uint64_t seed = 1;            ///< seed of the first head (head i uses seed + i)
+  int resolution = 40;               ///< the heads' mesh resolution (HeadGenerator)
+  int scans = 0;                     ///< scans of the first heads (at most count)
+  int photos = 0;                    ///< profile and frontal photo pairs of the first heads, each nodding 5 degrees
+  ScanSimulator::Parameters scanner; ///< the scanner of the scans
+};
+
+/** \brief Progress of writeSyntheticStudy: \a done of \a count of the stage ("writing heads", "scanning heads"). */
+using StudyProgress = std::function<void (const std::string& stage, int done, int count)>;
+
+/** \brief A synthetic study written into \a directory (`morphreg synth`): the heads (writePopulationFiles), scans
+ *  scan_I (writeScanFiles) and photo pairs photo_I (writePhotoFiles). InvalidInputError before anything is written
+ *  for bad scanner settings or more scans or photos than heads.
+ *  \param[in] directory the folder (it must exist)
+ *  \param[in] settings what to write
+ *  \param[in] provenance what made the files, in their records (e.g. the version and command line)
+ *  \param[in] progress told as the heads are written and scanned; empty: nobody */
+void
+writeSyntheticStudy (const std::string& directory, const SyntheticStudySettings& settings,
+                     const nlohmann::json& provenance = nullptr, const StudyProgress& progress = {});
+
 } // namespace synthetic
 } // namespace morphreg

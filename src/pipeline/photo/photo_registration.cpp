@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <morphreg/common/colour_map.h>
 #include <morphreg/common/distance_statistics.h>
 #include <morphreg/common/error.h>
 #include <morphreg/io/json_file.h>
 #include <morphreg/io/mesh_io.h>
 #include <morphreg/io/rgb_image_io.h>
+#include <morphreg/mesh/polygon_mesh_conversion.h>
 #include <morphreg/pipeline/photo_registration.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <utility>
@@ -153,6 +156,29 @@ PhotoRegistration::fitWarnings (const PhotoFit& fit) const
                           nlohmann::json (fit.prior.weight).dump () + ")");
   }
   return warnings;
+}
+
+std::string
+writePhotoFitMesh (const std::string& path, const PhotoFit& fit, const PhotoSet& photos, const std::string& truth_file,
+                   double colour_max, nlohmann::json& report)
+{
+  if (!truth_file.empty ()) {
+    const PhotoTruthErrors errors = photoTruthErrors (readPhotoTruth (truth_file), fit);
+    report.update (errors.json);
+    savePolygonMesh (
+        path, toPolygonMesh (fit.model_mesh, residualColours (errors.vertex_errors, colour_max), errors.vertex_errors));
+    return "error against the truth, 0-" + nlohmann::json (colour_max).dump () + " mm";
+  }
+  const std::optional<VertexTexture> texture = photoTexture (fit, photos);
+  if (!texture) {
+    saveTriangleMesh (path, fit.model_mesh);
+    return "none";
+  }
+  report["texture"] = {{"photos", std::count_if (photos.images.begin (), photos.images.end (),
+                                                 [] (const RgbImage& image) { return image.width > 0; })},
+                       {"visible_vertices", texture->visibleCount ()}};
+  savePolygonMesh (path, toPolygonMesh (fit.model_mesh, texture->colours));
+  return "the photos, blended by angle (grey where unseen)";
 }
 
 PhotoRegistrationOutcome
