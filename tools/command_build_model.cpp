@@ -5,12 +5,14 @@
 #include "option_checks.h"
 #include "pipeline.h"
 #include "provenance.h"
+#include "table_options.h"
 
 #include <morphreg/common/error.h>
 #include <morphreg/datasets/ict_facekit.h>
 #include <morphreg/io/model_io.h>
 #include <morphreg/io/output_plan.h>
 #include <morphreg/io/scan_manifest.h>
+#include <morphreg/model/model_builder_options.h>
 #include <morphreg/pipeline/model_building.h>
 
 #include <chrono>
@@ -113,23 +115,17 @@ addInputs (const BuildModelOptions& options, OutputPlan& plan)
   plan.addInputFolder (options.ict_directory, "--from-ict");
 }
 
-/** Adds the ModelBuilder settings (--components, --variance, --blend-rings, --no-procrustes) to \a command. */
+/** Adds the ModelBuilder settings of the library's table (model_builder_options.h) to \a command; the Procrustes
+ *  alignment, on by default, is turned off by --no-procrustes. */
 void
 addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
 {
-  command
-      ->add_option ("--components", settings.max_components, "at most this many components per region (0 = no limit)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command
-      ->add_option ("--variance", settings.explained_variance,
-                    "keep the fewest components explaining this fraction of each region's variance")
-      ->check (inRange (1e-6, 1.0))
-      ->capture_default_str ();
-  command->add_option ("--blend-rings", settings.blend_rings, "rings of blending around each region (0 = hard)")
-      ->check (nonNegative ())
-      ->capture_default_str ();
-  command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
+  for (const ModelBuilderOption& option : modelBuilderOptions ()) {
+    if (option.name == "procrustes")
+      command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
+    else
+      addTableOption<ModelBuilderSettings> (command, settings, option);
+  }
 }
 
 } // namespace

@@ -26,12 +26,12 @@ rangeCheck (const SettingOption<Settings>& option, bool whole)
     return inRange (static_cast<long long> (low), static_cast<long long> (high));
   if (high < kUnboundedSetting && low != kAboveZeroSetting)
     return inRange (low, high);
-  const std::string from = low == kAboveZeroSetting ? "> 0" : ">= " + boundText (low);
-  const std::string rule = "a number " + from +
-                           (high == kInfiniteSetting   ? " (or inf)"
-                            : high < kUnboundedSetting ? " and <= " + boundText (high)
-                                                       : std::string ());
-  return numberCheck ([low, high] (double v) { return isSettingInRange (v, low, high); }, rule, "NUMBER " + from);
+  const std::string range = (low == kAboveZeroSetting ? "> 0" : ">= " + boundText (low)) +
+                            (high == kInfiniteSetting   ? " (or inf)"
+                             : high < kUnboundedSetting ? " and <= " + boundText (high)
+                                                        : std::string ());
+  return numberCheck ([low, high] (double v) { return isSettingInRange (v, low, high); }, "a number " + range,
+                      "NUMBER " + range);
 }
 
 /** Adds the option of one table entry to a command, bound to its field of the settings. */

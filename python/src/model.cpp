@@ -3,6 +3,7 @@
 // instances and random samples as numpy arrays.
 #include "bindings.h"
 #include "json_objects.h"
+#include "keyword_settings.h"
 #include "numpy_arrays.h"
 #include "python_model.h"
 
@@ -11,6 +12,8 @@
 #include <morphreg/io/model_io.h>
 #include <morphreg/model/coefficient_units.h>
 #include <morphreg/model/model_builder.h>
+#include <morphreg/model/model_builder_options.h>
+#include <morphreg/pipeline/model_building.h>
 
 #include <pybind11/stl.h>
 
@@ -76,28 +79,25 @@ project (const MorphableModel& model, const py::handle& vertices, const py::hand
   return toArray (in_mm ? mm : coefficientsInStandardDeviations (model, mm, selection));
 }
 
-/** A model from meshes in correspondence (a list of (N, 3) arrays sharing \a faces), as `morphreg build-model`. */
+/** A model from meshes in correspondence (a list of (N, 3) arrays sharing \a faces) by the library's ModelFromMeshes,
+ *  as `morphreg build-model`; the keywords are its builder settings (model_builder_options.h). */
 MorphableModel::Ptr
-buildModel (const py::list& meshes, const py::handle& faces, const py::handle& regions, int components, double variance,
-            int blend_rings, bool procrustes, const LandmarkVertices& landmarks, const std::vector<int>& profile_line)
+buildModel (const py::list& meshes, const py::handle& faces, const py::handle& regions,
+            const LandmarkVertices& landmarks, const std::vector<int>& profile_line, const py::kwargs& keywords)
 {
+  ModelFromMeshesSettings settings;
+  settings.builder = settingsFromKeywords (keywords, modelBuilderOptions (), "Model.build");
   std::vector<TriangleMesh> training;
-  for (std::size_t i = 0; i < meshes.size (); ++i)
-    training.push_back (toMesh (meshes[i], faces, "meshes[" + std::to_string (i) + "]"));
-  ModelBuilderSettings settings;
-  settings.max_components = components;
-  settings.explained_variance = variance;
-  settings.blend_rings = blend_rings;
-  settings.align = procrustes;
-  MorphableModel::Ptr model;
-  {
-    py::gil_scoped_release released;
-    const ModelBuilder builder (settings);
-    model = regions.is_none () ? builder.buildGlobal (training) : builder.build (training, regionLabels (regions));
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < meshes.size (); ++i) {
+    names.push_back ("meshes[" + std::to_string (i) + "]");
+    training.push_back (toMesh (meshes[i], faces, names.back ()));
   }
-  model->setLandmarks (landmarks);
-  model->setProfileLine (profile_line);
-  return model;
+  const MeshAnnotations annotations{regions.is_none () ? std::nullopt
+                                                       : std::optional<RegionLabels> (regionLabels (regions)),
+                                    landmarks, profile_line};
+  py::gil_scoped_release released;
+  return ModelFromMeshes (settings).build (training, names, annotations).model;
 }
 
 std::vector<int>
@@ -244,12 +244,12 @@ bindModel (py::module_& m)
           py::arg ("components") = py::none (),
           "The selected components as the (3N, K) shape matrix (rows x, y, z per vertex; blended across regions).")
       .def_static ("build", &buildModel, py::arg ("meshes"), py::arg ("faces"), py::arg ("regions") = py::none (),
-                   py::arg ("components") = 0, py::arg ("variance") = 1.0, py::arg ("blend_rings") = 2,
-                   py::arg ("procrustes") = true, py::arg ("landmarks") = LandmarkVertices (),
-                   py::arg ("profile_line") = std::vector<int> (),
-                   "A model from meshes in correspondence ((N, 3) arrays sharing faces), as `morphreg build-model`:\n"
-                   "regions (names, labels) for a multi-region model (None: one global PCA); components: at most\n"
-                   "this many per region (0: all); variance: the share of variance kept; landmarks: id -> vertex.")
+                   py::arg ("landmarks") = LandmarkVertices (), py::arg ("profile_line") = std::vector<int> (),
+                   keywordDoc ("A model from meshes in correspondence ((N, 3) arrays sharing faces), as `morphreg\n"
+                               "build-model`: regions (names, labels) for a multi-region model (None: one global\n"
+                               "PCA); landmarks: id -> vertex. The keyword settings are build-model's:\n",
+                               modelBuilderOptions ())
+                       .c_str ())
       .def ("__repr__", [] (const MorphableModel& model) {
         return "<morphreg.Model: " + std::to_string (model.numVertices ()) + " vertices, " +
                std::to_string (model.numRegions ()) + " regions>";

@@ -103,6 +103,10 @@ def test_bad_arguments_are_named(model, tmp_path):
         morphreg.Model.load(str(corrupt))
     with pytest.raises(morphreg.InvalidInputError, match="meshes\\[1\\]"):
         morphreg.Model.build([model.mean, model.mean[:-1]], model.faces)
+    with pytest.raises(morphreg.InvalidInputError, match=r"model builder setting variance = 0 is out of range"):
+        morphreg.Model.build([model.mean, model.mean], model.faces, variance=0.0)
+    with pytest.raises(TypeError, match=r"Model.build\(\) got an unexpected keyword argument 'align'"):
+        morphreg.Model.build([model.mean, model.mean], model.faces, align=False)
 
 
 def test_build_equals_the_command_line(generator, tmp_path):

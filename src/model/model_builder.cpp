@@ -2,6 +2,7 @@
 #include <morphreg/common/error.h>
 #include <morphreg/mesh/mesh_topology.h>
 #include <morphreg/model/model_builder.h>
+#include <morphreg/model/model_builder_options.h>
 #include <morphreg/model/procrustes.h>
 #include <morphreg/model/region_blending.h>
 
@@ -12,11 +13,7 @@ namespace morphreg
 {
 ModelBuilder::ModelBuilder (ModelBuilderSettings settings) : settings_ (settings)
 {
-  if (!(settings_.explained_variance > 0.0 && settings_.explained_variance <= 1.0))
-    throw InvalidInputError ("ModelBuilder: explained_variance must be in (0, 1], got " +
-                             std::to_string (settings_.explained_variance));
-  if (settings_.blend_rings < 0)
-    throw InvalidInputError ("ModelBuilder: blend_rings must be >= 0, got " + std::to_string (settings_.blend_rings));
+  requireValidOptions (modelBuilderOptions (), settings_, "model builder setting");
 }
 
 void

@@ -134,7 +134,7 @@ ModelFromMeshes::build (const MeshFolder& folder) const
     observer.inputDone (static_cast<int> (meshes.size ()), "");
   }
   observer.stageFinished ();
-  ModelBuildingOutcome outcome = buildLoaded (meshes, files, folder.profile_line, folder.manifest);
+  ModelBuildingOutcome outcome = buildLoaded (meshes, files, {std::nullopt, {}, folder.profile_line}, folder.manifest);
   for (ModelInput& input : outcome.inputs)
     input.file = input.id;
   return outcome;
@@ -142,7 +142,7 @@ ModelFromMeshes::build (const MeshFolder& folder) const
 
 ModelBuildingOutcome
 ModelFromMeshes::build (const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& names,
-                        const std::vector<int>& profile_line) const
+                        const MeshAnnotations& annotations) const
 {
   if (names.size () != meshes.size ())
     throw InvalidInputError (std::to_string (names.size ()) + " names for " + std::to_string (meshes.size ()) +
@@ -150,7 +150,7 @@ ModelFromMeshes::build (const std::vector<TriangleMesh>& meshes, const std::vect
   requireTwoMeshes (meshes.size ());
   for (std::size_t k = 1; k < meshes.size (); ++k)
     requireSameTopology (meshes.front (), meshes[k], names[k]);
-  return buildLoaded (meshes, names, profile_line, "the profile line");
+  return buildLoaded (meshes, names, annotations, "the profile line");
 }
 
 void
@@ -163,17 +163,18 @@ ModelFromMeshes::requireTwoMeshes (std::size_t count)
 
 ModelBuildingOutcome
 ModelFromMeshes::buildLoaded (const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& names,
-                              const std::vector<int>& profile_line, const std::string& profile_source) const
+                              const MeshAnnotations& annotations, const std::string& profile_source) const
 {
   ModelBuildingOutcome outcome;
-  outcome.model = buildPca (settings_.builder, meshes, settings_.regions, std::nullopt);
-  annotate (*outcome.model, settings_.landmark_vertices, {}, profile_line, profile_source);
+  outcome.model = buildPca (settings_.builder, meshes, settings_.regions, annotations.regions);
+  annotate (*outcome.model, settings_.landmark_vertices, annotations.landmarks, annotations.profile_line,
+            profile_source);
   for (const std::string& name : names)
     outcome.inputs.push_back ({name, "", true, "", nullptr});
   outcome.source = {{"meshes", meshes.size ()},
                     {"regions", settings_.regions},
                     {"landmark_vertices", settings_.landmark_vertices},
-                    {"profile_line_vertices", profile_line.size ()}};
+                    {"profile_line_vertices", annotations.profile_line.size ()}};
   return outcome;
 }
 

@@ -135,6 +135,29 @@ TEST (ModelBuildingTest, MeshesInMemoryWithRegionsGiveTheirMeanPerRegion)
   EXPECT_EQ (built.inputs.back ().row ()["status"], "ok");
 }
 
+TEST (ModelBuildingTest, MeshesInMemoryTakeTheirRegionsLandmarksAndProfileLineInMemory)
+{
+  const std::vector<TriangleMesh> meshes = heads (5);
+  const auto& generator = morphreg::test::headGenerator (kResolution);
+  morphreg::MeshAnnotations annotations{generator.regions (), generator.landmarks (), generator.profileLine ()};
+  const ModelBuildingOutcome built =
+      morphreg::ModelFromMeshes (unaligned ()).build (meshes, {"a", "b", "c", "d", "e"}, annotations);
+  EXPECT_EQ (built.model->numRegions (), generator.regions ().names.size ());
+  EXPECT_EQ (built.model->landmarks (), generator.landmarks ());
+  EXPECT_EQ (built.model->profileLine (), generator.profileLine ());
+  EXPECT_EQ (built.source["profile_line_vertices"], generator.profileLine ().size ());
+  annotations.landmarks["nose_tip"] = static_cast<int> (meshes.front ().numVertices ()) + 5;
+  EXPECT_THROW (morphreg::ModelFromMeshes (unaligned ()).build (meshes, {"a", "b", "c", "d", "e"}, annotations),
+                morphreg::InvalidInputError);
+  morphreg::ModelFromMeshesSettings bad = unaligned ();
+  bad.builder.explained_variance = 0.0;
+  expectErrorContaining<morphreg::InvalidInputError> (
+      [&] {
+        morphreg::ModelFromMeshes (bad).build (meshes, {"a", "b", "c", "d", "e"});
+      },
+      "model builder setting variance = 0 is out of range (above 0 to 1)");
+}
+
 TEST (ModelBuildingTest, MeshesOutOfCorrespondenceOrTooFewAreRefusedNamingTheMesh)
 {
   std::vector<TriangleMesh> meshes = heads (3);

@@ -15,7 +15,7 @@ namespace morphreg
 /** \brief Settings of ModelBuilder. */
 struct ModelBuilderSettings
 {
-  /** \brief At most this many components per region and in the global PCA (<= 0: no limit). */
+  /** \brief At most this many components per region and in the global PCA (0: no limit). */
   int max_components = 0;
   /** \brief Keep the fewest leading components that explain this fraction of a region's variance (in (0, 1]). */
   double explained_variance = 1.0;

@@ -13,11 +13,13 @@
  *  morphreg::saveModel ("model.h5", *built.model);
  *  \endcode
  */
+#include <morphreg/common/landmarks.h>
 #include <morphreg/io/mesh_folder.h>
 #include <morphreg/io/scan_manifest.h>
 #include <morphreg/mesh/triangle_mesh.h>
 #include <morphreg/model/model_builder.h>
 #include <morphreg/model/morphable_model.h>
+#include <morphreg/model/region_segmentation.h>
 #include <morphreg/pipeline/scan_registration.h>
 #include <morphreg/resampling/resampling_settings.h>
 
@@ -108,6 +110,15 @@ struct ModelFromMeshesSettings
   std::string landmark_vertices; ///< landmark vertex file (mesh_annotations.h); empty: no landmarks
 };
 
+/** \brief Annotations of meshes in memory (ModelFromMeshes::build of meshes); a file the settings name takes the
+ *  place of the same annotation here. */
+struct MeshAnnotations
+{
+  std::optional<RegionLabels> regions; ///< the region of each vertex; none: one global region
+  LandmarkVertices landmarks;          ///< landmark id -> vertex; empty: none
+  std::vector<int> profile_line;       ///< the profile line's vertices; empty: none
+};
+
 /** \brief Builds a model from meshes in correspondence: loaded and checked to share one topology (a mesh that
  *  does not is named), the region and landmark vertex files read against them, the PCA, the landmarks and the
  *  profile line set. */
@@ -130,24 +141,25 @@ public:
   ModelBuildingOutcome
   build (const MeshFolder& folder) const;
 
-  /** \brief Builds from meshes in memory, \a names[k] naming meshes[k] in messages. Throws as build(MeshFolder).
+  /** \brief Builds from meshes in memory, \a names[k] naming meshes[k] in messages. Throws as build(MeshFolder),
+   *  and InvalidInputError for annotations that do not fit the meshes.
    *  \param[in] meshes the training meshes
    *  \param[in] names one name per mesh
-   *  \param[in] profile_line the profile line's vertices (empty: none)
+   *  \param[in] annotations their regions, landmarks and profile line
    *  \return the model and its inputs */
   ModelBuildingOutcome
   build (const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& names,
-         const std::vector<int>& profile_line = {}) const;
+         const MeshAnnotations& annotations = {}) const;
 
 private:
   /** InvalidInputError unless \a count >= 2. */
   static void
   requireTwoMeshes (std::size_t count);
 
-  /** The model of meshes already checked, its landmarks and profile line (from \a profile_source) set. */
+  /** The model of meshes already checked, annotated (the profile line from \a profile_source). */
   ModelBuildingOutcome
   buildLoaded (const std::vector<TriangleMesh>& meshes, const std::vector<std::string>& names,
-               const std::vector<int>& profile_line, const std::string& profile_source) const;
+               const MeshAnnotations& annotations, const std::string& profile_source) const;
 
   ModelFromMeshesSettings settings_;
   ModelBuildingObserver* observer_ = nullptr;
