@@ -37,11 +37,10 @@ package_consumer_test(PhotoConsumer photo REQUIRE_LIBS "libmorphreg_photo"
   FORBID_LOADED ${rendering_loaded} "libmorphreg_(synthetic|visualization)" FORBID_LINKED ${rendering_linked})
 package_consumer_test(SyntheticConsumer synthetic REQUIRE_LIBS "libmorphreg_synthetic"
   FORBID_LOADED ${rendering_loaded} "libmorphreg_visualization" FORBID_LINKED ${rendering_linked})
-# The visualization consumer draws offscreen when a virtual X server is at hand.
-find_program(XVFB_RUN xvfb-run)
+# The visualization consumer draws offscreen when a virtual X server is at hand (the suite's, test/CMakeLists.txt).
 set(render_arguments "")
-if(XVFB_RUN)
-  set(render_arguments RUN_PREFIX ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" RUN_ARGS --render)
+if(MORPHREG_XVFB)
+  set(render_arguments RUN_PREFIX ${MORPHREG_XVFB} RUN_ARGS --render)
 endif()
 package_consumer_test(VisualizationConsumer visualization
   REQUIRE_LIBS "libmorphreg_visualization" "libvtkRenderingOpenGL2" FORBID_LOADED "libmorphreg_(photo|synthetic)"
