@@ -162,9 +162,10 @@ TEST (FitResamplingTest, LandmarkResamplingRefusesMissingOrStrayLandmarksAndDept
     morphreg::resampleFromLandmarks (*model, files, units, morphreg::ResamplingSettings (), warnings);
   };
   morphreg::LandmarkPositions stray = morphreg::loadLandmarks (files.landmarks);
-  stray.begin ()->second += Eigen::Vector3d (0.0, 0.0, 500.0);
+  stray.begin ()->second += Eigen::Vector3d (0.0, 0.0, 5000.0); // a landmark file in another frame or unit
   morphreg::saveLandmarks (files.landmarks, stray);
-  EXPECT_THROW (resample ("auto"), morphreg::InvalidInputError);
+  morphreg::test::expectErrorContaining<morphreg::InvalidInputError> ([&] { resample ("auto"); },
+                                                                      "mm outside the scan");
   files.landmarks.clear ();
   morphreg::test::expectErrorContaining<morphreg::InvalidInputError> ([&] { resample ("auto"); }, "no landmark file");
   files.landmarks = dir.file ("landmarks.json");

@@ -14,8 +14,9 @@ namespace test
 /** \brief \a count, or at most MORPHREG_TEST_SAMPLES (from the environment) when that is set: `scripts/check.sh
  *  sanitize` sets it, since under the sanitizers a fit runs 10 to 30 times slower and every sample runs the same code
  *  (the sanitizers look for memory and undefined-behaviour errors, not accuracy). The suites' per-sample requirements
- *  hold for each sample run; their aggregates are taken over the samples run. A capped count is said on stdout (once
- *  per count), so that a shrunken suite never passes for the whole one. */
+ *  and worst cases hold for each sample run; a median over the suite's samples is asserted on the whole suite only
+ *  (suiteMedianUpperBound, accuracy_bound.h). A capped count is said on stdout (once per count), so that a shrunken
+ *  suite never passes for the whole one. */
 inline int
 sampleCount (int count)
 {
