@@ -181,18 +181,16 @@ TEST (ResamplingProtocolTest, UnseenHeadsResampledFromTheirLaserScans)
       coverage, extremeOf (heads, &HeadFigures::coverage, true), folded, medianOf (heads, &HeadFigures::fit_observed));
   constexpr double kObservedBound = 0.115;
   EXPECT_LT (kObservedBound, morphreg::synthetic::ScanSimulator::Parameters ().noise_sigma);
-  const auto expectAtMost = [] (const char* what, double figure, double bound) {
-    EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, figure, bound) << what;
-  };
-  const auto expectAtLeast = [] (const char* what, double figure, double bound) {
-    EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, figure, bound) << what;
-  };
-  expectAtMost ("median observed RMS", observed, kObservedBound);
-  expectAtMost ("largest observed RMS", extremeOf (heads, &HeadFigures::observed), 0.125);
-  expectAtMost ("median filled RMS", filled, 3.2);
-  expectAtMost ("median filled RMS above the cut", filled_above_cut, 0.1);
-  expectAtLeast ("median coverage", coverage, 0.93);
-  expectAtLeast ("smallest coverage", extremeOf (heads, &HeadFigures::coverage, true), 0.915);
+  using morphreg::test::suiteMedianLowerBound;
+  using morphreg::test::suiteMedianUpperBound;
+  EXPECT_PRED_FORMAT2 (suiteMedianUpperBound, observed, kObservedBound) << "median observed RMS";
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, extremeOf (heads, &HeadFigures::observed), 0.125)
+      << "largest observed RMS";
+  EXPECT_PRED_FORMAT2 (suiteMedianUpperBound, filled, 3.2) << "median filled RMS";
+  EXPECT_PRED_FORMAT2 (suiteMedianUpperBound, filled_above_cut, 0.1) << "median filled RMS above the cut";
+  EXPECT_PRED_FORMAT2 (suiteMedianLowerBound, coverage, 0.93) << "median coverage";
+  EXPECT_PRED_FORMAT2 (morphreg::test::tightLowerBound, extremeOf (heads, &HeadFigures::coverage, true), 0.915)
+      << "smallest coverage";
   EXPECT_LE (filled, 1.1 * fit_filled) << "the fills are within 10 % of the model fit on the same vertices";
   EXPECT_EQ (folded, 0);
   // The no-op resampler, which observes nothing and fills everything, has no observed figure (NaN meets no bound) and
