@@ -25,6 +25,30 @@ samplesCapped ()
   return std::getenv ("MORPHREG_TEST_SAMPLES") != nullptr;
 }
 
+/** \brief What a capped run does with a figure taken over the suite's samples: it prints the figure beside its bound
+ *  and asserts nothing, as its few samples are not the suite. */
+inline ::testing::AssertionResult
+printedForTheSamplesRun (const char* figure_text, const char* bound_text, double figure, double bound)
+{
+  std::printf ("[ samples ] %s = %g over the samples run (bound %s = %g, asserted on the whole suite only)\n",
+               figure_text, figure, bound_text, bound);
+  return ::testing::AssertionSuccess ();
+}
+
+/** \brief A figure taken over the suite's samples (a model's generalisation) lies within \a tolerance of a reference
+ *  figure over the same samples; asserted on the whole suite only, as suiteMedianUpperBound. */
+inline ::testing::AssertionResult
+suiteFigureNear (const char* figure_text, const char* reference_text, const char* tolerance_text, double figure,
+                 double reference, double tolerance)
+{
+  if (samplesCapped ())
+    return printedForTheSamplesRun (figure_text, reference_text, figure, reference);
+  if (std::abs (figure - reference) <= tolerance)
+    return ::testing::AssertionSuccess ();
+  return ::testing::AssertionFailure () << figure_text << " = " << figure << " is further than " << tolerance_text
+                                        << " = " << tolerance << " from " << reference_text << " = " << reference;
+}
+
 /** \brief An error figure (lower is better, e.g. an RMS in mm) meets \a bound, and \a bound is at most kBoundSlack
  *  times the figure. Use as EXPECT_PRED_FORMAT2 (morphreg::test::tightUpperBound, rms, 1.2). */
 inline ::testing::AssertionResult
@@ -50,9 +74,7 @@ suiteMedianUpperBound (const char* figure_text, const char* bound_text, double f
 {
   if (!samplesCapped ())
     return tightUpperBound (figure_text, bound_text, figure, bound);
-  std::printf ("[ samples ] %s = %g over the samples run (bound %s = %g, asserted on the whole suite only)\n",
-               figure_text, figure, bound_text, bound);
-  return ::testing::AssertionSuccess ();
+  return printedForTheSamplesRun (figure_text, bound_text, figure, bound);
 }
 
 /** \brief A share (higher is better, in [0, 1], e.g. a coverage) meets \a bound, and the shortfall the bound allows,
@@ -79,9 +101,7 @@ suiteMedianLowerBound (const char* figure_text, const char* bound_text, double f
 {
   if (!samplesCapped ())
     return tightLowerBound (figure_text, bound_text, figure, bound);
-  std::printf ("[ samples ] %s = %g over the samples run (bound %s = %g, asserted on the whole suite only)\n",
-               figure_text, figure, bound_text, bound);
-  return ::testing::AssertionSuccess ();
+  return printedForTheSamplesRun (figure_text, bound_text, figure, bound);
 }
 
 /** \brief What a no-op (the mean head, the identity warp, the unfitted model) scores fails the bound that the real
