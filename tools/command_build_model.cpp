@@ -115,17 +115,12 @@ addInputs (const BuildModelOptions& options, OutputPlan& plan)
   plan.addInputFolder (options.ict_directory, "--from-ict");
 }
 
-/** Adds the ModelBuilder settings of the library's table (model_builder_options.h) to \a command; the Procrustes
- *  alignment, on by default, is turned off by --no-procrustes. */
+/** Adds the ModelBuilder settings of the library's table (model_builder_options.h) to \a command. */
 void
 addModelBuilderOptions (CLI::App* command, ModelBuilderSettings& settings)
 {
-  for (const ModelBuilderOption& option : modelBuilderOptions ()) {
-    if (option.name == "procrustes")
-      command->add_flag ("--no-procrustes{false}", settings.align, "skip the Procrustes alignment of the meshes");
-    else
-      addTableOption<ModelBuilderSettings> (command, settings, option);
-  }
+  for (const ModelBuilderOption& option : modelBuilderOptions ())
+    addTableOption<ModelBuilderSettings> (command, settings, option);
 }
 
 } // namespace

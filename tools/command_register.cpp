@@ -280,10 +280,7 @@ addRegistrationOptions (CLI::App* command, RegisterOptions& options)
       ->check (inRange (16, 8192))
       ->capture_default_str ();
   for (const RegistrationOption& option : registrationOptions ()) {
-    if (option.name == "point_to_plane") // a switch that is on by default: both spellings
-      command->add_flag ("--point-to-plane,!--point-to-point", options.point_to_plane, option.help);
-    else
-      addTableOption<RegistrationSettings> (command, options, option);
+    addTableOption<RegistrationSettings> (command, options, option);
     if (option.name == "target_smoothing")
       command->add_flag_callback (
           "--no-target-smoothing", [&options] { options.target_smoothing = "off"; },

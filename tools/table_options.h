@@ -67,10 +67,14 @@ struct TableOption
   {
     add (settings.*field)->check (CLI::IsMember (option.choices))->capture_default_str ();
   }
+  /** A switch: --name turns it on, and the table's off name, when it has one, turns it off (--point-to-point). */
   void
   operator() (bool Settings::*field) const
   {
-    command->add_flag (commandLineName (option.name), settings.*field, option.help);
+    std::string names = commandLineName (option.name);
+    if (!option.choices.empty ())
+      names += ",!" + commandLineName (option.choices.front ());
+    command->add_flag (names, settings.*field, option.help);
   }
 
   template <typename T>

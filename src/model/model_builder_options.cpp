@@ -22,7 +22,7 @@ modelBuilderOptions ()
        &S::align,
        0,
        0,
-       {}},
+       {"no_procrustes"}},
   };
   return options;
 }

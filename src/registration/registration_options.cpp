@@ -48,7 +48,7 @@ fitOptions ()
        &S::point_to_plane,
        0,
        0,
-       {}},
+       {"point_to_point"}},
       {"tangential_weight",
        "share of the point-to-point term kept along the tangent plane (point-to-plane)",
        &S::tangential_weight,

@@ -38,7 +38,7 @@ struct SettingOption
   Field field;          ///< the field of the settings struct it sets
   double lowest = 0.0;  ///< numbers: the smallest value allowed (each count of a list; kAboveZeroSetting: > 0)
   double highest = 0.0; ///< numbers: the largest value allowed (kUnboundedSetting: no bound; kInfiniteSetting: inf too)
-  std::vector<std::string> choices; ///< names: the values allowed
+  std::vector<std::string> choices; ///< names: the values allowed; switches: the name that turns it off, if any
 };
 
 /** \brief A setting's command-line option.
