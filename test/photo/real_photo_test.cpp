@@ -134,8 +134,8 @@ TEST (RealPhotoTest, RealHeadScan)
   if (!realScanDataAvailable ())
     GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
   // The silhouette runs from the crown over the face down the chest (the scan's shoulders). At the defaults the
-  // mean head is at 3.28 mm; joint reaches 0.67x, TPS-ICP 0.77x, profile 0.67x.
-  fitAndScore ("Lee Perry-Smith", leeHeadMesh (), leeLandmarks (), {{{0.7}, {0.8}, {0.85}}});
+  // mean head is at 3.28 mm; joint reaches 0.67x, TPS-ICP 0.62x, profile 0.67x.
+  fitAndScore ("Lee Perry-Smith", leeHeadMesh (), leeLandmarks (), {{{0.7}, {0.75}, {0.85}}});
 }
 
 TEST (RealPhotoTest, RealHeadScanWithHairInTheOutline)
@@ -143,10 +143,10 @@ TEST (RealPhotoTest, RealHeadScanWithHairInTheOutline)
   if (!realScanDataAvailable ())
     GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
   // With the hair the outline is the head's outer bound above the forehead (one-sided rows where it leaves the fitted
-  // skull): the fits reach joint 0.62x, TPS-ICP 0.83x, profile 0.71x (with the hair taken for the skull they were
-  // 0.85x, 0.82x, 1.02x). Issue 34's targets are 0.75x for joint and TPS-ICP, 0.9x for the profile: TPS-ICP misses
-  // it, its bound is 0.9x.
-  fitAndScore ("Lee Perry-Smith with hair", leeHeadMesh (), leeLandmarks (), {{{0.75}, {0.9}, {0.9}}},
+  // skull): the fits reach joint 0.62x, TPS-ICP 0.64x, profile 0.71x (with the hair taken for the skull they were
+  // 0.85x, 0.82x, 1.02x); issue 34's targets, 0.75x for joint and TPS-ICP and 0.9x for the profile, are the bounds.
+  // TPS-ICP was at 0.83x while its warp guided the skull under the hair as much as the face (warpTrust).
+  fitAndScore ("Lee Perry-Smith with hair", leeHeadMesh (), leeLandmarks (), {{{0.75}, {0.75}, {0.9}}},
                hairSettings (false));
 }
 
@@ -154,8 +154,8 @@ TEST (RealPhotoTest, RealHeadScanTracedFromTheHairline)
 {
   if (!realScanDataAvailable ())
     GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
-  // The photo with hair traced from the hairline down: 0.55x, 0.74x, 0.78x.
-  fitAndScore ("Lee Perry-Smith from the hairline", leeHeadMesh (), leeLandmarks (), {{{0.65}, {0.85}, {0.8}}},
+  // The photo with hair traced from the hairline down: 0.55x, 0.57x, 0.78x.
+  fitAndScore ("Lee Perry-Smith from the hairline", leeHeadMesh (), leeLandmarks (), {{{0.65}, {0.7}, {0.8}}},
                hairSettings (true));
 }
 
