@@ -17,10 +17,11 @@ FrontalView::FrontalView (int width, int height, LandmarkPixels landmarks, const
 Eigen::Vector2d
 FrontalView::noseTip (const LandmarkPixels& landmarks, const std::string& source)
 {
-  const auto it = landmarks.find ("nose_tip");
-  if (it == landmarks.end ())
-    throw InvalidInputError (source + ": the frontal landmarks have no nose_tip (it centres the normalised frame)");
-  return it->second;
+  for (const std::string& id : {std::string ("nose_tip"), ibug68LandmarkId (30)})
+    if (const auto it = landmarks.find (id); it != landmarks.end ())
+      return it->second;
+  throw InvalidInputError (source + ": the frontal landmarks have no nose tip (nose_tip, or iBUG-68's point 30 as "
+                                    "ibug68_30); it centres the normalised frame");
 }
 
 std::map<std::string, Eigen::Vector2d>

@@ -101,7 +101,7 @@ TEST (PhotoViewTest, FrontalViewRejectsBadAnnotations)
   LandmarkPixels no_nose = marked;
   no_nose.erase ("nose_tip");
   expectError<InvalidInputError> ([&] { FrontalView (1000, 1200, no_nose, "front.json"); },
-                                  {"front.json", "no nose_tip"});
+                                  {"front.json", "no nose tip (nose_tip, or iBUG-68's point 30"});
   LandmarkPixels with_nan = marked;
   with_nan["left_eye_outer"].x () = INFINITY;
   expectError<InvalidInputError> ([&] { FrontalView (1000, 1200, with_nan); }, {"'left_eye_outer'", "not finite"});
@@ -112,6 +112,10 @@ TEST (PhotoViewTest, FrontalViewRejectsBadAnnotations)
   const FrontalView view (1000, 1200, marked);
   // The subject's left eye is on the image's right: +X.
   EXPECT_TRUE (view.normalisedLandmarks ().at ("left_eye_outer").isApprox (Eigen::Vector2d (0.1, 0.1)));
+  // iBUG-68 annotations (landmark tools' .pts) name the nose tip as their point 30: it centres the frame as well.
+  const FrontalView ibug (1000, 1200, {{"ibug68_30", {500.0, 600.0}}, {"ibug68_45", {620.0, 480.0}}});
+  EXPECT_TRUE (ibug.normalisedLandmarks ().at ("ibug68_30").isZero ());
+  EXPECT_TRUE (ibug.normalisedLandmarks ().at ("ibug68_45").isApprox (Eigen::Vector2d (0.1, 0.1)));
 }
 
 TEST (PhotoViewTest, JsonFilesRoundTrip)
@@ -193,7 +197,7 @@ TEST (PhotoViewTest, ReadersNameTheFileAndTheProblem)
       [&] {
         morphreg::loadFrontalView (write ("i.json", front + R"("landmarks": [{"id": "chin", "position": [3, 4]}]})"));
       },
-      {"i.json", "no nose_tip"});
+      {"i.json", "no nose tip"});
 }
 
 TEST (PhotoViewTest, PolylineClosestPointLiesOnTheNearestSegment)

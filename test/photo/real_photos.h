@@ -136,7 +136,9 @@ outlinePhotos (const TriangleMesh& mesh, const LandmarkVertices& landmarks, cons
 {
   std::mt19937_64 rng (seed);
   std::normal_distribution<double> noise (0.0, settings.landmark_noise);
-  const Eigen::Vector3d nose = mesh.vertices.col (landmarks.at ("nose_tip"));
+  // The nose tip by its own id or as iBUG-68's point 30.
+  const Eigen::Vector3d nose =
+      mesh.vertices.col (landmarks.count ("nose_tip") ? landmarks.at ("nose_tip") : landmarks.at ("ibug68_30"));
 
   const ProjectionMask side = projectionMask (mesh, 2, settings.pixels_per_mm);
   const std::vector<Eigen::Vector2i> loop = traceOutline (side);

@@ -596,7 +596,7 @@ foreach(case "profile_left;the face looks left" "profile_nine;the silhouette pol
     fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/${name}.json --approach profile
     --out ${cli_dir}/bad.ply)
 endforeach()
-morphreg_cli_expect_exit(FitPhotosRejects_frontal_no_nose 1 "frontal_no_nose.json: the frontal landmarks have no nose_tip"
+morphreg_cli_expect_exit(FitPhotosRejects_frontal_no_nose 1 "frontal_no_nose.json: the frontal landmarks have no nose tip (nose_tip, or"
   fit-photos --model ${cli_dir}/small_model.h5 --profile ${cli_dir}/small/photo_0_profile.json
   --frontal ${cli_dir}/frontal_no_nose.json --out ${cli_dir}/bad.ply)
 set_tests_properties(CliTest.FitPhotosJointNeedsFrontal CliTest.FitPhotosRejects_profile_left

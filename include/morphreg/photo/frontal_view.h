@@ -11,14 +11,14 @@
 
 namespace morphreg
 {
-/** \brief Named landmarks of a frontal photo, nose_tip among them (it centres the normalised frame). The subject's
- *  right appears on the left of the image, as in any photo of a face.
+/** \brief Named landmarks of a frontal photo, nose_tip (or iBUG-68's point 30, ibug68_30) among them (it centres the
+ *  normalised frame). The subject's right appears on the left of the image, as in any photo of a face.
  */
 class FrontalView
 {
 public:
   /** \brief Throws InvalidInputError naming \a source for a non-positive image size, a landmark id that is not in
-   *  docs/landmarks.md, a non-finite pixel or a missing nose_tip.
+   *  docs/landmarks.md, a non-finite pixel or a missing nose tip.
    *  \param[in] width the image width in pixels
    *  \param[in] height the image height in pixels
    *  \param[in] landmarks the marked landmarks in pixels
@@ -52,7 +52,7 @@ public:
   normalisedLandmarks () const;
 
 private:
-  /** The nose tip of \a landmarks; InvalidInputError naming \a source if it is absent. */
+  /** The nose tip of \a landmarks (nose_tip, else ibug68_30); InvalidInputError naming \a source if both are absent. */
   static Eigen::Vector2d
   noseTip (const LandmarkPixels& landmarks, const std::string& source);
 
