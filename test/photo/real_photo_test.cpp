@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Photo fitting on photos of real meshes (made at test time): MediaPipe's canonical face (landmarks: its documented
-// ids) and the real head scan (landmark vertices picked on renders: annotations/leeperrysmith_head_landmarks.json),
-// photographed as real_photos.h describes and scored in 3D against the mesh the photos show (the fit aligned
+// ids), the real head scan (landmark vertices picked on renders: annotations/leeperrysmith_head_landmarks.json) and
+// james's face-only capture (its 68 landmarks), photographed as real_photos.h describes (frontal and profile) or by
+// two perspective cameras 25 degrees to either side; james's two real photos; each scored in 3D against the mesh the photos show (the fit aligned
 // by the landmark vertices and a similarity ICP of ICT's narrow face, then the face median of the mesh's area samples
 // to the fit), with the model's mean head aligned and scored the same way as the baseline.
 #include "real_photos.h"
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <random>
 
 namespace
 {
@@ -46,6 +48,14 @@ faceMedian (const TriangleMesh& fitted, const TriangleMesh& source, const Landma
   return surfaceDistanceOver (surfaceDistance (source, aligned), face_triangles).median;
 }
 
+/** The model's mean head (no component). */
+TriangleMesh
+meanHead (const MorphableModel& model)
+{
+  return model.generateMesh (Eigen::VectorXd::Zero (0),
+                             ComponentSelection (std::vector<int> (static_cast<size_t> (model.numRegions ()), 0)));
+}
+
 /** A bound on a fit's face median as a ratio to the mean head's; \a beats_mean_head false for a case where the fit
  *  is known to be no better than the mean head (the bound then only guards against it getting worse). */
 struct RatioBound
@@ -63,8 +73,7 @@ fitAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVertices&
 {
   const auto photos = outlinePhotos (mesh, landmarks, settings, 3);
   const MorphableModel::ConstPtr& model = ictModel30 ();
-  const TriangleMesh mean = model->generateMesh (
-      Eigen::VectorXd::Zero (0), ComponentSelection (std::vector<int> (static_cast<size_t> (model->numRegions ()), 0)));
+  const TriangleMesh mean = meanHead (*model);
   const double baseline = faceMedian (mean, mesh, landmarks, *model);
   std::printf ("[ real photo ] %s: %zu silhouette points; the mean head %.3f mm\n", name,
                photos.first.silhouette ().size (), baseline);
@@ -235,8 +244,7 @@ fitJamesPhotos (bool given)
   const TriangleMesh scan = loadTriangleMesh (realScanPath ("menpo3d_james/james.obj"));
   const LandmarkVertices landmarks = jamesLandmarkVertices (scan);
   const MorphableModel::ConstPtr& model = ictModel30 ();
-  const TriangleMesh mean =
-      model->generateMesh (Eigen::VectorXd::Zero (0), ComponentSelection (std::vector<int> (7, 0)));
+  const TriangleMesh mean = meanHead (*model);
   const double baseline = faceMedian (mean, scan, landmarks, *model);
   PhotoFitting fitting (model);
   // Issue 34's targets: <= 0.8x the mean head with the given cameras (measured 0.79x: 2.12 mm against 2.69 mm),
@@ -289,8 +297,7 @@ TEST (RealPhotoTest, JamesTwoRealPhotosWithCamerasEstimated)
 TriangleMesh
 inModelFrame (TriangleMesh scan, const LandmarkVertices& landmarks, const MorphableModel& model)
 {
-  const TriangleMesh mean =
-      model.generateMesh (Eigen::VectorXd::Zero (0), ComponentSelection (std::vector<int> (7, 0)));
+  const TriangleMesh mean = meanHead (model);
   Eigen::Matrix3Xd from (3, landmarks.size ()), to (3, landmarks.size ());
   Eigen::Index column = 0;
   for (const auto& [id, vertex] : landmarks) {
@@ -330,5 +337,94 @@ TEST (RealPhotoTest, JamesScanRenderedWithHairInTheOutline)
     GTEST_SKIP () << "menpo3d_james or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
   const auto [scan, landmarks] = jamesScanInModelFrame ();
   fitAndScore ("james rendered with hair", scan, landmarks, {{{0.75}, {0.7}, {0.7}}}, hairSettings (false));
+}
+
+/** Two perspective photos (1200 x 1600 px, focal length 4000 px, the nose tip 1 m from the camera: a portrait lens)
+ *  of \a mesh (model frame) turned \a yaw degrees to either side, each landmark vertex marked where it projects with
+ *  1 px noise (the jaw and head contour's are outline landmarks, which hold where the surface turns away); with
+ *  their cameras when \a cameras, else the fit estimates them. */
+std::vector<PhotoView>
+obliqueViews (const TriangleMesh& mesh, const LandmarkVertices& landmarks, double yaw, bool cameras)
+{
+  std::mt19937_64 rng (7);
+  std::normal_distribution<double> noise (0.0, 1.0);
+  const Eigen::Vector3d nose =
+      mesh.vertices.col (landmarks.count ("nose_tip") ? landmarks.at ("nose_tip") : landmarks.at ("ibug68_30"));
+  Eigen::Matrix3d K;
+  K << 4000.0, 0.0, 600.0, 0.0, 4000.0, 800.0, 0.0, 0.0, 1.0;
+  std::vector<PhotoView> views;
+  for (const double side : {-1.0, 1.0}) {
+    // Facing the camera is X right, Y down, Z away in the camera's frame: (x, -y, -z) of the head's.
+    const Eigen::Matrix3d R =
+        Eigen::Vector3d (1.0, -1.0, -1.0).asDiagonal () *
+        Eigen::AngleAxisd (side * yaw * M_PI / 180.0, Eigen::Vector3d::UnitY ()).toRotationMatrix ();
+    const PhotoCamera camera =
+        PhotoCamera::perspective (K, R, Eigen::Vector3d (0.0, 0.0, 1000.0) - R * nose, "rendered");
+    LandmarkPixels marked;
+    for (const auto& [id, vertex] : landmarks)
+      marked[id] = camera.project (mesh.vertices.col (vertex)) + Eigen::Vector2d (noise (rng), noise (rng));
+    PhotoView view (1200, 1600, marked, side < 0 ? "rendered photo (left)" : "rendered photo (right)");
+    if (cameras)
+      view.setCamera (camera);
+    views.push_back (std::move (view));
+  }
+  return views;
+}
+
+/** Fits the joint approach to the oblique pair of \a mesh, with the cameras given and estimated, and checks each
+ *  against the mean head's face median: at most \a bounds (given, estimated) times it. */
+void
+fitObliqueAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVertices& landmarks,
+                    const std::array<RatioBound, 2>& bounds)
+{
+  const MorphableModel::ConstPtr& model = ictModel30 ();
+  const TriangleMesh mean = meanHead (*model);
+  const double baseline = faceMedian (mean, mesh, landmarks, *model);
+  PhotoFitting fitting (model);
+  for (const bool given : {true, false}) {
+    const PhotoFit fit = fitting.fit (obliqueViews (mesh, landmarks, 25.0, given), "joint");
+    const double median = faceMedian (fit.model_mesh, mesh, landmarks, *model);
+    std::printf ("[ real photo ] %s, 25 degrees to either side, cameras %s: face median %.3f mm = %.2f x the mean "
+                 "head (%.3f mm); landmark RMS %.2f mm; largest coefficient %.2f sigma; focal %.0f / %.0f px\n",
+                 name, given ? "given" : "estimated", median, median / baseline, baseline,
+                 fit.final_residuals.landmark_rms, fit.maxCoefficientSigma (), fit.views[0].camera.intrinsics () (0, 0),
+                 fit.views[1].camera.intrinsics () (0, 0));
+    std::printf ("[ real photo ]   lambda_2 %.3f (%s), beats mean head %d, left-out landmarks %.3f mm (the mean "
+                 "head %.3f mm)\n",
+                 fit.prior.weight, fit.prior.rule.c_str (), fit.prior.beats_mean_head,
+                 fit.prior.candidates.empty () ? 0.0 : fit.prior.candidates.front ().error_mm,
+                 fit.prior.mean_head_error_mm);
+    for (const PriorCandidate& candidate : fit.prior.candidates)
+      std::printf ("[ real photo ]   lambda_2 %.3f: left-out landmarks %.3f mm\n", candidate.weight,
+                   candidate.error_mm);
+    const RatioBound& bound = bounds[given ? 0 : 1];
+    EXPECT_TRUE (isPlausibleShape (fit.coefficients)) << name << ", cameras given " << given;
+    EXPECT_PRED_FORMAT2 (tightUpperBound, median, bound.ratio * baseline) << name << ", cameras given " << given;
+    if (bound.beats_mean_head)
+      EXPECT_PRED_FORMAT2 (noOpFailsUpperBound, baseline, bound.ratio * baseline)
+          << name << ", cameras given " << given;
+  }
+}
+
+// The real head scan's 18 landmarks alone (no outline) do not beat the mean head: 1.02x with the cameras given, 1.00x
+// estimated. The left-out landmarks choose the weakest prior (0.275), yet they are predicted to 3.9 mm against the
+// mean head's 4.4 mm, and the fitted ones stay 1.5 mm off while each is marked to 0.25 mm. The likely cause, not yet
+// verified: in depth, which two views 50 degrees apart fix and the frontal and profile pair never sees, the
+// annotation's points (picked on frontal renders, the front-most vertex near each click) and the model's landmark
+// vertices differ by millimetres. The bound keeps the fit from getting worse than the mean head.
+TEST (RealPhotoTest, RealHeadScanObliquePerspectivePair)
+{
+  if (!realScanDataAvailable ())
+    GTEST_SKIP () << "the real head scan or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
+  fitObliqueAndScore ("Lee Perry-Smith", leeHeadMesh (), leeLandmarks (), {{{1.05, false}, {1.05, false}}});
+}
+
+TEST (RealPhotoTest, JamesScanObliquePerspectivePair)
+{
+  if (!jamesPhotosAvailable ())
+    GTEST_SKIP () << "menpo3d_james or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
+  const auto [scan, landmarks] = jamesScanInModelFrame ();
+  // 68 landmarks: 0.77x with the cameras given, 0.81x estimated (focal lengths 3481 and 1441 px against 4000).
+  fitObliqueAndScore ("james", scan, landmarks, {{{0.8}, {0.85}}});
 }
 } // namespace
