@@ -406,12 +406,12 @@ fitObliqueAndScore (const char* name, const TriangleMesh& mesh, const LandmarkVe
   }
 }
 
-// The real head scan's 18 landmarks alone (no outline) do not beat the mean head: 1.02x with the cameras given, 1.00x
-// estimated. The left-out landmarks choose the weakest prior (0.275), yet they are predicted to 3.9 mm against the
-// mean head's 4.4 mm, and the fitted ones stay 1.5 mm off while each is marked to 0.25 mm. The likely cause, not yet
-// verified: in depth, which two views 50 degrees apart fix and the frontal and profile pair never sees, the
-// annotation's points (picked on frontal renders, the front-most vertex near each click) and the model's landmark
-// vertices differ by millimetres. The bound keeps the fit from getting worse than the mean head.
+// The real head scan's 8 landmarks (eye and mouth corners, nose tip, chin) without an outline do not beat the mean
+// head: 1.02x with the cameras given, 1.00x estimated; the left-out landmarks choose the weakest prior (0.275) and
+// predict them to 3.9 mm against the mean head's 4.4 mm, but 32 image coordinates say little of a face's shape in a
+// model of 7 x 30 components (a sample of the model itself, its 8 landmark vertices projected the same way, fits to
+// 1.10x and 1.41x; with all 96 of the model's landmarks pinned, 0.74x and 0.94x). The frontal and profile pair's
+// outline is what carries the shape. The bound keeps the fit from getting worse than the mean head.
 TEST (RealPhotoTest, RealHeadScanObliquePerspectivePair)
 {
   if (!realScanDataAvailable ())
