@@ -115,16 +115,6 @@ TEST (RealPhotoTest, MediaPipeFace)
   fitAndScore ("MediaPipe", face.mesh, landmarks, {{{0.9}, {0.9}, {0.9}}});
 }
 
-/** The real head scan's landmark vertices (picked on renders of it). */
-LandmarkVertices
-leeLandmarks ()
-{
-  const nlohmann::json annotation =
-      readJsonFile (std::string (MORPHREG_TEST_SOURCE_DIR) + "/photo/annotations/leeperrysmith_head_landmarks.json");
-  const auto landmarks = annotation.at ("landmark_vertices").get<std::map<std::string, int>> ();
-  return LandmarkVertices (landmarks.begin (), landmarks.end ());
-}
-
 /** Photos of the real head scan with hair 12 mm thick on everything 60 mm above the nose tip, traced around the hair
  *  or, when \a from_hairline, from the hairline down. */
 OutlinePhotoSettings
@@ -426,5 +416,45 @@ TEST (RealPhotoTest, JamesScanObliquePerspectivePair)
   const auto [scan, landmarks] = jamesScanInModelFrame ();
   // 68 landmarks: 0.77x with the cameras given, 0.81x estimated (focal lengths 3481 and 1441 px against 4000).
   fitObliqueAndScore ("james", scan, landmarks, {{{0.8}, {0.85}}});
+}
+
+bool
+demofaceAvailable ()
+{
+  return ictAvailable () && std::filesystem::exists (realScanPath ("meshmonk_demoface/demoface_10k.obj"));
+}
+
+/** demoface's capture (head, neck, collar, spiky hair, open at the back) turned into the model's frame, and its
+ *  landmark vertices (annotations/demoface_landmarks.json: placed by a fit, its "how" says). */
+std::pair<TriangleMesh, LandmarkVertices>
+demofaceInModelFrame ()
+{
+  const TriangleMesh scan = loadTriangleMesh (realScanPath ("meshmonk_demoface/demoface_10k.obj"));
+  LandmarkVertices landmarks = annotatedLandmarks ("demoface_landmarks.json");
+  return {inModelFrame (scan, landmarks, *ictModel30 ()), std::move (landmarks)};
+}
+
+// Photos rendered from demoface's capture: its profile outline runs around the capture's own spiky hair artefacts,
+// traced as they are, and also with 12 mm of hair added above the forehead. Measured: joint 0.86x, TPS-ICP 0.86x,
+// profile 0.86x the mean head (1.998 mm); with the hair 0.83x, 0.84x, 0.70x. Issue 34's 0.75x for joint and TPS-ICP
+// is not met here: the profile fit leaves 2.5 mm of outline RMS (0.5 mm on the other scans) between the spikes above
+// and the collar below, and the left-out landmarks choose the strongest prior (lambda_2 11), so the shape stays near
+// the mean head (largest coefficient 0.6 sigma).
+TEST (RealPhotoTest, DemofaceScanRendered)
+{
+  if (!demofaceAvailable ())
+    GTEST_SKIP () << "meshmonk_demoface or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
+  const auto [scan, landmarks] = demofaceInModelFrame ();
+  fitAndScore ("demoface rendered", scan, landmarks, {{{0.9}, {0.9}, {0.9}}});
+  fitAndScore ("demoface rendered with hair", scan, landmarks, {{{0.9}, {0.9}, {0.75}}}, hairSettings (false));
+}
+
+TEST (RealPhotoTest, DemofaceScanObliquePerspectivePair)
+{
+  if (!demofaceAvailable ())
+    GTEST_SKIP () << "meshmonk_demoface or ICT-FaceKit is not in " << MORPHREG_SHARED_DATA_DIR;
+  const auto [scan, landmarks] = demofaceInModelFrame ();
+  // Its 8 landmarks as on the real head scan: 0.91x with the cameras given, 0.98x estimated.
+  fitObliqueAndScore ("demoface", scan, landmarks, {{{0.95}, {1.05, false}}});
 }
 } // namespace

@@ -180,17 +180,21 @@ faceDistance (const TriangleMesh& fitted)
   return surfaceDistanceOver (all, ictFaceTriangles (*ictModel30 ()));
 }
 
-/** The landmark vertices of the scan mesh picked on its renders (test/photo/annotations). */
+/** The landmark vertices of an annotation in test/photo/annotations (its "how" says where they come from). */
+inline LandmarkVertices
+annotatedLandmarks (const std::string& file)
+{
+  const auto picked = readJsonFile (std::string (MORPHREG_TEST_SOURCE_DIR) + "/photo/annotations/" + file)
+                          .at ("landmark_vertices")
+                          .get<std::map<std::string, int>> ();
+  return LandmarkVertices (picked.begin (), picked.end ());
+}
+
+/** The landmark vertices of the scan mesh picked on its renders. */
 inline const LandmarkVertices&
 leeLandmarks ()
 {
-  static const LandmarkVertices landmarks = [] {
-    const auto picked =
-        readJsonFile (std::string (MORPHREG_TEST_SOURCE_DIR) + "/photo/annotations/leeperrysmith_head_landmarks.json")
-            .at ("landmark_vertices")
-            .get<std::map<std::string, int>> ();
-    return LandmarkVertices (picked.begin (), picked.end ());
-  }();
+  static const LandmarkVertices landmarks = annotatedLandmarks ("leeperrysmith_head_landmarks.json");
   return landmarks;
 }
 
