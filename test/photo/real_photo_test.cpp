@@ -338,8 +338,7 @@ obliqueViews (const TriangleMesh& mesh, const LandmarkVertices& landmarks, doubl
 {
   std::mt19937_64 rng (7);
   std::normal_distribution<double> noise (0.0, 1.0);
-  const Eigen::Vector3d nose =
-      mesh.vertices.col (landmarks.count ("nose_tip") ? landmarks.at ("nose_tip") : landmarks.at ("ibug68_30"));
+  const Eigen::Vector3d nose = mesh.vertices.col (noseTipVertex (landmarks));
   Eigen::Matrix3d K;
   K << 4000.0, 0.0, 600.0, 0.0, 4000.0, 800.0, 0.0, 0.0, 1.0;
   std::vector<PhotoView> views;

@@ -130,15 +130,20 @@ traceOutline (const ProjectionMask& mask)
 }
 
 /** The two photos of \a mesh (mm, +Y up, +Z out of the face, +X the subject's left) with its landmark vertices. */
+/** The nose tip's vertex among \a landmarks: by its own id, or as iBUG-68's point 30. */
+inline int
+noseTipVertex (const LandmarkVertices& landmarks)
+{
+  return landmarks.count ("nose_tip") ? landmarks.at ("nose_tip") : landmarks.at ("ibug68_30");
+}
+
 inline std::pair<ProfileView, FrontalView>
 outlinePhotos (const TriangleMesh& mesh, const LandmarkVertices& landmarks, const OutlinePhotoSettings& settings,
                std::uint64_t seed)
 {
   std::mt19937_64 rng (seed);
   std::normal_distribution<double> noise (0.0, settings.landmark_noise);
-  // The nose tip by its own id or as iBUG-68's point 30.
-  const Eigen::Vector3d nose =
-      mesh.vertices.col (landmarks.count ("nose_tip") ? landmarks.at ("nose_tip") : landmarks.at ("ibug68_30"));
+  const Eigen::Vector3d nose = mesh.vertices.col (noseTipVertex (landmarks));
 
   const ProjectionMask side = projectionMask (mesh, 2, settings.pixels_per_mm);
   const std::vector<Eigen::Vector2i> loop = traceOutline (side);
